@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The two entry points of the README, idempotent on a fresh Debian 12 machine (as root):
+#   ./bounce.sh demo   install what is missing, build (Release), render the Cornell box
+#   ./bounce.sh test   install what is missing, build (Release), run the whole CTest suite
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# Debian 12 packages bounce builds and tests with (see docs/dependencies.md).
+packages=(
+  cmake g++ make pkg-config python3-glad
+  libosmesa6-dev libegl1-mesa-dev libgles-dev libglfw3-dev libglm-dev
+  libopenmesh-dev libstb-dev libembree-dev libtbb-dev
+  libtinygltf-dev libtinyobjloader-dev libtinyexr-dev
+  libcli11-dev nlohmann-json3-dev libimgui-dev
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    echo "bounce: installing ${missing[*]}" >&2
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -q
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends \
+      -o DPkg::Lock::Timeout=600 "${missing[@]}"
+  fi
+}
+
+build() {
+  cmake --preset release
+  cmake --build --preset release
+}
+
+case "${1:-}" in
+  demo)
+    install_missing
+    build
+    mkdir -p out
+    build/release/bin/bounce-render content/cornell_box/cornell_box.gltf \
+      --out out/cornell_box.png --out out/cornell_box.exr
+    echo "bounce: wrote out/cornell_box.png and out/cornell_box.exr"
+    if [ -n "${DISPLAY:-}" ] && [ -z "${CI:-}" ]; then
+      build/release/bin/bounce-view content/cornell_box/cornell_box.gltf
+    fi
+    ;;
+  test)
+    install_missing
+    build
+    ctest --preset release
+    ;;
+  *)
+    echo "usage: $0 demo|test" >&2
+    exit 2
+    ;;
+esac

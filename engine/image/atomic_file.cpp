@@ -1,0 +1,40 @@
+#include "image/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace bounce {
+
+void writeFileAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
+  namespace fs = std::filesystem;
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (ec) throw std::runtime_error(path.string() + ": cannot create folder: " + ec.message());
+  fs::path tmp = path;
+  tmp += ".tmp-" + std::to_string(::getpid());
+
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const int writeErrno = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !closed) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(path.string() + ": write failed: " + std::strerror(writeErrno));
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw std::runtime_error(path.string() + ": cannot rename into place: " + ec.message());
+  }
+}
+
+}  // namespace bounce

@@ -1,0 +1,109 @@
+// The scene model shared by the renderer and the baker. GL-free, plain data.
+//
+// Units (per linear-RGB channel):
+//   lengths in metres; angles in radians;
+//   Material::emission is radiance in W/(sr·m²) (Lambertian emitter, emits on the front face);
+//   Material::albedo is the diffuse reflectance ρ in [0,1] (BRDF ρ/π);
+//   point/spot intensity in W/sr; directional irradiance in W/m² on a surface facing the light.
+// Photometric inputs (glTF cd, lux) are converted once, on load (see units.h).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace bounce {
+
+// A texture of linear-RGB values, rows top to bottom (glTF/OBJ convention: uv (0,0) is the
+// top-left texel). sRGB-encoded files are decoded to linear on load.
+struct Texture {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<glm::vec3> texels;  // width*height, row-major, top row first
+};
+
+struct Material {
+  std::string name;
+  glm::vec3 albedo{0.8f};                   // diffuse reflectance ρ, linear RGB
+  std::optional<uint32_t> albedoTexture;    // index into Scene::textures, multiplies albedo
+  glm::vec3 emission{0.0f};                 // emitted radiance, W/(sr·m²)
+  bool doubleSided = false;                 // emission and shading on both faces
+
+  bool isEmissive() const { return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f; }
+};
+
+// An indexed triangle mesh in its own object space. Counter-clockwise triangles face the
+// side their geometric normal points to.
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;  // metres
+  std::vector<glm::vec3> normals;    // unit shading normals, one per position (never empty after load)
+  std::vector<glm::vec2> uv0;        // material UVs; empty when the source has none
+  std::vector<glm::vec2> uv1;        // lightmap UVs (unique, non-overlapping); empty until unwrapped
+  std::vector<uint32_t> indices;     // 3 per triangle
+  uint32_t material = 0;             // index into Scene::materials
+
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+enum class Mobility : uint8_t {
+  Static,   // lightmapped: its indirect light comes from the baked lightmap
+  Dynamic,  // moves at run time: its indirect light comes from VPLs
+};
+
+// One placement of a mesh; glTF node hierarchies are flattened into world transforms.
+struct Instance {
+  std::string name;
+  uint32_t mesh = 0;                // index into Scene::meshes
+  glm::mat4 transform{1.0f};        // object to world
+  Mobility mobility = Mobility::Static;
+};
+
+enum class LightType : uint8_t { Point, Spot, Directional };
+
+// A punctual light. Area lights are not here: they are emissive meshes (Material::emission).
+struct Light {
+  std::string name;
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f};          // world, metres (point, spot)
+  glm::vec3 direction{0, -1, 0};     // world unit vector the light travels along (spot, directional)
+  glm::vec3 intensity{0.0f};         // W/sr (point, spot)
+  glm::vec3 irradiance{0.0f};        // W/m² at normal incidence (directional)
+  float innerConeAngle = 0.0f;       // spot: full intensity inside this half-angle, radians
+  float outerConeAngle = 0.7853982f; // spot: zero outside this half-angle, radians
+  float range = 0.0f;                // metres; 0 means unbounded (the physical case)
+};
+
+// A pinhole camera looking down its local −Z axis with +Y up (the glTF convention).
+struct Camera {
+  std::string name;
+  glm::mat4 cameraToWorld{1.0f};
+  float yfov = 0.6859f;     // full vertical field of view, radians
+  float aspect = 0.0f;      // width/height; 0 means "take it from the image size"
+  float znear = 0.01f;      // metres
+  float zfar = 1000.0f;     // metres
+
+  glm::vec3 position() const { return glm::vec3(cameraToWorld[3]); }
+  glm::vec3 forward() const { return -glm::normalize(glm::vec3(cameraToWorld[2])); }
+  glm::vec3 up() const { return glm::normalize(glm::vec3(cameraToWorld[1])); }
+};
+
+struct Scene {
+  std::string source;  // the file it was loaded from, for messages
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Instance> instances;
+  std::vector<Light> lights;
+  std::vector<Camera> cameras;
+
+  std::size_t triangleCount() const;
+  // Index of the camera called `name`; throws std::invalid_argument naming the known cameras.
+  std::size_t findCamera(const std::string& name) const;
+};
+
+}  // namespace bounce
