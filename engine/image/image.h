@@ -16,12 +16,15 @@ struct Image {
 
   Image() = default;
   Image(int w, int h, glm::vec3 fill = glm::vec3(0))
-      : width(w), height(h), pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+      : width(w),
+        height(h),
+        pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
 
   glm::vec3& at(int x, int y) { return pixels[index(x, y)]; }
   const glm::vec3& at(int x, int y) const { return pixels[index(x, y)]; }
   std::size_t index(int x, int y) const {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(x);
   }
   bool allFinite() const;
 };

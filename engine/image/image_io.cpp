@@ -1,7 +1,7 @@
 #include "image/image_io.h"
 
-#include <tinyexr.h>
 #include <stb/stb_image_write.h>
+#include <tinyexr.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -24,7 +24,8 @@ std::string takeExrError(const char* err) {
 
 void requireSize(const std::filesystem::path& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
+      image.pixels.size() !=
+          static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
     throw std::runtime_error(path.string() + ": refusing to write an image of size " +
                              std::to_string(image.width) + "x" + std::to_string(image.height));
 }
@@ -54,7 +55,8 @@ void writeExr(const std::filesystem::path& path, const Image& image) {
   EXRChannelInfo channels[3] = {};
   int pixelTypes[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
   const char* names[3] = {"B", "G", "R"};
-  for (int c = 0; c < 3; ++c) std::snprintf(channels[c].name, sizeof(channels[c].name), "%s", names[c]);
+  for (int c = 0; c < 3; ++c)
+    std::snprintf(channels[c].name, sizeof(channels[c].name), "%s", names[c]);
   header.num_channels = 3;
   header.channels = channels;
   header.pixel_types = pixelTypes;
@@ -64,7 +66,8 @@ void writeExr(const std::filesystem::path& path, const Image& image) {
   unsigned char* memory = nullptr;
   const char* err = nullptr;
   const std::size_t size = SaveEXRImageToMemory(&exr, &header, &memory, &err);
-  if (size == 0) throw std::runtime_error(path.string() + ": cannot encode EXR: " + takeExrError(err));
+  if (size == 0)
+    throw std::runtime_error(path.string() + ": cannot encode EXR: " + takeExrError(err));
   std::unique_ptr<unsigned char, decltype(&std::free)> owned(memory, &std::free);
   writeFileAtomically(path, {memory, size});
 }

@@ -16,8 +16,8 @@ std::size_t Scene::findCamera(const std::string& name) const {
     if (cameras[i].name == name) return i;
     known += (known.empty() ? "" : ", ") + ("'" + cameras[i].name + "'");
   }
-  throw std::invalid_argument(source + ": no camera named '" + name + "' (cameras: " +
-                              (known.empty() ? "none" : known) + ")");
+  throw std::invalid_argument(source + ": no camera named '" + name +
+                              "' (cameras: " + (known.empty() ? "none" : known) + ")");
 }
 
 }  // namespace bounce

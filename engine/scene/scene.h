@@ -28,10 +28,10 @@ struct Texture {
 
 struct Material {
   std::string name;
-  glm::vec3 albedo{0.8f};                   // diffuse reflectance ρ, linear RGB
-  std::optional<uint32_t> albedoTexture;    // index into Scene::textures, multiplies albedo
-  glm::vec3 emission{0.0f};                 // emitted radiance, W/(sr·m²)
-  bool doubleSided = false;                 // emission and shading on both faces
+  glm::vec3 albedo{0.8f};                 // diffuse reflectance ρ, linear RGB
+  std::optional<uint32_t> albedoTexture;  // index into Scene::textures, multiplies albedo
+  glm::vec3 emission{0.0f};               // emitted radiance, W/(sr·m²)
+  bool doubleSided = false;               // emission and shading on both faces
 
   bool isEmissive() const { return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f; }
 };
@@ -41,11 +41,12 @@ struct Material {
 struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;  // metres
-  std::vector<glm::vec3> normals;    // unit shading normals, one per position (never empty after load)
-  std::vector<glm::vec2> uv0;        // material UVs; empty when the source has none
-  std::vector<glm::vec2> uv1;        // lightmap UVs (unique, non-overlapping); empty until unwrapped
-  std::vector<uint32_t> indices;     // 3 per triangle
-  uint32_t material = 0;             // index into Scene::materials
+  std::vector<glm::vec3>
+      normals;                    // unit shading normals, one per position (never empty after load)
+  std::vector<glm::vec2> uv0;     // material UVs; empty when the source has none
+  std::vector<glm::vec2> uv1;     // lightmap UVs (unique, non-overlapping); empty until unwrapped
+  std::vector<uint32_t> indices;  // 3 per triangle
+  uint32_t material = 0;          // index into Scene::materials
 
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
@@ -58,8 +59,8 @@ enum class Mobility : uint8_t {
 // One placement of a mesh; glTF node hierarchies are flattened into world transforms.
 struct Instance {
   std::string name;
-  uint32_t mesh = 0;                // index into Scene::meshes
-  glm::mat4 transform{1.0f};        // object to world
+  uint32_t mesh = 0;          // index into Scene::meshes
+  glm::mat4 transform{1.0f};  // object to world
   Mobility mobility = Mobility::Static;
 };
 
@@ -69,23 +70,23 @@ enum class LightType : uint8_t { Point, Spot, Directional };
 struct Light {
   std::string name;
   LightType type = LightType::Point;
-  glm::vec3 position{0.0f};          // world, metres (point, spot)
-  glm::vec3 direction{0, -1, 0};     // world unit vector the light travels along (spot, directional)
-  glm::vec3 intensity{0.0f};         // W/sr (point, spot)
-  glm::vec3 irradiance{0.0f};        // W/m² at normal incidence (directional)
-  float innerConeAngle = 0.0f;       // spot: full intensity inside this half-angle, radians
-  float outerConeAngle = 0.7853982f; // spot: zero outside this half-angle, radians
-  float range = 0.0f;                // metres; 0 means unbounded (the physical case)
+  glm::vec3 position{0.0f};       // world, metres (point, spot)
+  glm::vec3 direction{0, -1, 0};  // world unit vector the light travels along (spot, directional)
+  glm::vec3 intensity{0.0f};      // W/sr (point, spot)
+  glm::vec3 irradiance{0.0f};     // W/m² at normal incidence (directional)
+  float innerConeAngle = 0.0f;    // spot: full intensity inside this half-angle, radians
+  float outerConeAngle = 0.7853982f;  // spot: zero outside this half-angle, radians
+  // glTF's `range` is ignored: bounce's lights follow the inverse-square law without cut-off.
 };
 
 // A pinhole camera looking down its local −Z axis with +Y up (the glTF convention).
 struct Camera {
   std::string name;
   glm::mat4 cameraToWorld{1.0f};
-  float yfov = 0.6859f;     // full vertical field of view, radians
-  float aspect = 0.0f;      // width/height; 0 means "take it from the image size"
-  float znear = 0.01f;      // metres
-  float zfar = 1000.0f;     // metres
+  float yfov = 0.6859f;  // full vertical field of view, radians
+  float aspect = 0.0f;   // width/height; 0 means "take it from the image size"
+  float znear = 0.01f;   // metres
+  float zfar = 1000.0f;  // metres
 
   glm::vec3 position() const { return glm::vec3(cameraToWorld[3]); }
   glm::vec3 forward() const { return -glm::normalize(glm::vec3(cameraToWorld[2])); }

@@ -26,7 +26,8 @@ WorldGeometry flatten(const Scene& scene) {
       world.uv1.push_back(v < mesh.uv1.size() ? mesh.uv1[v] : glm::vec2(0));
     }
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      glm::uvec3 tri(base + mesh.indices[t], base + mesh.indices[t + 1], base + mesh.indices[t + 2]);
+      glm::uvec3 tri(base + mesh.indices[t], base + mesh.indices[t + 1],
+                     base + mesh.indices[t + 2]);
       if (mirrored) std::swap(tri.y, tri.z);
       world.triangles.push_back(tri);
       world.triangleMaterial.push_back(mesh.material);

@@ -28,20 +28,23 @@ int countEntries(const fs::path& dir) {
 TEST(ImageIo, ExrRoundTripIsExactFloat32) {
   Image image(5, 3);
   for (int y = 0; y < 3; ++y)
-    for (int x = 0; x < 5; ++x) image.at(x, y) = {x * 0.1f + 1e-7f, y * 123.456f, 1.0f / (1 + x + y)};
+    for (int x = 0; x < 5; ++x)
+      image.at(x, y) = {x * 0.1f + 1e-7f, y * 123.456f, 1.0f / (1 + x + y)};
   const fs::path file = freshDir("exr") / "a.exr";
   bounce::writeExr(file, image);
   const Image back = bounce::readExr(file);
   ASSERT_EQ(back.width, 5);
   ASSERT_EQ(back.height, 3);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) EXPECT_EQ(back.pixels[i], image.pixels[i]) << i;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    EXPECT_EQ(back.pixels[i], image.pixels[i]) << i;
 }
 
 TEST(ImageIo, PngFailureLeavesNoPartialFile) {
   const fs::path dir = freshDir("png_fail");
   // The target name is taken by a folder: the rename must fail and leave nothing else behind.
   fs::create_directories(dir / "taken.png" / "inside");
-  EXPECT_THROW(bounce::writePng(dir / "taken.png", Image(4, 4, glm::vec3(1)), 0.0f), std::runtime_error);
+  EXPECT_THROW(bounce::writePng(dir / "taken.png", Image(4, 4, glm::vec3(1)), 0.0f),
+               std::runtime_error);
   EXPECT_EQ(countEntries(dir), 1);
   EXPECT_TRUE(fs::is_directory(dir / "taken.png"));
 }
