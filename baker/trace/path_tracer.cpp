@@ -1,0 +1,222 @@
+#include "trace/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "scene/light_falloff.h"
+#include "trace/sampling.h"
+
+namespace bounce {
+
+namespace {
+
+// Sampler dimensions (2D pairs) used at each path vertex, relative to 4·reflections.
+constexpr uint32_t kDimLightPick = 0;   // emitter triangle (alias table bin + coin)
+constexpr uint32_t kDimLightPoint = 1;  // point on the emitter triangle
+constexpr uint32_t kDimBrdf = 2;        // cosine-weighted direction
+constexpr uint32_t kDimRoulette = 3;    // Russian roulette
+constexpr uint32_t kDimsPerVertex = 4;
+
+// A shadow ray is shortened by this fraction so that it stops short of its (offset) target.
+constexpr float kShadowShorten = 1e-4f;
+
+bool finiteRay(const Ray& ray) {
+  return isFinite(ray.origin) && isFinite(ray.direction) && !std::isnan(ray.tmin) &&
+         !std::isnan(ray.tmax) && glm::dot(ray.direction, ray.direction) > 0.0f;
+}
+
+}  // namespace
+
+PathTracer::PathTracer(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
+                       const TraceSettings& settings)
+    : scene_(scene),
+      geometry_(geometry),
+      kernel_(kernel),
+      settings_(settings),
+      emitters_(scene, geometry) {
+  settings_.maxDepth = std::max(settings_.maxDepth, 0);
+  minReflections_ = settings_.paths == PathSet::IndirectOnly ? 2 : 0;
+  maxReflections_ =
+      settings_.paths == PathSet::DirectOnly ? std::min(1, settings_.maxDepth) : settings_.maxDepth;
+}
+
+bool PathTracer::visible(glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to,
+                         glm::vec3 toNormal) const {
+  Ray ray;
+  ray.origin = offsetRayOrigin(from, fromNormal, to - from);
+  // A target on a surface is lifted off it too (towards `from`), so it never occludes itself.
+  const glm::vec3 target =
+      glm::dot(toNormal, toNormal) > 0.0f ? offsetRayOrigin(to, toNormal, from - to) : to;
+  ray.direction = target - ray.origin;
+  ray.tmin = 0.0f;
+  ray.tmax = 1.0f - kShadowShorten;
+  if (!finiteRay(ray)) return false;
+  return !kernel_.occluded(ray);
+}
+
+glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, SobolSampler& sampler) const {
+  const uint32_t base = sampler.dimension();
+  sampler.setDimension(base + kDimLightPick);
+  const glm::vec2 pick = sampler.get2D();
+  sampler.setDimension(base + kDimLightPoint);
+  const glm::vec2 onTriangle = sampler.get2D();
+  const EmitterSample light = emitters_.sample(pick, onTriangle);
+
+  const glm::vec3 toLight = light.position - point.position;
+  const float dist2 = glm::dot(toLight, toLight);
+  if (!(dist2 > 0.0f) || !std::isfinite(dist2)) return glm::vec3(0.0f);
+  const glm::vec3 wi = toLight / std::sqrt(dist2);
+  float cosLight = glm::dot(light.normal, -wi);
+  if (light.doubleSided) cosLight = std::abs(cosLight);
+  const float cosSurface = glm::dot(point.shadingNormal, wi);
+  if (cosLight <= 0.0f || cosSurface <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f) {
+    return glm::vec3(0.0f);
+  }
+  // Area density → solid angle density: dω = dA cosθ' / r².
+  const float pdfLight = light.pdfArea * dist2 / cosLight;
+  if (!(pdfLight > 0.0f) || !std::isfinite(pdfLight)) return glm::vec3(0.0f);
+  const glm::vec3 lightNormal = glm::dot(light.normal, -wi) > 0.0f ? light.normal : -light.normal;
+  if (!visible(point.position, point.geometricNormal, light.position, lightNormal)) {
+    return glm::vec3(0.0f);
+  }
+  const float weight = settings_.strategy == LightStrategy::Mis
+                           ? powerHeuristic(pdfLight, cosineHemispherePdf(cosSurface))
+                           : 1.0f;
+  return point.albedo * kInvPi * light.radiance * (cosSurface * weight / pdfLight);
+}
+
+glm::vec3 PathTracer::sampleDeltaLights(const SurfacePoint& point) const {
+  glm::vec3 sum(0.0f);
+  for (const Light& light : scene_.lights) {
+    glm::vec3 wi;
+    glm::vec3 incident;  // irradiance at normal incidence, W/m²
+    bool reachable = false;
+    if (light.type == LightType::Directional) {
+      const float len = glm::length(light.direction);
+      if (!(len > 0.0f) || !std::isfinite(len)) continue;
+      wi = -light.direction / len;
+      incident = light.irradiance;
+      if (maxComponent(incident) <= 0.0f || !isFinite(incident)) continue;
+      if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+        continue;
+      Ray ray;
+      ray.origin = offsetRayOrigin(point.position, point.geometricNormal, wi);
+      ray.direction = wi;
+      reachable = finiteRay(ray) && !kernel_.occluded(ray);
+    } else {
+      const glm::vec3 toLight = light.position - point.position;
+      const float dist2 = glm::dot(toLight, toLight);
+      if (!(dist2 > 0.0f) || !std::isfinite(dist2)) continue;
+      wi = toLight / std::sqrt(dist2);
+      glm::vec3 intensity = light.intensity;  // W/sr towards the point
+      if (light.type == LightType::Spot) {
+        const float len = glm::length(light.direction);
+        if (!(len > 0.0f)) continue;
+        intensity *= spotFalloff(light, glm::dot(light.direction / len, -wi));
+      }
+      incident = intensity / dist2;  // inverse-square law
+      if (maxComponent(incident) <= 0.0f || !isFinite(incident)) continue;
+      if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+        continue;
+      reachable = visible(point.position, point.geometricNormal, light.position, glm::vec3(0.0f));
+    }
+    if (reachable) sum += point.albedo * kInvPi * incident * glm::dot(point.shadingNormal, wi);
+  }
+  return sum;
+}
+
+glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int depth,
+                                uint32_t baseDim, SobolSampler& sampler) const {
+  glm::vec3 radiance(0.0f);
+  glm::vec3 beta = throughput;
+  // Invariant: `point` is reached after `depth` reflections and its emission is counted.
+  for (; depth < maxReflections_; ++depth) {
+    const uint32_t dim = baseDim + kDimsPerVertex * static_cast<uint32_t>(depth);
+    // Next-event estimation: light after depth + 1 reflections.
+    if (depth + 1 >= minReflections_) {
+      if (settings_.strategy != LightStrategy::BrdfOnly && !emitters_.empty()) {
+        sampler.setDimension(dim);
+        radiance += beta * sampleAreaLight(point, sampler);
+      }
+      radiance += beta * sampleDeltaLights(point);
+    }
+
+    // Continue the path by sampling the BRDF: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
+    sampler.setDimension(dim + kDimBrdf);
+    const glm::vec3 local = sampleCosineHemisphere(sampler.get2D());
+    const glm::vec3 wi = Frame(point.shadingNormal).toWorld(local);
+    const float pdfBrdf = cosineHemispherePdf(local.z);
+    // Directions below the geometric surface (possible with shading normals) end the path.
+    if (!(pdfBrdf > 0.0f) || glm::dot(wi, point.geometricNormal) <= 0.0f) break;
+    beta *= point.albedo;
+    if (maxComponent(beta) <= 0.0f) break;
+
+    // Russian roulette on the throughput: survive with q = min(1, max β), reweight by 1/q.
+    if (depth >= settings_.rouletteDepth) {
+      const float survive = std::min(1.0f, maxComponent(beta));
+      sampler.setDimension(dim + kDimRoulette);
+      if (sampler.get1D() >= survive) break;
+      beta /= survive;
+    }
+
+    Ray ray;
+    ray.origin = offsetRayOrigin(point.position, point.geometricNormal, wi);
+    ray.direction = wi;
+    if (!finiteRay(ray)) break;
+    const Hit hit = kernel_.intersect(ray);
+    if (!hit.valid()) break;
+    SurfacePoint next;
+    if (!makeSurfacePoint(scene_, geometry_, ray, hit, next)) break;
+
+    // Emission found by the BRDF-sampled ray: depth + 1 reflections.
+    if (maxComponent(next.emitted) > 0.0f && depth + 1 >= minReflections_ &&
+        settings_.strategy != LightStrategy::LightOnly) {
+      float weight = 1.0f;
+      const float pdfArea = emitters_.pdfArea(next.triangle);
+      if (settings_.strategy == LightStrategy::Mis && pdfArea > 0.0f) {
+        const glm::vec3 d = next.position - point.position;
+        const float cosLight = glm::dot(next.geometricNormal, -wi);
+        if (cosLight > 0.0f) weight = powerHeuristic(pdfBrdf, pdfArea * glm::dot(d, d) / cosLight);
+      }
+      radiance += beta * next.emitted * weight;
+    }
+    point = next;
+  }
+  return radiance;
+}
+
+glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler) const {
+  const uint32_t baseDim = sampler.dimension();
+  if (!finiteRay(ray)) return glm::vec3(0.0f);
+  const Hit hit = kernel_.intersect(ray);
+  if (!hit.valid()) return glm::vec3(0.0f);
+  SurfacePoint point;
+  if (!makeSurfacePoint(scene_, geometry_, ray, hit, point)) return glm::vec3(0.0f);
+  // Emitters seen directly count fully (no other strategy can find them).
+  const glm::vec3 seen = minReflections_ == 0 ? point.emitted : glm::vec3(0.0f);
+  glm::vec3 rest = reflected(point, glm::vec3(1.0f), 0, baseDim, sampler);
+  if (settings_.clampRadiance > 0.0f && maxComponent(rest) > settings_.clampRadiance) {
+    rest *= settings_.clampRadiance / maxComponent(rest);
+  }
+  const glm::vec3 radiance = seen + rest;
+  return isFinite(radiance) ? radiance : glm::vec3(0.0f);
+}
+
+glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal,
+                                 SobolSampler& sampler) const {
+  // A white (ρ = 1) Lambertian surface reflects Lo = E/π in every direction.
+  SurfacePoint point;
+  point.position = position;
+  point.geometricNormal = normal;
+  point.shadingNormal = normal;
+  point.albedo = glm::vec3(1.0f);
+  glm::vec3 lo = reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler);
+  if (settings_.clampRadiance > 0.0f && maxComponent(lo) > settings_.clampRadiance) {
+    lo *= settings_.clampRadiance / maxComponent(lo);
+  }
+  const glm::vec3 e = kPi * lo;
+  return isFinite(e) ? e : glm::vec3(0.0f);
+}
+
+}  // namespace bounce

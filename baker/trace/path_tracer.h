@@ -1,0 +1,62 @@
+// The unidirectional path tracer: Lambertian surfaces (BRDF ρ/π), cosine-weighted BRDF
+// sampling, next-event estimation to area emitters (by power) and to point, spot and
+// directional lights, MIS with the power heuristic, Russian roulette on path throughput.
+// GL-free; used by the reference renderer and by the lightmap baker.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
+#include "trace/emitters.h"
+#include "trace/sobol_sampler.h"
+#include "trace/surface_point.h"
+#include "trace/trace_settings.h"
+
+namespace bounce {
+
+class PathTracer {
+ public:
+  // scene, geometry and kernel must outlive the tracer; geometry = flatten(scene) and kernel
+  // is built over it.
+  PathTracer(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
+             const TraceSettings& settings);
+
+  // One-sample estimate of the radiance arriving at ray.origin from −ray.direction,
+  // W/(sr·m²) per channel (i.e. the radiance leaving the first surface hit towards the
+  // origin; black where the ray escapes). Uses the sampler's dimensions from its current
+  // one on. Always finite (a non-finite estimate is returned as black and counted by the
+  // caller via isFinite).
+  glm::vec3 Li(const Ray& ray, SobolSampler& sampler) const;
+
+  // One-sample estimate of the irradiance E (W/m²) at `position` on a surface with unit
+  // normal `normal` (facing the hemisphere integrated over): E = π × the radiance a white
+  // Lambertian surface there would reflect, estimated with the same NEE + MIS.
+  glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler) const;
+
+  bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty(); }
+  const EmitterTable& emitters() const { return emitters_; }
+  const TraceSettings& settings() const { return settings_; }
+
+ private:
+  // Radiance reflected at `point` towards its ray's origin, from the first reflection on;
+  // `throughput` is the path weight so far, `depth` the reflections before this vertex.
+  glm::vec3 reflected(SurfacePoint point, glm::vec3 throughput, int depth, uint32_t baseDim,
+                      SobolSampler& sampler) const;
+  // Next-event estimate of light after one reflection at `point` (area emitters with MIS
+  // weight, plus every delta light), not yet multiplied by the path throughput.
+  glm::vec3 sampleAreaLight(const SurfacePoint& point, SobolSampler& sampler) const;
+  glm::vec3 sampleDeltaLights(const SurfacePoint& point) const;
+  bool visible(glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to, glm::vec3 toNormal) const;
+
+  const Scene& scene_;
+  const WorldGeometry& geometry_;
+  const RayKernel& kernel_;
+  TraceSettings settings_;
+  EmitterTable emitters_;
+  int minReflections_;
+  int maxReflections_;
+};
+
+}  // namespace bounce

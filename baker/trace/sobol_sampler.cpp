@@ -1,0 +1,72 @@
+#include "trace/sobol_sampler.h"
+
+#include "trace/rng.h"
+
+namespace bounce {
+
+uint32_t reverseBits(uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// Dimension 0: bit k of the index becomes the k-th binary digit after the point.
+uint32_t sobolDimension0(uint32_t index) {
+  return reverseBits(index);
+}
+
+// Dimension 1: primitive polynomial x+1, direction numbers v_1 = 1/2, v_k = v_{k−1} ⊕
+// (v_{k−1} >> 1), i.e. the rows of Pascal's triangle mod 2 (0.1, 0.11, 0.101, 0.1111, ...).
+uint32_t sobolDimension1(uint32_t index) {
+  uint32_t result = 0;
+  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
+    if (index & 1u) result ^= v;
+  }
+  return result;
+}
+
+namespace {
+
+// Laine–Karras style permutation: x ↦ x ⊕ (x·c) with even c flips bit j by a function of the
+// bits below j only, so on bit-reversed values it is a nested uniform scramble. Constants
+// from Burley 2020.
+uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+}  // namespace
+
+uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+}
+
+SobolSampler::SobolSampler(uint32_t seed, uint32_t pixel)
+    : patternSeed_(hashKeys(seed, pixel, 0x50b01u)) {}
+
+glm::uvec2 SobolSampler::pairBits() {
+  const uint32_t pairSeed = hashCombine(patternSeed_, dimension_++);
+  // Shuffling the index by a nested uniform scramble keeps every power-of-two prefix a
+  // (0,m,2)-net (the low m bits of the shuffled index are a permutation of the low m bits),
+  // while decorrelating this pair from the others.
+  const uint32_t shuffled = nestedUniformScramble(index_, pairSeed);
+  return {nestedUniformScramble(sobolDimension0(shuffled), hashCombine(pairSeed, 1u)),
+          nestedUniformScramble(sobolDimension1(shuffled), hashCombine(pairSeed, 2u))};
+}
+
+glm::vec2 SobolSampler::get2D() {
+  const glm::uvec2 bits = pairBits();
+  return {unitFloat(bits.x), unitFloat(bits.y)};
+}
+
+float SobolSampler::get1D() {
+  return unitFloat(pairBits().x);
+}
+
+}  // namespace bounce

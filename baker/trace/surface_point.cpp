@@ -1,0 +1,97 @@
+#include "trace/surface_point.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "trace/sampling.h"
+
+namespace bounce {
+
+namespace {
+
+int wrap(int i, int n) {
+  const int m = i % n;
+  return m < 0 ? m + n : m;
+}
+
+}  // namespace
+
+glm::vec3 sampleTexture(const Texture& texture, glm::vec2 uv) {
+  if (texture.width <= 0 || texture.height <= 0 ||
+      texture.texels.size() <
+          static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height)) {
+    return glm::vec3(1.0f);
+  }
+  // Texel (i, j) has its centre at ((i + ½)/w, (j + ½)/h).
+  const float x = uv.x * static_cast<float>(texture.width) - 0.5f;
+  const float y = uv.y * static_cast<float>(texture.height) - 0.5f;
+  if (!std::isfinite(x) || !std::isfinite(y)) return glm::vec3(1.0f);
+  const float fx = std::floor(x);
+  const float fy = std::floor(y);
+  const float ax = x - fx;
+  const float ay = y - fy;
+  // Reduce before converting so that huge uvs do not overflow int.
+  const int x0 =
+      wrap(static_cast<int>(std::fmod(fx, static_cast<float>(texture.width))), texture.width);
+  const int y0 =
+      wrap(static_cast<int>(std::fmod(fy, static_cast<float>(texture.height))), texture.height);
+  const int x1 = wrap(x0 + 1, texture.width);
+  const int y1 = wrap(y0 + 1, texture.height);
+  auto texel = [&](int i, int j) {
+    return texture.texels[static_cast<std::size_t>(j) * static_cast<std::size_t>(texture.width) +
+                          static_cast<std::size_t>(i)];
+  };
+  return (1.0f - ay) * ((1.0f - ax) * texel(x0, y0) + ax * texel(x1, y0)) +
+         ay * ((1.0f - ax) * texel(x0, y1) + ax * texel(x1, y1));
+}
+
+bool makeSurfacePoint(const Scene& scene, const WorldGeometry& geometry, const Ray& ray,
+                      const Hit& hit, SurfacePoint& point) {
+  const glm::uvec3 tri = geometry.triangles[hit.triangle];
+  const float b0 = 1.0f - hit.u - hit.v;
+  const glm::vec3 p = b0 * geometry.positions[tri.x] + hit.u * geometry.positions[tri.y] +
+                      hit.v * geometry.positions[tri.z];
+  const glm::vec3 cross = geometry.triangleCross(hit.triangle);
+  const float crossLength = glm::length(cross);
+  if (!isFinite(p) || !(crossLength > 0.0f) || !std::isfinite(crossLength)) return false;
+  const glm::vec3 front = cross / crossLength;
+  const bool frontFace = glm::dot(front, ray.direction) < 0.0f;
+  point.position = p;
+  point.triangle = hit.triangle;
+  point.geometricNormal = frontFace ? front : -front;
+
+  // Interpolated shading normal, turned to the geometric normal's side; a missing or
+  // non-finite one falls back to the geometric normal.
+  glm::vec3 ns = b0 * geometry.normals[tri.x] + hit.u * geometry.normals[tri.y] +
+                 hit.v * geometry.normals[tri.z];
+  const float nsLength = glm::length(ns);
+  if (nsLength > 1e-6f && std::isfinite(nsLength)) {
+    ns /= nsLength;
+    if (glm::dot(ns, point.geometricNormal) < 0.0f) ns = -ns;
+    if (glm::dot(ns, point.geometricNormal) < 1e-3f) ns = point.geometricNormal;
+  } else {
+    ns = point.geometricNormal;
+  }
+  point.shadingNormal = ns;
+
+  const uint32_t materialIndex = geometry.triangleMaterial[hit.triangle];
+  if (materialIndex >= scene.materials.size()) {
+    point.albedo = glm::vec3(0.0f);
+    point.emitted = glm::vec3(0.0f);
+    return true;
+  }
+  const Material& material = scene.materials[materialIndex];
+  glm::vec3 albedo = material.albedo;
+  if (material.albedoTexture && *material.albedoTexture < scene.textures.size()) {
+    const glm::vec2 uv =
+        b0 * geometry.uv0[tri.x] + hit.u * geometry.uv0[tri.y] + hit.v * geometry.uv0[tri.z];
+    albedo *= sampleTexture(scene.textures[*material.albedoTexture], uv);
+  }
+  // ρ ≤ 1 keeps every path weight bounded; non-finite inputs absorb.
+  point.albedo = isFinite(albedo) ? glm::clamp(albedo, 0.0f, 1.0f) : glm::vec3(0.0f);
+  const bool emits = (frontFace || material.doubleSided) && isFinite(material.emission);
+  point.emitted = emits ? glm::max(material.emission, glm::vec3(0.0f)) : glm::vec3(0.0f);
+  return true;
+}
+
+}  // namespace bounce
