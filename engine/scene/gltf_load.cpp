@@ -1,0 +1,423 @@
+// glTF 2.0 → Scene. tinygltf parses the JSON, the buffers and the images; everything it does
+// not check (indices, byte ranges, finiteness, extensions, light and camera values) is checked
+// here, so a bad file is one LoadError and never a crash.
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/gltf_accessor.h"
+#include "scene/load_error.h"
+#include "scene/loaders.h"
+#include "scene/mesh_normals.h"
+#include "scene/texture_decode.h"
+#include "scene/units.h"
+
+namespace bounce {
+namespace {
+
+// Extensions bounce understands; any other in extensionsRequired makes the file unloadable.
+// Others in extensionsUsed are optional by definition and ignored (glTF 2.0 §3.12).
+constexpr std::array kSupportedExtensions = {"KHR_lights_punctual",
+                                             "KHR_materials_emissive_strength"};
+
+std::vector<unsigned char> readBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw LoadError(path, "cannot open the file");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
+  if (in.bad()) throw LoadError(path, "read error");
+  return bytes;
+}
+
+uint32_t readU32(const std::vector<unsigned char>& bytes, std::size_t offset) {
+  uint32_t v;
+  std::memcpy(&v, bytes.data() + offset, sizeof v);
+  return v;
+}
+
+// The GLB container (header, JSON chunk, optional BIN chunk) must be complete before tinygltf
+// sees it: a truncated .glb is reported here, with the sizes.
+void checkGlbContainer(const std::filesystem::path& path, const std::vector<unsigned char>& b) {
+  const std::size_t size = b.size();
+  if (size < 20)
+    throw LoadError(path, "truncated GLB: " + std::to_string(size) + " bytes, no header");
+  if (std::memcmp(b.data(), "glTF", 4) != 0) throw LoadError(path, "not a GLB file (bad magic)");
+  if (readU32(b, 4) != 2)
+    throw LoadError(path, "GLB version " + std::to_string(readU32(b, 4)) + " (expected 2)");
+  const std::size_t declared = readU32(b, 8);
+  if (declared != size) {
+    throw LoadError(path, "truncated or padded GLB: header declares " + std::to_string(declared) +
+                              " bytes, the file has " + std::to_string(size));
+  }
+  const std::size_t jsonLength = readU32(b, 12);
+  if (std::memcmp(b.data() + 16, "JSON", 4) != 0)
+    throw LoadError(path, "GLB's first chunk is not JSON");
+  if (jsonLength > size - 20) throw LoadError(path, "truncated GLB: JSON chunk exceeds the file");
+  const std::size_t binStart = 20 + jsonLength;
+  if (binStart == size) return;
+  if (size - binStart < 8) throw LoadError(path, "truncated GLB: incomplete BIN chunk header");
+  const std::size_t binLength = readU32(b, binStart);
+  if (binLength > size - binStart - 8)
+    throw LoadError(path, "truncated GLB: BIN chunk exceeds the file");
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  std::replace(s.begin(), s.end(), '\n', ';');
+  return s;
+}
+
+glm::mat4 localTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::dmat4 m;
+    std::copy(node.matrix.begin(), node.matrix.end(), glm::value_ptr(m));  // column-major
+    return glm::mat4(m);
+  }
+  glm::dmat4 t(1.0), r(1.0), s(1.0);
+  if (node.translation.size() == 3) {
+    t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  }
+  if (node.rotation.size() == 4) {  // glTF order x, y, z, w
+    r = glm::mat4_cast(glm::normalize(
+        glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])));
+  }
+  if (node.scale.size() == 3)
+    s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return glm::mat4(t * r * s);  // T·R·S (glTF 2.0 §3.5.3)
+}
+
+bool allFinite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+class GltfBuilder {
+ public:
+  GltfBuilder(const tinygltf::Model& model, const std::filesystem::path& path)
+      : model_(model), path_(path), accessors_(model, path) {}
+
+  Scene build() {
+    checkExtensions();
+    for (std::size_t i = 0; i < model_.materials.size(); ++i) addMaterial(i);
+    for (std::size_t i = 0; i < model_.meshes.size(); ++i) addMesh(i);
+    addNodes();
+    return std::move(scene_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& reason) const { throw LoadError(path_, reason); }
+
+  void checkExtensions() const {
+    for (const std::string& ext : model_.extensionsRequired) {
+      if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) ==
+          kSupportedExtensions.end()) {
+        fail("requires the unsupported extension '" + ext + "' (extensionsRequired)");
+      }
+    }
+  }
+
+  template <typename T>
+  void checkIndex(int index, const std::vector<T>& items, const std::string& what) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= items.size()) {
+      fail(what + " index " + std::to_string(index) + " is out of range (the file has " +
+           std::to_string(items.size()) + ")");
+    }
+  }
+
+  glm::vec3 vec3(const std::vector<double>& v, glm::dvec3 fallback, const std::string& what) const {
+    if (v.empty()) return glm::vec3(fallback);
+    if (v.size() < 3) fail(what + " has fewer than 3 components");
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!std::isfinite(v[i]) || v[i] < 0.0) fail(what + " is negative or not finite");
+    return glm::vec3(v[0], v[1], v[2]);
+  }
+
+  void addMaterial(std::size_t index) {
+    const tinygltf::Material& m = model_.materials[index];
+    const std::string what = "material " + std::to_string(index) + " '" + m.name + "'";
+    Material material;
+    material.name = m.name.empty() ? "material" + std::to_string(index) : m.name;
+    material.albedo =
+        vec3(m.pbrMetallicRoughness.baseColorFactor, glm::dvec3(1.0), what + " baseColorFactor");
+    material.albedo = glm::min(material.albedo, glm::vec3(1.0f));
+    const tinygltf::TextureInfo& base = m.pbrMetallicRoughness.baseColorTexture;
+    if (base.index >= 0) {
+      if (base.texCoord != 0)
+        fail(what + ": baseColorTexture uses TEXCOORD_" + std::to_string(base.texCoord) +
+             " (bounce reads it through TEXCOORD_0)");
+      material.albedoTexture = texture(base.index, what);
+    }
+    // Emission: emissiveFactor × KHR_materials_emissive_strength is a luminance in cd/m²,
+    // converted per channel in double (units.h).
+    double strength = 1.0;
+    if (auto it = m.extensions.find("KHR_materials_emissive_strength"); it != m.extensions.end()) {
+      const tinygltf::Value& s = it->second.Get("emissiveStrength");
+      if (s.IsNumber()) strength = s.GetNumberAsDouble();
+      if (!std::isfinite(strength) || strength < 0.0)
+        fail(what + ": emissiveStrength is negative or not finite");
+    }
+    const glm::dvec3 factor(vec3(m.emissiveFactor, glm::dvec3(0.0), what + " emissiveFactor"));
+    if (!m.emissiveFactor.empty()) {  // keep the exact doubles of the file
+      const glm::dvec3 exact(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+      for (int c = 0; c < 3; ++c)
+        material.emission[c] = static_cast<float>(nitsToRadiance(exact[c] * strength));
+    } else {
+      material.emission = glm::vec3(factor);
+    }
+    material.doubleSided = m.doubleSided;
+    scene_.materials.push_back(std::move(material));
+  }
+
+  uint32_t texture(int textureIndex, const std::string& what) {
+    checkIndex(textureIndex, model_.textures, what + " texture");
+    const int source = model_.textures[static_cast<std::size_t>(textureIndex)].source;
+    checkIndex(source, model_.images, what + " image");
+    if (auto it = textureOfImage_.find(source); it != textureOfImage_.end()) return it->second;
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
+    const std::string imageName =
+        image.uri.empty() ? "image " + std::to_string(source) : "'" + image.uri + "'";
+    if (image.image.empty()) fail(what + ": " + imageName + " could not be decoded");
+    try {
+      scene_.textures.push_back(decodeSrgbTexture(image.name.empty() ? image.uri : image.name,
+                                                  image.width, image.height, image.component,
+                                                  image.bits, image.image));
+    } catch (const std::invalid_argument& e) {
+      fail(what + ": " + imageName + ": " + e.what());
+    }
+    const auto index = static_cast<uint32_t>(scene_.textures.size() - 1);
+    textureOfImage_[source] = index;
+    return index;
+  }
+
+  uint32_t defaultMaterial() {
+    if (!defaultMaterial_) {
+      Material material;  // scene.h defaults: albedo 0.8, no emission
+      material.name = "default";
+      scene_.materials.push_back(material);
+      defaultMaterial_ = static_cast<uint32_t>(scene_.materials.size() - 1);
+    }
+    return *defaultMaterial_;
+  }
+
+  void addMesh(std::size_t meshIndex) {
+    const tinygltf::Mesh& gm = model_.meshes[meshIndex];
+    std::vector<uint32_t> ours;
+    for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
+      const tinygltf::Primitive& prim = gm.primitives[p];
+      const std::string what =
+          "mesh " + std::to_string(meshIndex) + " '" + gm.name + "' primitive " + std::to_string(p);
+      if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        fail(what + " has mode " + std::to_string(prim.mode) +
+             "; bounce loads triangles (mode 4) only");
+      }
+      Mesh mesh;
+      mesh.name = gm.primitives.size() > 1 ? gm.name + "#" + std::to_string(p) : gm.name;
+      auto attribute = [&](const char* name) {
+        auto it = prim.attributes.find(name);
+        return it == prim.attributes.end() ? -1 : it->second;
+      };
+      const int position = attribute("POSITION");
+      if (position < 0) fail(what + " has no POSITION");
+      mesh.positions = accessors_.readVec3(position, what + " POSITION");
+      const std::size_t n = mesh.positions.size();
+      if (const int a = attribute("NORMAL"); a >= 0)
+        mesh.normals = accessors_.readVec3(a, what + " NORMAL");
+      if (const int a = attribute("TEXCOORD_0"); a >= 0)
+        mesh.uv0 = accessors_.readVec2(a, what + " TEXCOORD_0");
+      if (const int a = attribute("TEXCOORD_1"); a >= 0)
+        mesh.uv1 = accessors_.readVec2(a, what + " TEXCOORD_1");
+      if ((!mesh.normals.empty() && mesh.normals.size() != n) ||
+          (!mesh.uv0.empty() && mesh.uv0.size() != n) ||
+          (!mesh.uv1.empty() && mesh.uv1.size() != n)) {
+        fail(what + ": attribute counts differ from POSITION's " + std::to_string(n));
+      }
+      if (prim.indices >= 0) {
+        mesh.indices = accessors_.readIndices(prim.indices, n, what + " indices");
+      } else {
+        mesh.indices.resize(n);
+        for (std::size_t i = 0; i < n; ++i) mesh.indices[i] = static_cast<uint32_t>(i);
+      }
+      if (mesh.indices.size() % 3 != 0)
+        fail(what + ": index count " + std::to_string(mesh.indices.size()) +
+             " is not a multiple of 3");
+      for (glm::vec3& normal : mesh.normals) {
+        const float len = glm::length(normal);
+        normal = len > 0.0f ? normal / len : glm::vec3(0, 1, 0);
+      }
+      if (mesh.normals.empty()) makeFlatNormals(mesh);  // glTF 2.0 §3.7.2.1: flat when absent
+      if (prim.material >= 0) {
+        checkIndex(prim.material, model_.materials, what + " material");
+        mesh.material = static_cast<uint32_t>(prim.material);
+      } else {
+        mesh.material = defaultMaterial();
+      }
+      scene_.meshes.push_back(std::move(mesh));
+      ours.push_back(static_cast<uint32_t>(scene_.meshes.size() - 1));
+    }
+    meshesOf_.push_back(std::move(ours));
+  }
+
+  Mobility mobility(const tinygltf::Node& node, Mobility inherited, const std::string& what) const {
+    if (!node.extras.Has("bounce")) return inherited;
+    const tinygltf::Value& bounce = node.extras.Get("bounce");
+    if (!bounce.Has("mobility")) return inherited;
+    const tinygltf::Value& value = bounce.Get("mobility");
+    const std::string s = value.IsString() ? value.Get<std::string>() : "";
+    if (s == "static") return Mobility::Static;
+    if (s == "dynamic") return Mobility::Dynamic;
+    fail(what + ": extras.bounce.mobility must be \"static\" or \"dynamic\"");
+  }
+
+  void addLight(int index, const glm::mat4& world, const std::string& what) {
+    checkIndex(index, model_.lights, what + " KHR_lights_punctual light");
+    const tinygltf::Light& gl = model_.lights[static_cast<std::size_t>(index)];
+    Light light;
+    light.name = gl.name.empty() ? "light" + std::to_string(index) : gl.name;
+    const glm::vec3 color = vec3(gl.color, glm::dvec3(1.0), what + " light color");
+    if (!std::isfinite(gl.intensity) || gl.intensity < 0.0)
+      fail(what + ": light intensity is negative or not finite");
+    light.position = glm::vec3(world[3]);
+    const glm::vec3 down = glm::vec3(world * glm::vec4(0, 0, -1, 0));  // lights shine along −Z
+    if (!(glm::length(down) > 0.0f)) fail(what + ": the light's transform is degenerate");
+    light.direction = glm::normalize(down);
+    glm::vec3 radiometric;
+    if (gl.type == "directional") {
+      light.type = LightType::Directional;
+      for (int c = 0; c < 3; ++c)
+        radiometric[c] = static_cast<float>(luxToWattsPerM2(color[c] * gl.intensity));
+      light.irradiance = radiometric;
+    } else if (gl.type == "point" || gl.type == "spot") {
+      light.type = gl.type == "point" ? LightType::Point : LightType::Spot;
+      for (int c = 0; c < 3; ++c)
+        radiometric[c] = static_cast<float>(candelaToWattsPerSr(color[c] * gl.intensity));
+      light.intensity = radiometric;
+      if (light.type == LightType::Spot) {
+        const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
+        if (!(inner >= 0.0 && inner < outer && outer <= 1.5707963267948966)) {
+          fail(what + ": spot cone angles need 0 <= inner < outer <= pi/2");
+        }
+        light.innerConeAngle = static_cast<float>(inner);
+        light.outerConeAngle = static_cast<float>(outer);
+      }
+    } else {
+      fail(what + ": unknown light type '" + gl.type + "'");
+    }
+    scene_.lights.push_back(light);
+  }
+
+  void addCamera(int index, const glm::mat4& world, const tinygltf::Node& node,
+                 const std::string& what) {
+    checkIndex(index, model_.cameras, what + " camera");
+    const tinygltf::Camera& gc = model_.cameras[static_cast<std::size_t>(index)];
+    if (gc.type != "perspective")
+      fail(what + ": camera type '" + gc.type + "' is not supported (perspective only)");
+    const tinygltf::PerspectiveCamera& p = gc.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < 3.14159) || !(p.znear > 0.0) || p.aspectRatio < 0.0 ||
+        p.zfar < 0.0 || !std::isfinite(p.aspectRatio) || !std::isfinite(p.zfar)) {
+      fail(what + ": perspective camera needs 0 < yfov < pi, znear > 0, aspectRatio and zfar >= 0");
+    }
+    Camera camera;
+    camera.name = !gc.name.empty()     ? gc.name
+                  : !node.name.empty() ? node.name
+                                       : "camera" + std::to_string(index);
+    camera.cameraToWorld = world;
+    camera.yfov = static_cast<float>(p.yfov);
+    camera.aspect = static_cast<float>(p.aspectRatio);
+    camera.znear = static_cast<float>(p.znear);
+    if (p.zfar > p.znear) camera.zfar = static_cast<float>(p.zfar);  // 0/absent: infinite → default
+    scene_.cameras.push_back(camera);
+  }
+
+  // Walks the default scene's node trees (explicit stack: deep files cannot overflow it),
+  // composing world = parent · local, and places meshes, lights and cameras.
+  void addNodes() {
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      checkIndex(s, model_.scenes, "default scene");
+      roots = model_.scenes[static_cast<std::size_t>(s)].nodes;
+    }
+    struct Pending {
+      int node;
+      glm::mat4 parent;
+      Mobility mobility;
+    };
+    std::vector<Pending> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+      stack.push_back({*it, glm::mat4(1.0f), Mobility::Static});
+    std::vector<bool> visited(model_.nodes.size(), false);
+    while (!stack.empty()) {
+      const Pending item = stack.back();
+      stack.pop_back();
+      checkIndex(item.node, model_.nodes, "node");
+      const auto n = static_cast<std::size_t>(item.node);
+      const std::string what = "node " + std::to_string(n) + " '" + model_.nodes[n].name + "'";
+      if (visited[n]) fail(what + " is reached twice (node hierarchies must be trees)");
+      visited[n] = true;
+      const tinygltf::Node& node = model_.nodes[n];
+      if (!node.matrix.empty() && node.matrix.size() != 16)
+        fail(what + ": matrix needs 16 numbers");
+      const glm::mat4 world = item.parent * localTransform(node);
+      if (!allFinite(world)) fail(what + ": transform is not finite");
+      const Mobility mob = mobility(node, item.mobility, what);
+      if (node.mesh >= 0) {
+        checkIndex(node.mesh, model_.meshes, what + " mesh");
+        for (const uint32_t mesh : meshesOf_[static_cast<std::size_t>(node.mesh)]) {
+          scene_.instances.push_back(
+              Instance{node.name.empty() ? scene_.meshes[mesh].name : node.name, mesh, world, mob});
+        }
+      } else if (node.mesh < -1) {
+        fail(what + ": mesh index " + std::to_string(node.mesh) + " is out of range");
+      }
+      if (node.camera >= 0 || node.camera < -1) addCamera(node.camera, world, node, what);
+      if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
+        const tinygltf::Value& light = it->second.Get("light");
+        if (!light.IsInt()) fail(what + ": KHR_lights_punctual.light is not an index");
+        addLight(light.Get<int>(), world, what);
+      }
+      for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
+        stack.push_back({*c, world, mob});
+    }
+  }
+
+  const tinygltf::Model& model_;
+  std::filesystem::path path_;
+  GltfAccessors accessors_;
+  Scene scene_;
+  std::vector<std::vector<uint32_t>> meshesOf_;  // glTF mesh → our meshes (one per primitive)
+  std::map<int, uint32_t> textureOfImage_;
+  std::optional<uint32_t> defaultMaterial_;
+};
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& path) {
+  const std::vector<unsigned char> bytes = readBytes(path);
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (binary || path.extension() == ".glb") checkGlbContainer(path, bytes);
+  tinygltf::TinyGLTF parser;
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string baseDir = path.parent_path().string();
+  const bool ok =
+      binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                           static_cast<unsigned int>(bytes.size()), baseDir)
+             : parser.LoadASCIIFromString(&model, &err, &warn,
+                                          reinterpret_cast<const char*>(bytes.data()),
+                                          static_cast<unsigned int>(bytes.size()), baseDir);
+  if (!ok) throw LoadError(path, "invalid glTF: " + trimmed(err.empty() ? warn : err));
+  return GltfBuilder(model, path).build();
+}
+
+}  // namespace bounce

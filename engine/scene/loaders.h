@@ -1,0 +1,15 @@
+// The per-format loaders behind loadScene (load.h). Internal to bounce_scene.
+#pragma once
+
+#include <filesystem>
+
+#include "scene/scene.h"
+
+namespace bounce {
+
+// glTF 2.0, text (.gltf) or binary (.glb). Throws LoadError.
+Scene loadGltf(const std::filesystem::path& path);
+// Wavefront OBJ with its MTL materials. Throws LoadError.
+Scene loadObj(const std::filesystem::path& path);
+
+}  // namespace bounce

@@ -1,0 +1,62 @@
+// Node hierarchies flatten into world transforms in the right order (world = parent · child,
+// each local = T·R·S or its matrix), and mobility is read from extras and inherited.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gltf_fixture.h"
+#include "scene/load.h"
+
+namespace bounce {
+namespace {
+
+glm::vec3 apply(const glm::mat4& m, glm::vec3 p) {
+  return glm::vec3(m * glm::vec4(p, 1.0f));
+}
+
+TEST(GltfHierarchy, ChildTranslatedUnderRotatedParent) {
+  test::TempDir dir;
+  test::GltfFixture f = test::GltfFixture::triangle();
+  const double h = std::sqrt(0.5);
+  // Parent: translate (10,0,0), rotate +90° about +z, scale 2. Child: translate (1,0,0).
+  // Child origin in world = T_p · R_p · S_p · (1,0,0) = (10,0,0) + R_z(90°)·(2,0,0) = (10,2,0).
+  f.doc["nodes"] = {
+      {{"name", "parent"},
+       {"translation", {10.0, 0.0, 0.0}},
+       {"rotation", {0.0, 0.0, h, h}},
+       {"scale", {2.0, 2.0, 2.0}},
+       {"children", {1}},
+       {"extras", {{"bounce", {{"mobility", "dynamic"}}}}}},
+      {{"name", "child"}, {"translation", {1.0, 0.0, 0.0}}, {"mesh", 0}, {"children", {2}}},
+      {{"name", "grandchild"},
+       {"mesh", 0},
+       {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 3, 1}},  // column-major: +3 z
+       {"extras", {{"bounce", {{"mobility", "static"}}}}}}};
+  f.writeGltf(dir / "tree.gltf");
+  const Scene scene = loadScene(dir / "tree.gltf");
+  ASSERT_EQ(scene.instances.size(), 2u);
+  const Instance& child = scene.instances[0];
+  const Instance& grandchild = scene.instances[1];
+  EXPECT_LT(glm::distance(apply(child.transform, glm::vec3(0)), glm::vec3(10, 2, 0)), 1e-5f);
+  // The child's local +x (1,0,0) is rotated to +y and scaled by 2: (10,4,0).
+  EXPECT_LT(glm::distance(apply(child.transform, glm::vec3(1, 0, 0)), glm::vec3(10, 4, 0)), 1e-5f);
+  // Grandchild's +3 z is scaled by the parent's 2: (10,2,6).
+  EXPECT_LT(glm::distance(apply(grandchild.transform, glm::vec3(0)), glm::vec3(10, 2, 6)), 1e-5f);
+  EXPECT_EQ(child.mobility, Mobility::Dynamic);      // inherited from the parent
+  EXPECT_EQ(grandchild.mobility, Mobility::Static);  // overridden
+}
+
+TEST(GltfHierarchy, CyclesAndBadMobilityAreErrors) {
+  test::TempDir dir;
+  test::GltfFixture f = test::GltfFixture::triangle();
+  f.doc["nodes"] = {{{"children", {1}}}, {{"children", {0}}, {"mesh", 0}}};
+  f.writeGltf(dir / "cycle.gltf");
+  EXPECT_THROW(loadScene(dir / "cycle.gltf"), LoadError);
+  test::GltfFixture g = test::GltfFixture::triangle();
+  g.doc["nodes"][0]["extras"] = {{"bounce", {{"mobility", "flying"}}}};
+  g.writeGltf(dir / "mobility.gltf");
+  EXPECT_THROW(loadScene(dir / "mobility.gltf"), LoadError);
+}
+
+}  // namespace
+}  // namespace bounce
