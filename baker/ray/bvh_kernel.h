@@ -1,22 +1,40 @@
-// bounce's own BVH backend (binned SAH build, ordered traversal, watertight triangles).
+// bounce's own ray kernel backend: a binned-SAH BVH (bvh.h) over the scene's non-degenerate
+// triangles, traversed near child first with a slab test per node and the watertight
+// triangle test (watertight_triangle.h) in the leaves. Scalar, one ray at a time: it is the
+// portable fallback and the cross-check for Embree, written to be read.
 #pragma once
 
-#include <stdexcept>
+#include <vector>
 
+#include "ray/bvh.h"
 #include "ray/ray_kernel.h"
 
 namespace bounce {
 
 class BvhKernel final : public RayKernel {
  public:
-  explicit BvhKernel(const WorldGeometry&) {
-    throw std::runtime_error("the 'bvh' ray backend is not built yet; use 'embree'");
-  }
+  explicit BvhKernel(const WorldGeometry& geometry, const BvhBuildOptions& options = {});
+
   using RayKernel::intersect;
   using RayKernel::occluded;
-  Hit intersect(const Ray&) const override { return {}; }
-  bool occluded(const Ray&) const override { return false; }
+  Hit intersect(const Ray& ray) const override;
+  bool occluded(const Ray& ray) const override;
   const char* name() const override { return "bvh"; }
+
+  const Bvh& bvh() const { return bvh_; }
+
+ private:
+  // A triangle's vertices, stored in leaf order so a leaf reads one contiguous block.
+  struct LeafTriangle {
+    glm::vec3 p0, p1, p2;
+  };
+
+  template <bool kAnyHit>
+  uint32_t traverse(const Ray& ray, float& t, float& u, float& v) const;
+
+  const WorldGeometry& geometry_;
+  Bvh bvh_;                              // primitives: indices into WorldGeometry::triangles
+  std::vector<LeafTriangle> triangles_;  // triangles_[i] = vertices of bvh_.primitives[i]
 };
 
 }  // namespace bounce

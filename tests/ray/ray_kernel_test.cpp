@@ -106,7 +106,8 @@ TEST_P(RayKernelTest, EmptySceneMisses) {
   EXPECT_FALSE(kernel->occluded(Ray{}));
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, RayKernelTest, ::testing::Values(RayBackend::Embree),
+INSTANTIATE_TEST_SUITE_P(Backends, RayKernelTest,
+                         ::testing::Values(RayBackend::Embree, RayBackend::Bvh),
                          [](const ::testing::TestParamInfo<RayBackend>& backend) {
                            return std::string(backend.param == RayBackend::Embree ? "Embree"
                                                                                   : "Bvh");
