@@ -1,0 +1,157 @@
+// Direct light on a Lambertian plane against closed forms: delta lights (point, spot,
+// directional) and a square area emitter with each light-transport strategy.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/light_falloff.h"
+#include "test_scenes.h"
+
+namespace bounce {
+namespace {
+
+using test::addMaterial;
+using test::addQuad;
+
+constexpr double kPiD = 3.14159265358979323846;
+const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
+
+// A 200 m × 200 m plane at z = 0 facing +z.
+test::World planeWorld() {
+  test::World world;
+  const uint32_t m = addMaterial(world.scene, glm::vec3(kPlaneAlbedo));
+  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
+  return world;
+}
+
+// A ray straight down onto the plane point (x, y, 0) from 1 m above it.
+Ray downOnto(double x, double y) {
+  Ray ray;
+  ray.origin = glm::vec3(static_cast<float>(x), static_cast<float>(y), 1.0f);
+  ray.direction = {0, 0, -1};
+  return ray;
+}
+
+// Delta lights make the estimator deterministic (NEE only; the bounce rays escape), so the
+// tolerance is float rounding: 1e-5 relative.
+void expectRadiance(const PathTracer& tracer, const Ray& ray, glm::dvec3 expected) {
+  const test::Estimate e = test::estimateLi(tracer, ray, 1u, 0u, 16);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(e.mean[c], expected[c], 1e-5 * expected[c] + 1e-12) << "channel " << c;
+    EXPECT_LE(e.variance[c], 1e-12) << "a delta light's estimate has no variance";
+  }
+}
+
+// Lo = ρ/π · I · cosθ / r² for a point light of intensity I at height h.
+TEST(DirectLight, PointLightOverPlane) {
+  test::World world = planeWorld();
+  Light light;
+  light.type = LightType::Point;
+  light.position = {0, 0, 2};
+  light.intensity = {10, 20, 5};
+  world.scene.lights.push_back(light);
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  for (double x : {0.0, 1.0, 3.0}) {
+    const double y = 0.5;
+    const double r2 = x * x + y * y + 4.0;
+    const double cosTheta = 2.0 / std::sqrt(r2);
+    expectRadiance(tracer, downOnto(x, y),
+                   kPlaneAlbedo / kPiD * glm::dvec3(light.intensity) * cosTheta / r2);
+  }
+}
+
+// Spot: I·t² with t = (cosα − cos outer)/(cos inner − cos outer) clamped, α the angle off the
+// spot axis; inside the inner cone, in the penumbra and outside the outer cone.
+TEST(DirectLight, SpotLightOverPlane) {
+  test::World world = planeWorld();
+  Light light;
+  light.type = LightType::Spot;
+  light.position = {0, 0, 2};
+  light.direction = {0, 0, -1};
+  light.intensity = {40, 30, 20};
+  light.innerConeAngle = 0.3f;
+  light.outerConeAngle = 0.6f;
+  world.scene.lights.push_back(light);
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  for (double alpha : {0.1, 0.45, 0.8}) {
+    const double x = 2.0 * std::tan(alpha);
+    const double r2 = x * x + 4.0;
+    const double cosTheta = 2.0 / std::sqrt(r2);
+    const double t =
+        std::clamp((std::cos(alpha) - std::cos(0.6)) / (std::cos(0.3) - std::cos(0.6)), 0.0, 1.0);
+    SCOPED_TRACE(alpha);
+    expectRadiance(tracer, downOnto(x, 0.0),
+                   kPlaneAlbedo / kPiD * glm::dvec3(light.intensity) * t * t * cosTheta / r2);
+  }
+}
+
+// Directional: Lo = ρ/π · E · cosθ, E the irradiance at normal incidence.
+TEST(DirectLight, DirectionalLightOverPlane) {
+  test::World world = planeWorld();
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(glm::vec3(1, 0, -2));
+  light.irradiance = {3, 2, 1};
+  world.scene.lights.push_back(light);
+  // A black (ρ = 0, so no interreflection) blocker at z = 1 over x ∈ [−3, −2]: its shadow on
+  // the plane is x ∈ [−2.5, −1.5].
+  const uint32_t m = addMaterial(world.scene, glm::vec3(0.0f));
+  addQuad(world.scene, {-3, -1, 1}, {-2, -1, 1}, {-2, 1, 1}, {-3, 1, 1}, m);
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  const double cosTheta = 2.0 / std::sqrt(5.0);
+  expectRadiance(tracer, downOnto(0.5, 0.5),
+                 kPlaneAlbedo / kPiD * glm::dvec3(light.irradiance) * cosTheta);
+  // In the blocker's shadow: radiance 0.
+  const test::Estimate shadow = test::estimateLi(tracer, downOnto(-2.0, 0.0), 1u, 0u, 16);
+  EXPECT_EQ(shadow.mean, glm::dvec3(0.0));
+}
+
+// View factor from a differential area to a parallel rectangle [0,a]×[0,b] at distance c,
+// with the normal through a corner (e.g. Howell's catalogue, B-3):
+//   F = 1/(2π) [ A/√(1+A²) atan(B/√(1+A²)) + B/√(1+B²) atan(A/√(1+B²)) ], A = a/c, B = b/c.
+// Odd in a and b, so any rectangle follows by inclusion–exclusion of signed corners.
+double cornerFactor(double a, double b, double c) {
+  const double A = a / c, B = b / c;
+  const double sa = std::sqrt(1 + A * A), sb = std::sqrt(1 + B * B);
+  return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2 * kPiD);
+}
+double rectangleFactor(double x, double y, double x0, double x1, double y0, double y1, double c) {
+  return cornerFactor(x1 - x, y1 - y, c) - cornerFactor(x0 - x, y1 - y, c) -
+         cornerFactor(x1 - x, y0 - y, c) + cornerFactor(x0 - x, y0 - y, c);
+}
+
+// A 1 m × 1 m emitter (radiance Le, facing down, albedo 0) 1 m over the plane: the plane
+// reflects Lo = ρ · Le · F. Light sampling, BRDF sampling and MIS must all agree with it
+// within 5 standard errors of the estimate (sample variance of the 4096 samples).
+TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
+  test::World world = planeWorld();
+  const glm::dvec3 le(2, 3, 4);
+  const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le));
+  addQuad(world.scene, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1},
+          light);
+  world.build();
+  for (LightStrategy strategy :
+       {LightStrategy::LightOnly, LightStrategy::BrdfOnly, LightStrategy::Mis}) {
+    TraceSettings settings;
+    settings.strategy = strategy;
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+    for (glm::dvec2 at : {glm::dvec2(0, 0), glm::dvec2(0.4, 0.3), glm::dvec2(1.5, 0.2)}) {
+      const double f = rectangleFactor(at.x, at.y, -0.5, 0.5, -0.5, 0.5, 1.0);
+      const glm::dvec3 expected = kPlaneAlbedo * le * f;
+      Ray ray = downOnto(at.x, at.y);
+      ray.origin.z = 0.5f;  // below the emitter
+      const test::Estimate e = test::estimateLi(tracer, ray, 3u, 0u, 4096);
+      std::printf("strategy %d at (%.1f, %.1f): F = %.5f, Lo %.5f expected %.5f, SE %.2g\n",
+                  static_cast<int>(strategy), at.x, at.y, f, e.mean.g, expected.g,
+                  e.standardError().g);
+      EXPECT_TRUE(test::agreeWithin(e.mean, e.standardError(), expected, glm::dvec3(0), 5.0))
+          << "strategy " << static_cast<int>(strategy) << " at " << at.x << "," << at.y;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bounce
