@@ -1,0 +1,48 @@
+#include "gl/draw_state.h"
+
+#include "gl/gl_functions.h"
+
+namespace bounce::gl {
+
+void clear(glm::vec4 color) {
+  glClearColor(color.r, color.g, color.b, color.a);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void setDepthTest(bool enabled) {
+  if (enabled) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
+  glDepthMask(enabled ? GL_TRUE : GL_FALSE);
+}
+
+void setBackFaceCulling(bool enabled) {
+  if (enabled) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+}
+
+void drawFullscreenTriangle() {
+  // A core profile draws only with a vertex array bound, even one without attributes. One per
+  // context: vertex arrays are not shared between contexts.
+  GLuint vertexArray = 0;
+  glGenVertexArrays(1, &vertexArray);
+  glBindVertexArray(vertexArray);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vertexArray);
+}
+
+void finish() {
+  glFinish();
+}
+
+}  // namespace bounce::gl

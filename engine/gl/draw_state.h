@@ -1,0 +1,20 @@
+// The fixed-function state a pass sets before drawing, as plain calls.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace bounce::gl {
+
+// Clears the bound framebuffer's colour to `color` and depth to the far plane.
+void clear(glm::vec4 color);
+// Depth test (less) and depth writes on or off.
+void setDepthTest(bool enabled);
+// Culls back faces (counter-clockwise = front) when true.
+void setBackFaceCulling(bool enabled);
+// Draws one triangle covering the viewport; the vertex shader makes its corners from
+// gl_VertexID (no attributes), see shaders/fullscreen.vert.
+void drawFullscreenTriangle();
+// Blocks until the GPU has finished every command issued so far.
+void finish();
+
+}  // namespace bounce::gl

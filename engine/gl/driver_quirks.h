@@ -1,0 +1,30 @@
+// Driver behaviour the GL layer works around, each a named, commented flag (the model is
+// Filament's OpenGLContext `bugs`). Private to the GL layer; the flags are facts measured on
+// Mesa 22.3 (see /work/shared/TOOLCHAIN.md), kept in one place so a new driver is one edit.
+#pragma once
+
+namespace bounce::gl {
+
+struct DriverQuirks {
+  // OSMesa: OSMesaMakeCurrent() refuses a null colour buffer even though every bounce pass
+  // renders into an FBO; we hand it a 1x1 client buffer that nothing ever draws to.
+  bool osmesaNeedsClientBuffer = true;
+
+  // EGL: eglGetDisplay(EGL_DEFAULT_DISPLAY) fails without an X server (unless the environment
+  // sets EGL_PLATFORM=surfaceless), so displays are asked for by platform: Mesa's surfaceless
+  // platform first (any machine, llvmpipe without a GPU), then the device platform (GPU drivers
+  // without Mesa's extension, e.g. NVIDIA headless).
+  bool eglDefaultDisplayNeedsX = true;
+
+  // glReadPixels returns rows bottom-up (GL's window origin is the lower-left corner) while
+  // bounce::Image is top-down; OSMesa's client buffer is bottom-up too. Readback flips rows.
+  bool readPixelsBottomUp = true;
+
+  // Compile logs name the source string and line as "S:L(C): error: ..." (Mesa) or
+  // "S(L) : error ..." (NVIDIA, AMD); shader.cpp rewrites both to "file:L: ...".
+  bool logFormatsDiffer = true;
+};
+
+inline constexpr DriverQuirks kDriverQuirks{};
+
+}  // namespace bounce::gl
