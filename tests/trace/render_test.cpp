@@ -1,0 +1,173 @@
+// The camera renderer: determinism across thread counts, agreement between ray kernel
+// backends, and bad input that must give a defined, finite result.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <tbb/global_control.h>
+
+#include "transport_scenes.h"
+
+namespace bounce {
+namespace {
+
+bool bitIdentical(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+// A corridor with an area emitter plus a point and a spot light: every estimator path runs.
+test::World busyWorld(RayBackend backend) {
+  test::World world = test::corridor();
+  Light point;
+  point.type = LightType::Point;
+  point.position = {3.0f, 1.5f, 1.8f};
+  point.intensity = {1, 2, 3};
+  Light spot = point;
+  spot.type = LightType::Spot;
+  spot.position = {3.5f, 0.5f, 1.9f};
+  spot.direction = glm::normalize(glm::vec3(-0.5f, 0.2f, -1.0f));
+  world.scene.lights = {point, spot};
+  world.build(backend);
+  return world;
+}
+
+TEST(CameraRender, SameSeedIsBitIdenticalWithOneAndTwoThreads) {
+  const test::World world = busyWorld(RayBackend::Embree);
+  const Camera camera = test::corridorCamera();
+  TraceSettings settings;
+  settings.spp = 16;
+  settings.seed = 7;
+  settings.threads = 1;
+  const auto one =
+      traceCamera(world.scene, world.geometry, *world.kernel, camera, 40, 24, settings);
+  settings.threads = 2;
+  const auto two =
+      traceCamera(world.scene, world.geometry, *world.kernel, camera, 40, 24, settings);
+  EXPECT_EQ(one.threads, 1);
+  EXPECT_TRUE(bitIdentical(one.radiance, two.radiance));
+  EXPECT_TRUE(bitIdentical(one.sampleVariance, two.sampleVariance));
+  {
+    // A global limit of one thread (what a caller's tbb::global_control does) changes nothing.
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    settings.threads = 0;
+    const auto global =
+        traceCamera(world.scene, world.geometry, *world.kernel, camera, 40, 24, settings);
+    EXPECT_TRUE(bitIdentical(one.radiance, global.radiance));
+  }
+  settings.seed = 8;
+  const auto other =
+      traceCamera(world.scene, world.geometry, *world.kernel, camera, 40, 24, settings);
+  EXPECT_FALSE(bitIdentical(one.radiance, other.radiance));
+}
+
+// Embree and our BVH find the same hits up to float ties, so the two images estimate the same
+// value: image means within 5 combined standard errors (other seeds, so independent).
+TEST(CameraRender, EmbreeAndBvhBackendsAgree) {
+  std::unique_ptr<test::World> bvh;
+  try {
+    bvh = std::make_unique<test::World>(busyWorld(RayBackend::Bvh));
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "BVH backend unavailable: " << e.what();
+  }
+  const test::World embree = busyWorld(RayBackend::Embree);
+  const Camera camera = test::corridorCamera();
+  TraceSettings settings;
+  settings.spp = 64;
+  settings.seed = 1;
+  const auto a =
+      traceCamera(embree.scene, embree.geometry, *embree.kernel, camera, 16, 16, settings);
+  settings.seed = 2;
+  const auto b = traceCamera(bvh->scene, bvh->geometry, *bvh->kernel, camera, 16, 16, settings);
+  const test::ImageMean ma = test::imageMean(a, settings.spp);
+  const test::ImageMean mb = test::imageMean(b, settings.spp);
+  EXPECT_TRUE(test::agreeWithin(ma.mean, ma.standardError, mb.mean, mb.standardError, 5.0));
+}
+
+TraceSettings quick() {
+  TraceSettings settings;
+  settings.spp = 4;
+  return settings;
+}
+
+TEST(BadInput, SceneWithoutLightsIsBlack) {
+  test::World world;
+  test::addInwardBox(world.scene, glm::vec3(-1), glm::vec3(1),
+                     test::addMaterial(world.scene, glm::vec3(0.8f)));
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, quick());
+  EXPECT_FALSE(tracer.hasLights());
+  const Image image = renderCamera(world.scene, world.geometry, *world.kernel,
+                                   test::furnaceCamera(), 8, 8, quick());
+  for (const glm::vec3& p : image.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
+}
+
+TEST(BadInput, ZeroAreaEmitterIsIgnored) {
+  test::World world;
+  test::addInwardBox(world.scene, glm::vec3(-1), glm::vec3(1),
+                     test::addMaterial(world.scene, glm::vec3(0.8f)));
+  // A degenerate (collinear) emissive quad: it has no area, hence emits no power.
+  test::addQuad(world.scene, {0, 0, -0.5f}, {0.5f, 0, -0.5f}, {1, 0, -0.5f}, {0.2f, 0, -0.5f},
+                test::addMaterial(world.scene, glm::vec3(0.5f), glm::vec3(100.0f)));
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, quick());
+  EXPECT_TRUE(tracer.emitters().empty());
+  const Image image = renderCamera(world.scene, world.geometry, *world.kernel,
+                                   test::furnaceCamera(), 8, 8, quick());
+  for (const glm::vec3& p : image.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
+}
+
+// NaN positions, normals, albedo, emission and light values in an otherwise valid lit scene:
+// every pixel stays finite and the valid light still shows.
+TEST(BadInput, NonFiniteDataGivesFinitePixels) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  test::World world = test::furnace(0.5f, glm::vec3(1.0f));
+  test::addQuad(world.scene, {nan, 0, 0}, {0.5f, 0, 0}, {0.5f, 0.5f, 0}, {0, 0.5f, 0},
+                test::addMaterial(world.scene, glm::vec3(0.5f), glm::vec3(nan)));
+  test::addQuad(world.scene, {-0.5f, -0.5f, -0.9f}, {0.5f, -0.5f, -0.9f}, {0.5f, 0.5f, -0.9f},
+                {-0.5f, 0.5f, -0.9f},
+                test::addMaterial(world.scene, glm::vec3(nan), glm::vec3(inf)));
+  world.scene.meshes.back().normals[0] = glm::vec3(nan);
+  Light broken;
+  broken.position = {nan, 0, 0};
+  broken.intensity = {1, 1, 1};
+  world.scene.lights.push_back(broken);
+  Light infinite;
+  infinite.type = LightType::Directional;
+  infinite.direction = {0, 0, 0};
+  infinite.irradiance = glm::vec3(inf);
+  world.scene.lights.push_back(infinite);
+  world.build();
+  const Image image = renderCamera(world.scene, world.geometry, *world.kernel,
+                                   test::furnaceCamera(), 16, 16, quick());
+  EXPECT_TRUE(image.allFinite());
+  double sum = 0.0;
+  for (const glm::vec3& p : image.pixels) sum += static_cast<double>(p.g);
+  EXPECT_GT(sum, 0.0);
+
+  // A camera with a NaN transform: black, finite.
+  Camera camera = test::furnaceCamera();
+  camera.cameraToWorld[3][0] = nan;
+  const Image black =
+      renderCamera(world.scene, world.geometry, *world.kernel, camera, 4, 4, quick());
+  for (const glm::vec3& p : black.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
+}
+
+TEST(BadInput, InvalidSettingsThrow) {
+  test::World world = test::furnace(0.5f, glm::vec3(1.0f));
+  world.build();
+  TraceSettings settings;
+  settings.spp = 0;
+  EXPECT_THROW(renderCamera(world.scene, world.geometry, *world.kernel, test::furnaceCamera(), 4, 4,
+                            settings),
+               std::invalid_argument);
+  EXPECT_THROW(renderCamera(world.scene, world.geometry, *world.kernel, test::furnaceCamera(), 0, 4,
+                            quick()),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace bounce
