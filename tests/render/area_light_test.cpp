@@ -1,0 +1,142 @@
+// Area lights (emissive quads) against closed-form form factors. The receiver's radiance under
+// an emitter of radiance L_e is ρ/π · E = ρ · L_e · F, F the point-to-rectangle form factor.
+// Like the punctual tests, there is no sampling noise: 1% covers float rounding with margin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 64;
+constexpr double kPi = std::numbers::pi;
+const glm::vec3 kAlbedo(0.8f, 0.5f, 0.25f);
+const glm::vec3 kEmission(6.0f, 3.0f, 1.5f);  // W/(sr·m²)
+
+// Form factor from a point to a parallel rectangle X × Y at height h with one corner straight
+// above the point (Howell's catalogue, configuration B-1; checked against quadrature):
+//   F = 1/(2π) [x/√(1+x²) atan(y/√(1+x²)) + y/√(1+y²) atan(x/√(1+y²))],  x = X/h, y = Y/h.
+double parallelCornerFormFactor(double X, double Y, double h) {
+  const double x = X / h, y = Y / h;
+  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * kPi);
+}
+
+// Point to a rectangle in a perpendicular plane: the rectangle stands at distance d, spans W
+// sideways from the point's foot and H up from the point's own plane (Howell B-3):
+//   F = 1/(2π) [atan(W/d) − d/√(d²+H²) · atan(W/√(d²+H²))].
+double perpendicularFormFactor(double d, double H, double W) {
+  const double s = std::sqrt(d * d + H * H);
+  return (std::atan(W / d) - d / s * std::atan(W / s)) / (2 * kPi);
+}
+
+// A 2a × 2a square at height h centred above the origin, seen from floor point p: it splits
+// into four rectangles with a corner above p, so F = Σ F_corner.
+double squareFormFactor(double a, double h, glm::vec3 p) {
+  return parallelCornerFormFactor(a - p.x, a - p.z, h) +
+         parallelCornerFormFactor(a + p.x, a - p.z, h) +
+         parallelCornerFormFactor(a - p.x, a + p.z, h) +
+         parallelCornerFormFactor(a + p.x, a + p.z, h);
+}
+
+Material emitter() {
+  Material m;
+  m.name = "emitter";
+  m.albedo = glm::vec3(0.0f);
+  m.emission = kEmission;
+  return m;
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, int x, int y) {
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(actual[c], expected[c], 0.01f * std::abs(expected[c]) + 1e-7f)
+        << "pixel (" << x << "," << y << ") channel " << c;
+}
+
+// A 2a × 2a square at height h facing down; the camera sits below it looking at the floor.
+TEST(AreaLight, ParallelSquareGivesClosedFormFormFactor) {
+  const float a = 0.5f, h = 1.2f;
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  addQuad(scene, {-a, h, -a}, {2 * a, 0, 0}, {0, 0, 2 * a}, emitter());  // (x × z) faces −y
+  const Camera camera = downCamera(0.9f);
+  const Image image = render(scene, camera, kSize, kSize);
+  const int pixels[][2] = {{32, 32}, {31, 31}, {0, 0}, {63, 20}, {10, 50}, {40, 8}};
+  for (const auto& [x, y] : pixels) {
+    const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+    const double F = squareFormFactor(a, h, p);
+    expectNear(image.at(x, y), kAlbedo * kEmission * static_cast<float>(F), x, y);
+  }
+  // Straight below the centre: 4 × the corner formula, by symmetry.
+  const double centre = 4 * parallelCornerFormFactor(a, a, h);
+  EXPECT_GT(centre, 0.1);  // a big, close emitter: far from a vanishing test
+}
+
+// An emitter standing wholly below the floor's horizon gives it nothing: without clipping, the
+// contour integral of the polygon would be non-zero.
+TEST(AreaLight, EmitterBelowHorizonContributesNothing) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  // The plane x = 1, facing −x (towards the origin), y from −2 to −0.5 m.
+  addQuad(scene, {1, -2, 1}, {0, 1.5f, 0}, {0, 0, -2}, emitter());
+  const Camera camera = downCamera(2.0f);
+  const Image image = render(scene, camera, kSize, kSize);
+  for (int y = 0; y < kSize; y += 7)
+    for (int x = 0; x < kSize; x += 7) EXPECT_EQ(image.at(x, y), glm::vec3(0.0f)) << x << "," << y;
+}
+
+// The same wall emitter straddling the horizon (y from −1 to +H): only the part above the floor
+// lights it, F = perpendicular form factor of the clipped rectangle, split at the point's foot.
+TEST(AreaLight, EmitterPartlyBelowHorizonIsClipped) {
+  const float H = 0.8f, W = 1.0f, wall = 1.0f;
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  addQuad(scene, {wall, -1, W}, {0, 1 + H, 0}, {0, 0, -2 * W}, emitter());  // faces −x
+  const Camera camera = downCamera(2.0f);
+  const Image image = render(scene, camera, kSize, kSize);
+  const int pixels[][2] = {{32, 32}, {0, 0}, {63, 63}, {50, 20}, {10, 45}, {60, 32}};
+  for (const auto& [x, y] : pixels) {
+    const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+    const double d = wall - p.x;
+    const double F =
+        perpendicularFormFactor(d, H, W - p.z) + perpendicularFormFactor(d, H, W + p.z);
+    expectNear(image.at(x, y), kAlbedo * kEmission * static_cast<float>(F), x, y);
+  }
+}
+
+// An emitter seen face-on shows its own radiance: it does not light itself (coplanar points
+// receive nothing from it) and its albedo is zero.
+TEST(AreaLight, EmitterIsDrawnWithItsRadiance) {
+  Scene scene;
+  addQuad(scene, {-5, 1, -5}, {10, 0, 0}, {0, 0, 10}, emitter());  // faces −y
+  Camera camera = downCamera(0.0f);
+  camera.cameraToWorld = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                                   glm::vec4(0, -1, 0, 0), glm::vec4(0, 0, 0, 1));  // looks up
+  const Image image = render(scene, camera, kSize, kSize);
+  for (int y = 0; y < kSize; y += 9)
+    for (int x = 0; x < kSize; x += 9) expectNear(image.at(x, y), kEmission, x, y);
+}
+
+// A single-sided emitter seen from behind is culled and lights nothing behind it; made
+// double-sided it lights both sides.
+TEST(AreaLight, BackOfSingleSidedEmitterIsDark) {
+  const float a = 0.5f, h = 1.2f;
+  for (const bool doubleSided : {false, true}) {
+    Scene scene;
+    addFloor(scene, kAlbedo);
+    Material m = emitter();
+    m.doubleSided = doubleSided;
+    addQuad(scene, {-a, h, -a}, {0, 0, 2 * a}, {2 * a, 0, 0}, m);  // (z × x) faces +y: away
+    const Camera camera = downCamera(0.9f);
+    const Image image = render(scene, camera, kSize, kSize);
+    const glm::vec3 p = floorPoint(camera, kSize, kSize, 32, 32);
+    const float F = static_cast<float>(squareFormFactor(a, h, p));
+    expectNear(image.at(32, 32), doubleSided ? kAlbedo * kEmission * F : glm::vec3(0.0f), 32, 32);
+  }
+}
+
+}  // namespace
+}  // namespace bounce::test

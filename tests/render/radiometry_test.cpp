@@ -1,0 +1,111 @@
+// The forward renderer against closed-form radiometry. The renderer has no sampling noise: the
+// only errors are float rounding in the shader (~1e-6 relative) and the rasterizer's
+// interpolation of world positions (exact at pixel centres to float precision), so 1% is a
+// loose tolerance that still catches any wrong factor (π, cosθ, r², units).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "scene/light_falloff.h"
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 64;
+constexpr float kPi = std::numbers::pi_v<float>;
+const glm::vec3 kAlbedo(0.8f, 0.5f, 0.25f);  // distinct per channel
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, const char* what, int x, int y) {
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(actual[c], expected[c], 0.01f * std::abs(expected[c]) + 1e-7f)
+        << what << " pixel (" << x << "," << y << ") channel " << c;
+}
+
+// Pixels spread over the image: centre, corners, edges and some off-axis points.
+const int kPixels[][2] = {{32, 32}, {31, 31}, {0, 0},  {63, 0}, {0, 63}, {63, 63},
+                          {10, 50}, {50, 12}, {32, 5}, {5, 32}, {45, 40}};
+
+// Point light: L = ρ/π · I · cosθ / r², cosθ = height / r for the floor's normal +y.
+TEST(Radiometry, PointLightFollowsInverseSquareAndCosine) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  Light light;
+  light.type = LightType::Point;
+  light.position = {0.3f, 1.5f, -0.2f};    // off the camera axis: cosθ varies across the image
+  light.intensity = {10.0f, 20.0f, 5.0f};  // W/sr
+  scene.lights.push_back(light);
+  const Camera camera = downCamera(2.0f);
+  const Image image = render(scene, camera, kSize, kSize);
+  for (const auto& [x, y] : kPixels) {
+    const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+    const glm::vec3 toLight = light.position - p;
+    const float r2 = glm::dot(toLight, toLight);
+    const float cosTheta = toLight.y / std::sqrt(r2);
+    expectNear(image.at(x, y), kAlbedo / kPi * light.intensity * cosTheta / r2, "point", x, y);
+  }
+}
+
+// Directional light: L = ρ/π · E · cosθ, the same everywhere on the floor.
+TEST(Radiometry, DirectionalLightGivesIrradianceTimesCosine) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(glm::vec3(1.0f, -2.0f, 0.5f));  // tilted
+  light.irradiance = {3.0f, 1.0f, 2.0f};                           // W/m² at normal incidence
+  scene.lights.push_back(light);
+  const Camera camera = downCamera(2.0f);
+  const Image image = render(scene, camera, kSize, kSize);
+  const float cosTheta = -light.direction.y;
+  for (const auto& [x, y] : kPixels)
+    expectNear(image.at(x, y), kAlbedo / kPi * light.irradiance * cosTheta, "directional", x, y);
+}
+
+// Spot light pointing down from 1 m: full intensity inside the inner cone, zero outside the
+// outer one, bounce::spotFalloff in between; every pixel is checked.
+TEST(Radiometry, SpotLightFollowsSpotFalloff) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  Light light;
+  light.type = LightType::Spot;
+  light.position = {0.0f, 1.0f, 0.0f};
+  light.direction = {0.0f, -1.0f, 0.0f};
+  light.intensity = {4.0f, 4.0f, 4.0f};
+  light.innerConeAngle = 0.3f;  // inner radius on the floor tan(0.3) = 0.31 m
+  light.outerConeAngle = 0.5f;  // outer radius tan(0.5) = 0.55 m; the view spans ±0.84 m
+  scene.lights.push_back(light);
+  const Camera camera = downCamera(2.0f);
+  const Image image = render(scene, camera, kSize, kSize);
+  int inside = 0, between = 0, outside = 0;
+  const float peak = light.intensity.r;  // cosθ/r² = 1 straight below
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+      const glm::vec3 toLight = light.position - p;
+      const float r = glm::length(toLight);
+      const float cosAxis = glm::dot(-toLight / r, light.direction);
+      const float falloff = spotFalloff(light, cosAxis);
+      const glm::vec3 expected =
+          kAlbedo / kPi * light.intensity * falloff * (toLight.y / r) / (r * r);
+      // Near the cone edges a float ulp of cosθ moves t by ~1e-7/(cos inner − cos outer).
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(image.at(x, y)[c], expected[c], 0.01f * expected[c] + 1e-5f * peak)
+            << "pixel (" << x << "," << y << ") falloff " << falloff;
+      if (falloff == 1.0f)
+        ++inside;
+      else if (falloff == 0.0f)
+        ++outside;
+      else
+        ++between;
+    }
+  }
+  EXPECT_GT(inside, 50);
+  EXPECT_GT(between, 100);
+  EXPECT_GT(outside, 1000);
+  EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));  // far outside the outer cone: exactly dark
+}
+
+}  // namespace
+}  // namespace bounce::test

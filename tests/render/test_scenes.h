@@ -1,0 +1,81 @@
+// Scenes built in code for the renderer's analytic tests, and the geometry the tests use to
+// find which world point each pixel sees (the pixel-centre ray, as the rasterizer samples it).
+#pragma once
+
+#include <cmath>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "gl/context.h"
+#include "gl/shader.h"
+#include "render/forward_renderer.h"
+#include "scene/scene.h"
+
+namespace bounce::test {
+
+// Adds a quad with corners c, c+u, c+u+v, c+v (counter-clockwise seen from u×v, its front side).
+inline void addQuad(Scene& scene, glm::vec3 c, glm::vec3 u, glm::vec3 v, const Material& material) {
+  Mesh mesh;
+  mesh.name = material.name;
+  mesh.positions = {c, c + u, c + u + v, c + v};
+  const glm::vec3 n = glm::normalize(glm::cross(u, v));
+  mesh.normals = {n, n, n, n};
+  mesh.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  mesh.material = static_cast<uint32_t>(scene.materials.size());
+  scene.materials.push_back(material);
+  Instance instance;
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size());
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back(instance);
+}
+
+// The floor y = 0, facing +y, 20 m wide, of diffuse reflectance `albedo`.
+inline void addFloor(Scene& scene, glm::vec3 albedo) {
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = albedo;
+  addQuad(scene, {-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, floor);
+}
+
+// A camera at (0, height, 0) looking straight down (−y), image up = world −z.
+inline Camera downCamera(float height, float yfov = 0.8f) {
+  Camera camera;
+  camera.name = "down";
+  camera.yfov = yfov;
+  camera.cameraToWorld = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0),
+                                   glm::vec4(0, 1, 0, 0), glm::vec4(0, height, 0, 1));
+  return camera;
+}
+
+// World direction of the ray through the centre of pixel (x, y) (row 0 at the top).
+inline glm::vec3 pixelRay(const Camera& camera, int width, int height, int x, int y) {
+  const float t = std::tan(0.5f * camera.yfov);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const float ndcX = (static_cast<float>(x) + 0.5f) / static_cast<float>(width) * 2.0f - 1.0f;
+  const float ndcY = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(height) * 2.0f;
+  return glm::mat3(camera.cameraToWorld) * glm::vec3(ndcX * t * aspect, ndcY * t, -1.0f);
+}
+
+// The point of the floor y = 0 that pixel (x, y) sees.
+inline glm::vec3 floorPoint(const Camera& camera, int width, int height, int x, int y) {
+  const glm::vec3 d = pixelRay(camera, width, height, x, y);
+  const glm::vec3 o = camera.position();
+  return o + d * (-o.y / d.y);
+}
+
+// One OSMesa context per test process (gtest_discover_tests runs each test on its own).
+inline gl::Context& testContext() {
+  static std::unique_ptr<gl::Context> context = gl::createOSMesaContext();
+  context->makeCurrent();
+  return *context;
+}
+
+inline Image render(const Scene& scene, const Camera& camera, int width, int height) {
+  testContext();
+  ForwardRenderer renderer(scene, gl::shaderDirectory());
+  return renderer.renderImage(camera, width, height);
+}
+
+}  // namespace bounce::test
