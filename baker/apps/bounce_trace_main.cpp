@@ -1,0 +1,134 @@
+// bounce-trace: the reference path tracer's command line. Renders a scene camera's view in
+// linear radiance W/(sr·m²) (EXR) and, when asked, a tone-mapped PNG.
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "image/image_io.h"
+#include "ray/ray_kernel.h"
+#include "scene/load.h"
+#include "scene/world_geometry.h"
+#include "trace/camera_render.h"
+#include "trace/path_tracer.h"
+#include "trace/progress_line.h"
+
+namespace {
+
+struct Options {
+  std::filesystem::path scene;
+  std::string camera;
+  int spp = 256;
+  int maxDepth = 64;
+  bool directOnly = false;
+  bool indirectOnly = false;
+  uint32_t seed = 0;
+  int threads = 0;
+  std::string backend = "embree";
+  int width = 0;
+  int height = 0;
+  std::filesystem::path out;
+  std::filesystem::path png;
+  float exposure = 0.0f;
+  float clamp = 0.0f;
+  bool progress = false;
+  bool quiet = false;
+};
+
+int run(const Options& o) {
+  const bounce::Scene scene = bounce::loadScene(o.scene);
+  if (scene.cameras.empty()) {
+    throw std::runtime_error(o.scene.string() + ": the scene has no camera");
+  }
+  const bounce::Camera& camera = scene.cameras[o.camera.empty() ? 0 : scene.findCamera(o.camera)];
+  // Default size: 512 rows, width from the camera's aspect ratio when it has one.
+  int width = o.width, height = o.height;
+  const float aspect = camera.aspect > 0.0f ? camera.aspect : 1.0f;
+  if (width <= 0 && height <= 0) height = 512;
+  if (height <= 0) height = std::max(1, static_cast<int>(std::lround(width / aspect)));
+  if (width <= 0) width = std::max(1, static_cast<int>(std::lround(height * aspect)));
+
+  bounce::TraceSettings settings;
+  settings.spp = o.spp;
+  settings.maxDepth = o.maxDepth;
+  settings.paths = o.directOnly     ? bounce::PathSet::DirectOnly
+                   : o.indirectOnly ? bounce::PathSet::IndirectOnly
+                                    : bounce::PathSet::All;
+  settings.seed = o.seed;
+  settings.threads = o.threads;
+  settings.backend = bounce::parseRayBackend(o.backend);
+  settings.clampRadiance = o.clamp;
+  settings.progress = !o.quiet && (o.progress || bounce::stderrIsTerminal());
+
+  const bounce::WorldGeometry geometry = bounce::flatten(scene);
+  const auto kernel = bounce::makeRayKernel(geometry, settings.backend);
+  {
+    const bounce::PathTracer probe(scene, geometry, *kernel, settings);
+    if (!probe.hasLights()) {
+      std::fprintf(stderr,
+                   "bounce-trace: warning: %s has no lights and no emissive surfaces: "
+                   "the image is black\n",
+                   o.scene.string().c_str());
+    }
+  }
+  const bounce::CameraRender render =
+      bounce::traceCamera(scene, geometry, *kernel, camera, width, height, settings);
+  if (!render.radiance.allFinite()) {
+    throw std::runtime_error("the render has non-finite pixels (a bug: please report)");
+  }
+  bounce::writeExr(o.out, render.radiance);
+  if (!o.png.empty()) bounce::writePng(o.png, render.radiance, o.exposure);
+  std::fprintf(
+      stderr,
+      "bounce-trace: %s camera '%s' %dx%d, %d spp, max depth %d: %.1f Msamples in "
+      "%.2f s (%.3f Msamples/s, %d threads, %s) -> %s\n",
+      o.scene.filename().string().c_str(), camera.name.c_str(), width, height, settings.spp,
+      settings.maxDepth, static_cast<double>(render.samples) * 1e-6, render.seconds,
+      render.seconds > 0.0 ? static_cast<double>(render.samples) * 1e-6 / render.seconds : 0.0,
+      render.threads, kernel->name(), o.out.string().c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "bounce-trace: path-traced reference image of a scene camera, in linear radiance "
+      "W/(sr·m²) (EXR), optionally tone-mapped to PNG."};
+  Options o;
+  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
+  app.add_option("--camera", o.camera, "camera name (default: the scene's first camera)");
+  app.add_option("--spp", o.spp, "samples per pixel")->check(CLI::Range(1, 1 << 24));
+  app.add_option("--max-depth", o.maxDepth, "most diffuse reflections along a path")
+      ->check(CLI::Range(0, 100000));
+  auto* direct = app.add_flag("--direct-only", o.directOnly,
+                              "only emitters seen directly and light after one reflection");
+  app.add_flag("--indirect-only", o.indirectOnly, "only light after two or more reflections")
+      ->excludes(direct);
+  app.add_option("--seed", o.seed, "sampler seed");
+  app.add_option("--threads", o.threads, "worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024));
+  app.add_option("--backend", o.backend, "ray kernel: embree or bvh")
+      ->check(CLI::IsMember({"embree", "bvh"}));
+  app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, 16384));
+  app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, 16384));
+  app.add_option("--out", o.out, "output EXR, linear radiance W/(sr·m²)")->required();
+  app.add_option("--png", o.png, "also write a tone-mapped sRGB PNG");
+  app.add_option("--exposure", o.exposure, "PNG exposure in EV (L·2^EV)");
+  app.add_option("--clamp", o.clamp,
+                 "firefly clamp: largest channel of a sample's reflected radiance, W/(sr·m²) "
+                 "(biased; off by default)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
+  app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bounce-trace: error: %s\n", e.what());
+    return 1;
+  }
+}
