@@ -8,8 +8,7 @@ uint32_t reverseBits(uint32_t x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  return __builtin_bswap32(x);
 }
 
 // Dimension 0: bit k of the index becomes the k-th binary digit after the point.
@@ -19,12 +18,35 @@ uint32_t sobolDimension0(uint32_t index) {
 
 // Dimension 1: primitive polynomial x+1, direction numbers v_1 = 1/2, v_k = v_{k−1} ⊕
 // (v_{k−1} >> 1), i.e. the rows of Pascal's triangle mod 2 (0.1, 0.11, 0.101, 0.1111, ...).
-uint32_t sobolDimension1(uint32_t index) {
-  uint32_t result = 0;
-  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
-    if (index & 1u) result ^= v;
+namespace {
+
+// The product with the generator matrix, one byte of the index at a time:
+// table[b][k] = XOR of the direction numbers v_{8b+j+1} for the set bits j of k.
+struct Dimension1Tables {
+  uint32_t table[4][256];
+  Dimension1Tables() {
+    uint32_t direction[32];
+    direction[0] = 1u << 31;
+    for (int i = 1; i < 32; ++i) direction[i] = direction[i - 1] ^ (direction[i - 1] >> 1);
+    for (int b = 0; b < 4; ++b) {
+      for (uint32_t k = 0; k < 256; ++k) {
+        uint32_t x = 0;
+        for (int j = 0; j < 8; ++j) {
+          if (k & (1u << j)) x ^= direction[8 * b + j];
+        }
+        table[b][k] = x;
+      }
+    }
   }
-  return result;
+};
+
+const Dimension1Tables kDimension1;
+
+}  // namespace
+
+uint32_t sobolDimension1(uint32_t index) {
+  return kDimension1.table[0][index & 0xffu] ^ kDimension1.table[1][(index >> 8) & 0xffu] ^
+         kDimension1.table[2][(index >> 16) & 0xffu] ^ kDimension1.table[3][index >> 24];
 }
 
 namespace {
@@ -55,8 +77,12 @@ glm::uvec2 SobolSampler::pairBits() {
   // Shuffling the index by a nested uniform scramble keeps every power-of-two prefix a
   // (0,m,2)-net (the low m bits of the shuffled index are a permutation of the low m bits),
   // while decorrelating this pair from the others.
-  const uint32_t shuffled = nestedUniformScramble(index_, pairSeed);
-  return {nestedUniformScramble(sobolDimension0(shuffled), hashCombine(pairSeed, 1u)),
+  //   shuffled = nestedUniformScramble(index) = reverse(LK(reverse(index)))
+  //   x = nestedUniformScramble(sobolDimension0(shuffled)) = reverse(LK(shuffled))
+  // since sobolDimension0 = reverse: written with the reversals that cancel removed.
+  const uint32_t reversedShuffled = laineKarrasPermutation(reverseBits(index_), pairSeed);
+  const uint32_t shuffled = reverseBits(reversedShuffled);
+  return {reverseBits(laineKarrasPermutation(shuffled, hashCombine(pairSeed, 1u))),
           nestedUniformScramble(sobolDimension1(shuffled), hashCombine(pairSeed, 2u))};
 }
 
