@@ -1,0 +1,199 @@
+// bounce-render and bounce-view through their command lines, as users and the README run them
+// (built tools from BOUNCE_BIN_DIR, scenes from the repository).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "image/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Single-quoted for the shell (paths here have no quotes). Built with += : GCC 12 gives a false
+// -Wrestrict on "'" + std::string.
+std::string quote(const fs::path& path) {
+  std::string quoted(1, '\'');
+  quoted += path.string();
+  quoted += '\'';
+  return quoted;
+}
+
+struct ToolRun {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr
+};
+
+class ToolsTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("bounce-tools-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  ToolRun run(const std::string& command) const {
+    const fs::path log = dir_ / "output.log";
+    const std::string full = command + " > " + quote(log) + " 2>&1";
+    const int status = std::system(full.c_str());
+    ToolRun result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    result.output = text.str();
+    fs::remove(log);
+    return result;
+  }
+
+  static std::string tool(const std::string& name) {
+    return quote(fs::path(BOUNCE_BIN_DIR) / name);
+  }
+  static std::string content(const std::string& relative) {
+    return quote(fs::path(BOUNCE_SOURCE_DIR) / "content" / relative);
+  }
+
+  fs::path dir_;
+};
+
+// content/point_over_plane: ρ = 0.5, 1 W/sr (683 cd) at h = 1 m, camera 3 m up, yfov 60°.
+// L(r) = ρ/π · I·h/(h²+r²)^{3/2}; a pixel centre at NDC (x, y) sees r = 3·tan(30°)·|(x, y)|
+// whatever the camera's roll. Exact up to float rounding, so 1%.
+TEST_F(ToolsTest, RenderMatchesPointOverPlaneThroughLoaderAndExr) {
+  const fs::path exr = dir_ / "plane.exr";
+  const ToolRun r =
+      run(tool("bounce-render") + " " + content("point_over_plane/point_over_plane.gltf") +
+          " --width 32 --height 32 --context osmesa --out " + quote(exr));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image image = bounce::readExr(exr);
+  ASSERT_EQ(image.width, 32);
+  const double t = std::tan(std::numbers::pi / 6);
+  for (const auto& [x, y] : {std::pair{15, 15}, {16, 16}, {0, 0}, {31, 5}, {8, 24}}) {
+    const double nx = (x + 0.5) / 16 - 1, ny = (y + 0.5) / 16 - 1;
+    const double r2 = 9 * t * t * (nx * nx + ny * ny);
+    const double expected = 0.5 / std::numbers::pi / std::pow(1 + r2, 1.5);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(image.at(x, y)[c], expected, 0.01 * expected) << x << "," << y;
+  }
+}
+
+TEST_F(ToolsTest, RepeatedOutWritesPngAndExr) {
+  const fs::path png = dir_ / "box.png", exr = dir_ / "box.exr";
+  const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                        " --width 48 --height 32 --out " + quote(png) + " --out " + quote(exr));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::file_size(png) > 0);
+  const bounce::Image image = bounce::readExr(exr);
+  EXPECT_EQ(image.width, 48);
+  EXPECT_EQ(image.height, 32);
+  EXPECT_TRUE(image.allFinite());
+  // The stderr names the context chosen.
+  EXPECT_NE(r.output.find("context "), std::string::npos) << r.output;
+}
+
+// Atomic output: a path that cannot be written (its folder is a regular file; root cannot write
+// there either) fails with a message naming it and leaves no file, not even a temporary one.
+TEST_F(ToolsTest, UnwritableOutputFailsAndLeavesNoFile) {
+  std::ofstream(dir_ / "not_a_folder") << "x";
+  const fs::path out = dir_ / "not_a_folder" / "box.png";
+  const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                        " --width 16 --height 16 --out " + quote(out));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+  int entries = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().filename(), "not_a_folder");
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1);
+}
+
+TEST_F(ToolsTest, BadSceneFileGivesLoadErrorAndExit1) {
+  const fs::path missing = dir_ / "missing.gltf";
+  ToolRun r = run(tool("bounce-render") + " " + quote(missing) + " --out " + quote(dir_ / "x.png"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find(missing.string() + ": "), std::string::npos) << r.output;
+
+  const fs::path garbage = dir_ / "garbage.gltf";
+  std::ofstream(garbage) << "this is not glTF";
+  r = run(tool("bounce-render") + " " + quote(garbage) + " --out " + quote(dir_ / "x.png"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find(garbage.string() + ": "), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(ToolsTest, HelpAndBadFlags) {
+  ToolRun r = run(tool("bounce-render") + " --help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.output.find("--out"), std::string::npos) << r.output;
+  r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") + " --out x.jpg");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("x.jpg"), std::string::npos) << r.output;
+  r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+          " --camera nosuchcamera --out " + quote(dir_ / "x.png"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("nosuchcamera"), std::string::npos) << r.output;
+  r = run(tool("bounce-view") + " --help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.output.find("--screenshot"), std::string::npos) << r.output;
+}
+
+// A scene without a camera is framed (with a warning) and shows something lit.
+TEST_F(ToolsTest, SceneWithoutCameraIsFramed) {
+  const fs::path obj =
+      fs::path(BOUNCE_SHARED_SCENES) / "mcguire_cornell_box" / "CornellBox-Original.obj";
+  if (!fs::exists(obj)) GTEST_SKIP() << obj << " is not present";
+  const fs::path exr = dir_ / "framed.exr";
+  const ToolRun r =
+      run(tool("bounce-render") + " " + quote(obj) + " --width 32 --height 32 --out " + quote(exr));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("no camera"), std::string::npos) << r.output;
+  const bounce::Image image = bounce::readExr(exr);
+  float brightest = 0.0f;
+  for (const glm::vec3& p : image.pixels) brightest = std::max(brightest, p.g);
+  EXPECT_GT(brightest, 0.01f);
+}
+
+TEST_F(ToolsTest, EglContextWorksOrFailsCleanly) {
+  const fs::path exr = dir_ / "egl.exr";
+  const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                        " --width 16 --height 16 --context egl --out " + quote(exr));
+  if (r.exitCode != 0) {
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("egl: "), std::string::npos) << r.output;
+    GTEST_SKIP() << "no EGL here: " << r.output;
+  }
+  EXPECT_NE(r.output.find("context egl"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(exr));
+}
+
+// The viewer under a virtual X server (llvmpipe): a few frames, then a screenshot that shows
+// the lit Cornell box, not a black or failed frame.
+TEST_F(ToolsTest, ViewerRendersUnderXvfb) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path shot = dir_ / "view.exr";
+  const ToolRun r =
+      run("xvfb-run -a " + tool("bounce-view") + " " + content("cornell_box/cornell_box.gltf") +
+          " --width 96 --height 64 --frames 3 --screenshot " + quote(shot));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image image = bounce::readExr(shot);
+  EXPECT_EQ(image.width, 96);
+  EXPECT_EQ(image.height, 64);
+  double sum = 0.0;
+  for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
+  EXPECT_GT(sum / static_cast<double>(image.pixels.size()), 0.01) << r.output;
+}
+
+}  // namespace
