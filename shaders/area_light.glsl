@@ -14,31 +14,42 @@
 uniform sampler2D uEmitters;
 uniform int uEmitterCount;
 
-// Clips triangle q (relative to p) against the half-space n·x ≥ 0: at most 4 vertices remain.
-int clipToUpperHemisphere(vec3 q[3], vec3 n, out vec3 clipped[4]) {
-  int count = 0;
-  for (int i = 0; i < 3; ++i) {
-    vec3 a = q[i];
-    vec3 b = q[(i + 1) % 3];
-    float da = dot(n, a);
-    float db = dot(n, b);
-    if (da >= 0.0) clipped[count++] = a;
-    if ((da >= 0.0) != (db >= 0.0)) clipped[count++] = a + (b - a) * (da / (da - db));
-  }
-  return count;
+// One edge's term γ · n·(a×b)/|a×b| of the contour sum (0 for a degenerate edge).
+float edgeTerm(vec3 a, vec3 b, vec3 n) {
+  vec3 c = cross(a, b);
+  float s = length(c);
+  return s > 0.0 ? atan(s, dot(a, b)) * dot(n, c) / s : 0.0;
 }
 
-// E/L = ½ |Σ γ_i n·û_i| for the clipped polygon: its projected solid angle (sr), π × the
-// point-to-polygon form factor.
-float polygonIrradiancePerRadiance(vec3 q[4], int count, vec3 n) {
-  float sum = 0.0;
-  for (int i = 0; i < count; ++i) {
-    vec3 a = q[i];
-    vec3 b = q[(i + 1) % count];
-    vec3 c = cross(a, b);
-    float s = length(c);
-    if (s > 0.0) sum += atan(s, dot(a, b)) * dot(n, c) / s;
+// Where the edge from a to b crosses the horizon plane n·x = 0 (da, db: the ends' heights).
+vec3 horizonCrossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
+}
+
+// E/L = ½ |Σ γ_i n·û_i| for triangle (a, b, c) (relative to p) clipped to n·x ≥ 0: the projected
+// solid angle (sr) of its visible part, π × the point-to-polygon form factor. Clipping a
+// triangle by a plane leaves it whole, a triangle (one vertex above) or a quad (two above); the
+// vertices are rotated so the odd one out comes first, keeping the winding.
+float clippedTriangleIrradiancePerRadiance(vec3 a, vec3 b, vec3 c, vec3 n) {
+  float da = dot(n, a), db = dot(n, b), dc = dot(n, c);
+  bool ua = da >= 0.0, ub = db >= 0.0, uc = dc >= 0.0;
+  int above = int(ua) + int(ub) + int(uc);
+  if (above == 0) return 0.0;
+  if (above == 3) return 0.5 * abs(edgeTerm(a, b, n) + edgeTerm(b, c, n) + edgeTerm(c, a, n));
+  // Rotate (a, b, c) so that `a` is the vertex alone on its side.
+  bool alone = above == 1;  // the lone vertex is above when one is above, below when two are
+  if (ub == alone) {
+    vec3 t = a; a = b; b = c; c = t;
+    float dt = da; da = db; db = dc; dc = dt;
+  } else if (uc == alone) {
+    vec3 t = c; c = b; b = a; a = t;
+    float dt = dc; dc = db; db = da; da = dt;
   }
+  vec3 ab = horizonCrossing(a, b, da, db);
+  vec3 ca = horizonCrossing(c, a, dc, da);
+  float sum = above == 1
+                  ? edgeTerm(a, ab, n) + edgeTerm(ab, ca, n) + edgeTerm(ca, a, n)
+                  : edgeTerm(ab, b, n) + edgeTerm(b, c, n) + edgeTerm(c, ca, n) + edgeTerm(ca, ab, n);
   return 0.5 * abs(sum);
 }
 
@@ -54,11 +65,7 @@ vec3 areaIrradiance(vec3 p, vec3 n) {
     vec3 front = normalize(cross(v1 - v0, v2 - v0));
     float height = dot(front, p - v0);
     if (abs(height) < 1e-5 || (height < 0.0 && radiance.w < 0.5)) continue;
-    vec3 q[3] = vec3[3](v0 - p, v1 - p, v2 - p);
-    vec3 clipped[4];
-    int count = clipToUpperHemisphere(q, n, clipped);
-    if (count < 3) continue;
-    irradiance += radiance.rgb * polygonIrradiancePerRadiance(clipped, count, n);
+    irradiance += radiance.rgb * clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
   }
   return irradiance;
 }

@@ -52,15 +52,22 @@ int run(const Options& options) {
                bounce::gl::backendName(context->backend()), context->version().c_str(),
                context->renderer().c_str());
 
-  const auto start = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  const auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  const auto start = Clock::now();
   bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory());
   for (const std::string& warning : renderer.warnings())
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
+  const auto uploaded = Clock::now();
   const bounce::Image image = renderer.renderImage(camera, options.width, options.height);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "bounce-render: %dx%d, camera '%s', %zu triangles, %.1f ms\n", options.width,
-               options.height, camera.name.c_str(), scene.triangleCount(), ms);
+  const auto rendered = Clock::now();
+  std::fprintf(stderr,
+               "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, frame %.1f ms "
+               "(render + readback)\n",
+               options.width, options.height, camera.name.c_str(), scene.triangleCount(),
+               ms(start, uploaded), ms(uploaded, rendered));
 
   for (const std::string& out : options.outputs) {
     bounce::writeImage(out, image, options.exposure);

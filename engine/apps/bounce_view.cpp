@@ -72,7 +72,7 @@ class Viewer {
   int run() {
     auto last = Clock::now();
     auto titleShown = last;
-    double frameMs = 0.0;
+    double frameMs = 0.0, steadyMs = 0.0;
     for (int frame = 0; !window_.shouldClose(); ++frame) {
       window_.pollEvents();
       const auto now = Clock::now();
@@ -80,11 +80,14 @@ class Viewer {
       const double ms = std::chrono::duration<double, std::milli>(now - last).count();
       frameMs = frame < 2 ? ms : 0.9 * frameMs + 0.1 * ms;  // smoothed for reading
       last = now;
+      if (frame >= 2) steadyMs += ms;  // the first frames include llvmpipe's shader JIT
       handleInput(dt);
       draw();
       if (options_.frames > 0 && frame + 1 >= options_.frames) {
         if (!options_.screenshot.empty()) save(target_->read(), options_.screenshot, exposure_);
-        std::fprintf(stderr, "bounce-view: %d frames, last %.1f ms\n", frame + 1, ms);
+        std::fprintf(stderr,
+                     "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
+                     frame + 1, frame >= 2 ? steadyMs / (frame - 1) : ms);
         return 0;
       }
       if (saveRequested_) saveScreenshot();
