@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <system_error>
 
 #include "scene/loaders.h"
@@ -15,14 +16,17 @@ Scene loadScene(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  Scene scene;
-  if (ext == ".gltf" || ext == ".glb") {
-    scene = loadGltf(path);
-  } else if (ext == ".obj") {
-    scene = loadObj(path);
-  } else {
+  if (ext != ".gltf" && ext != ".glb" && ext != ".obj") {
     throw LoadError(path,
                     "unsupported file extension '" + ext + "' (expected .gltf, .glb or .obj)");
+  }
+  Scene scene;
+  try {
+    scene = ext == ".obj" ? loadObj(path) : loadGltf(path);
+  } catch (const LoadError&) {
+    throw;
+  } catch (const std::exception& e) {  // e.g. std::bad_alloc on absurd sizes: still a LoadError
+    throw LoadError(path, std::string("cannot load: ") + e.what());
   }
   scene.source = path.string();
   return scene;

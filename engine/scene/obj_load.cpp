@@ -12,7 +12,7 @@
 
 #include <cmath>
 #include <map>
-#include <regex>
+#include <string>
 
 #include "scene/load_error.h"
 #include "scene/loaders.h"
@@ -25,17 +25,27 @@ bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// The quoted name that follows `prefix` in tinyobjloader's warnings, e.g. the light in
+// "material [ 'light' ] not found in .mtl"; empty when `prefix` does not occur.
+std::string nameAfter(const std::string& warning, const std::string& prefix) {
+  const std::size_t at = warning.find(prefix);
+  if (at == std::string::npos) return {};
+  std::size_t begin = at + prefix.size();
+  while (begin < warning.size() && (warning[begin] == ' ' || warning[begin] == '\'')) ++begin;
+  std::size_t end = begin;
+  while (end < warning.size() && warning[end] != ' ' && warning[end] != '\'') ++end;
+  return warning.substr(begin, end - begin);
+}
+
 // tinyobjloader reports missing materials and .mtl files as warnings; bounce makes them errors.
 void rejectMissingMaterials(const std::filesystem::path& path, const std::string& warning) {
-  static const std::regex missingMaterial(R"(material \[ '?([^' ]*)'? \] not found)");
-  static const std::regex missingFile(R"(Material file \[ ([^ ]*) \] not found)");
-  std::smatch match;
-  if (std::regex_search(warning, match, missingFile)) {
-    throw LoadError(path, "material library '" + match[1].str() + "' not found");
+  if (warning.find("] not found") == std::string::npos) return;
+  if (const std::string file = nameAfter(warning, "Material file ["); !file.empty()) {
+    throw LoadError(path, "material library '" + file + "' not found");
   }
-  if (std::regex_search(warning, match, missingMaterial)) {
-    throw LoadError(path, "material '" + match[1].str() +
-                              "' is used (usemtl) but not defined in the .mtl file");
+  if (const std::string name = nameAfter(warning, "material ["); !name.empty()) {
+    throw LoadError(path,
+                    "material '" + name + "' is used (usemtl) but not defined in the .mtl file");
   }
 }
 
