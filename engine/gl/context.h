@@ -32,7 +32,8 @@ class Context {
   // Makes this context current on the calling thread (and points the GL functions at it).
   virtual void makeCurrent() = 0;
 
-  // GL_VERSION and GL_RENDERER of this context, e.g. "4.5 (Core Profile) Mesa 22.3.6", "llvmpipe".
+  // GL_VERSION and GL_RENDERER, e.g. "4.5 (Core Profile) Mesa 22.3.6", "llvmpipe (LLVM 15…)",
+  // of the current context (make this one current first when several exist).
   std::string version() const;
   std::string renderer() const;
 

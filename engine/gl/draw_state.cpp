@@ -1,5 +1,8 @@
 #include "gl/draw_state.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "gl/gl_functions.h"
 
 namespace bounce::gl {
@@ -43,6 +46,33 @@ void drawFullscreenTriangle() {
 
 void finish() {
   glFinish();
+}
+
+void checkErrors(const char* what) {
+  std::string errors;
+  for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+    switch (error) {
+      case GL_INVALID_ENUM:
+        errors += " GL_INVALID_ENUM";
+        break;
+      case GL_INVALID_VALUE:
+        errors += " GL_INVALID_VALUE";
+        break;
+      case GL_INVALID_OPERATION:
+        errors += " GL_INVALID_OPERATION";
+        break;
+      case GL_INVALID_FRAMEBUFFER_OPERATION:
+        errors += " GL_INVALID_FRAMEBUFFER_OPERATION";
+        break;
+      case GL_OUT_OF_MEMORY:
+        errors += " GL_OUT_OF_MEMORY";
+        break;
+      default:
+        errors += " GL error " + std::to_string(error);
+    }
+    if (errors.size() > 200) break;  // a broken context can report errors forever
+  }
+  if (!errors.empty()) throw std::logic_error(std::string(what) + ":" + errors);
 }
 
 }  // namespace bounce::gl

@@ -16,5 +16,8 @@ void setBackFaceCulling(bool enabled);
 void drawFullscreenTriangle();
 // Blocks until the GPU has finished every command issued so far.
 void finish();
+// Throws std::logic_error "<what>: GL_INVALID_…" if a GL call since the last check failed: a bug
+// in bounce (bad state or arguments), never a user error.
+void checkErrors(const char* what);
 
 }  // namespace bounce::gl

@@ -93,6 +93,7 @@ ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path
     }
   }
   gpu.mesh.emplace(vertices, indices);
+  gl::checkErrors("scene upload");
 
   gpu.emitterCount = static_cast<int>(emitterTable.size() / 4);
   if (gpu.emitterCount > gl::Texture2D::maxSize()) {
@@ -176,6 +177,7 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
     gpu.mesh->draw(range.firstIndex, range.indexCount);
   }
   gl::setBackFaceCulling(false);
+  gl::checkErrors("forward pass");
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height) {

@@ -22,6 +22,7 @@ void TonemapPass::draw(const gl::Texture2D& radiance, float exposureEV) {
   gpu_->program.set("uRadiance", 0);
   gpu_->program.set("uExposureEV", exposureEV);
   gl::drawFullscreenTriangle();
+  gl::checkErrors("tone-map pass");
 }
 
 }  // namespace bounce
