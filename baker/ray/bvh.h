@@ -1,15 +1,21 @@
 // A bounding volume hierarchy over boxes, built with the binned surface area heuristic (SAH).
 //
-// Layout: nodes in depth-first order; an interior node's first child directly follows it, its
-// second child is at `offset`. A leaf lists `count` primitives starting at `offset` in
-// Bvh::primitives. Each node is 32 bytes, two to a 64-byte cache line:
+// Layout: nodes[0] is the root. The two children of an interior node are stored side by side
+// at `offset` and `offset + 1` (an even index); the array is 64-byte aligned, so both child
+// boxes, which traversal always tests together, arrive in one cache line. A leaf lists `count`
+// primitives starting at `offset` in Bvh::primitives. Each node is 32 bytes:
 //
-//   | lower.x lower.y lower.z | offset | upper.x upper.y upper.z | count | axis | pad |
-//   |        12 bytes         |   4    |        12 bytes         |   2   |  1   |  1  |
+//   | lower.x lower.y lower.z | upper.x upper.y upper.z | offset | count | pad |
+//   |        12 bytes         |        12 bytes         |   4    |   2   |  2  |
+//
+// bounds[0] is the lower corner, bounds[1] the upper one, so a ray picks its entry and exit
+// planes per axis by index (bounds[directionIsNegative][axis]) without a branch.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -40,16 +46,16 @@ struct Box {
 };
 
 struct BvhNode {
-  glm::vec3 lower;
-  uint32_t offset;  // leaf: first index into Bvh::primitives; interior: second child's index
-  glm::vec3 upper;
-  uint16_t count;  // primitives in a leaf; 0 for an interior node
-  uint8_t axis;    // interior: the split axis (0 x, 1 y, 2 z), for near-child-first traversal
-  uint8_t pad = 0;
+  float bounds[2][3];  // [lower, upper][x, y, z], metres
+  uint32_t offset;     // leaf: first index into Bvh::primitives; interior: first child's index
+  uint16_t count;      // primitives in a leaf; 0 for an interior node
+  uint16_t pad = 0;
 
   bool isLeaf() const { return count > 0; }
+  glm::vec3 lower() const { return {bounds[0][0], bounds[0][1], bounds[0][2]}; }
+  glm::vec3 upper() const { return {bounds[1][0], bounds[1][1], bounds[1][2]}; }
 };
-static_assert(sizeof(BvhNode) == 32, "two nodes per cache line");
+static_assert(sizeof(BvhNode) == 32, "a pair of children per 64-byte cache line");
 
 // No root-to-leaf path is longer than this (traversal stacks are sized by it).
 inline constexpr int kBvhMaxDepth = 128;
@@ -61,8 +67,23 @@ struct BvhBuildOptions {
   float intersectionCost = 1.0f;  // ...the cost of one primitive test
 };
 
+// Allocates on 64-byte (cache-line) boundaries.
+template <typename T>
+struct CacheLineAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t kAlignment{64};
+  CacheLineAllocator() = default;
+  template <typename U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlignment)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlignment); }
+  bool operator==(const CacheLineAllocator&) const { return true; }
+};
+
 struct Bvh {
-  std::vector<BvhNode> nodes;        // nodes[0] is the root (empty when there is nothing)
+  // nodes[0] is the root (empty when there is nothing); nodes[1] is unused, so that every
+  // child pair starts at an even index, i.e. at a cache-line boundary.
+  std::vector<BvhNode, CacheLineAllocator<BvhNode>> nodes;
   std::vector<uint32_t> primitives;  // the caller's primitive ids in leaf order
 };
 

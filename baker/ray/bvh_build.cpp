@@ -29,7 +29,6 @@ struct BuildPrimitive {
 struct BuildNode {
   Box box;
   uint32_t first = 0, count = 0;  // leaf: its range in the primitive array
-  uint8_t axis = 0;
   std::unique_ptr<BuildNode> children[2];
 };
 
@@ -86,7 +85,7 @@ class Builder {
       centres.grow(primitives_[i].centre);
     }
     nodeCount_ += 1;
-    const uint32_t mid = split(first, count, depth, node->box, centres, node->axis);
+    const uint32_t mid = split(first, count, depth, node->box, centres);
     if (mid == first) {  // a leaf
       node->first = first;
       node->count = count;
@@ -106,15 +105,13 @@ class Builder {
  private:
   // Partitions [first, first + count) and returns the first index of the right half, or
   // `first` when the node should be a leaf.
-  uint32_t split(uint32_t first, uint32_t count, int depth, const Box& box, const Box& centres,
-                 uint8_t& axisOut) {
+  uint32_t split(uint32_t first, uint32_t count, int depth, const Box& box, const Box& centres) {
     const auto maxLeaf = static_cast<uint32_t>(options_.maxLeafSize);
     if (count <= 1) return first;
     const glm::vec3 extent = centres.upper - centres.lower;
     if (!(extent.x > 0.0f || extent.y > 0.0f || extent.z > 0.0f)) {
       // All centres coincide: no plane separates them; halve by index if too many.
       if (count <= maxLeaf) return first;
-      axisOut = 0;
       return first + count / 2;
     }
 
@@ -162,7 +159,6 @@ class Builder {
 
     auto begin = primitives_.begin() + first, end = begin + count;
     if (bestAxis >= 0) {
-      axisOut = static_cast<uint8_t>(bestAxis);
       const auto mid = std::partition(begin, end, [&](const BuildPrimitive& p) {
         return Binning::binIndex(p.centre, centres, bestAxis, binCount) < bestBin;
       });
@@ -171,7 +167,6 @@ class Builder {
     // No useful plane (e.g. every centre in one bin): median split on the widest axis.
     const int axis =
         extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    axisOut = static_cast<uint8_t>(axis);
     const auto mid = begin + count / 2;
     std::nth_element(begin, mid, end, [axis](const BuildPrimitive& a, const BuildPrimitive& b) {
       return a.centre[axis] < b.centre[axis] || (a.centre[axis] == b.centre[axis] && a.id < b.id);
@@ -207,17 +202,23 @@ class Builder {
   std::size_t nodeCount() const { return nodeCount_; }
 };
 
-// Depth-first flattening: the first child follows its parent, the second child's index is
-// written into the parent once known.
-uint32_t flatten(const BuildNode& node, std::vector<BvhNode>& nodes) {
-  const auto index = static_cast<uint32_t>(nodes.size());
-  nodes.push_back(BvhNode{node.box.lower, node.first, node.box.upper,
-                          static_cast<uint16_t>(node.count), node.axis, 0});
-  if (node.count == 0) {
-    flatten(*node.children[0], nodes);
-    nodes[index].offset = flatten(*node.children[1], nodes);
-  }
-  return index;
+// Depth-first flattening into child pairs: the node at `index` is already written; its two
+// children are appended side by side, then each of their subtrees in turn.
+BvhNode toNode(const BuildNode& node) {
+  const glm::vec3 lo = node.box.lower, hi = node.box.upper;
+  return BvhNode{
+      {{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}}, node.first, static_cast<uint16_t>(node.count), 0};
+}
+
+template <typename Nodes>
+void flattenChildren(const BuildNode& node, uint32_t index, Nodes& nodes) {
+  if (node.count > 0) return;
+  const auto pair = static_cast<uint32_t>(nodes.size());
+  nodes[index].offset = pair;
+  nodes.push_back(toNode(*node.children[0]));
+  nodes.push_back(toNode(*node.children[1]));
+  flattenChildren(*node.children[0], pair, nodes);
+  flattenChildren(*node.children[1], pair + 1, nodes);
 }
 
 }  // namespace
@@ -238,8 +239,10 @@ Bvh buildBvh(std::span<const Box> boxes, std::span<const uint32_t> ids,
   Builder builder(primitives, options);
   const std::unique_ptr<BuildNode> root = builder.build(0, static_cast<uint32_t>(boxes.size()), 0);
 
-  bvh.nodes.reserve(builder.nodeCount());
-  flatten(*root, bvh.nodes);
+  bvh.nodes.reserve(builder.nodeCount() + 1);
+  bvh.nodes.push_back(toNode(*root));
+  bvh.nodes.push_back(BvhNode{});  // unused: child pairs start at even indices
+  flattenChildren(*root, 0, bvh.nodes);
   bvh.primitives.resize(primitives.size());
   for (std::size_t i = 0; i < primitives.size(); ++i) bvh.primitives[i] = primitives[i].id;
   return bvh;

@@ -14,15 +14,15 @@ namespace {
 // test when the origin lies on a slab plane; replacing it by ±1e-30 keeps 1/d finite (±1e30)
 // and the ray still parallel to that axis for any scene smaller than 1e8 m.
 struct SlabRay {
-  glm::vec3 origin, inverseDirection;
-  bool negative[3];
+  float origin[3], inverseDirection[3];
+  int negative[3];  // 1 where the direction is negative: the ray enters through bounds[1]
 
-  explicit SlabRay(const Ray& ray) : origin(ray.origin) {
+  explicit SlabRay(const Ray& ray) : origin{ray.origin.x, ray.origin.y, ray.origin.z} {
+    const float d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
     for (int k = 0; k < 3; ++k) {
-      const float d = ray.direction[k];
-      const float safe = std::abs(d) < 1e-30f ? std::copysign(1e-30f, d) : d;
+      const float safe = std::abs(d[k]) < 1e-30f ? std::copysign(1e-30f, d[k]) : d[k];
       inverseDirection[k] = 1.0f / safe;
-      negative[k] = inverseDirection[k] < 0.0f;
+      negative[k] = inverseDirection[k] < 0.0f ? 1 : 0;
     }
   }
 };
@@ -32,14 +32,16 @@ struct SlabRay {
 // let rays slip through edges that lie on box faces.
 constexpr float kSlabFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-inline bool hitsBox(const BvhNode& node, const SlabRay& r, float tmin, float tmax) {
+// Whether the ray meets the node's box within [tmin, tmax]; `entry` is where it enters.
+inline bool hitsBox(const BvhNode& node, const SlabRay& r, float tmin, float tmax, float& entry) {
   float near = tmin, far = tmax;
   for (int k = 0; k < 3; ++k) {
-    const float entry = r.negative[k] ? node.upper[k] : node.lower[k];
-    const float exit = r.negative[k] ? node.lower[k] : node.upper[k];
-    near = std::max(near, (entry - r.origin[k]) * r.inverseDirection[k]);
-    far = std::min(far, (exit - r.origin[k]) * r.inverseDirection[k] * kSlabFarScale);
+    const float in = (node.bounds[r.negative[k]][k] - r.origin[k]) * r.inverseDirection[k];
+    const float out = (node.bounds[1 - r.negative[k]][k] - r.origin[k]) * r.inverseDirection[k];
+    near = std::max(near, in);
+    far = std::min(far, out * kSlabFarScale);
   }
+  entry = near;
   return near <= far;
 }
 
@@ -68,30 +70,45 @@ BvhKernel::BvhKernel(const WorldGeometry& geometry, const BvhBuildOptions& optio
 }
 
 // Returns the leaf-order index of the closest (or, kAnyHit, of any) triangle within the
-// ray's interval, kNoHit otherwise. Near child first: along the split axis, the child on the
-// side the ray comes from is visited first and the other is pushed; closest-hit shrinks t
-// as it goes, so far subtrees beyond the current hit are culled by the box test.
+// ray's interval, kNoHit otherwise. At an interior node both children's boxes are tested;
+// the nearer one (by entry distance) is visited first and the farther one is pushed with its
+// entry distance, so that it is skipped on its turn if a closer hit has been found meanwhile.
 template <bool kAnyHit>
 uint32_t BvhKernel::traverse(const Ray& ray, float& t, float& u, float& v) const {
-  if (bvh_.nodes.empty()) return kNoHit;
   const SlabRay slab(ray);
   const ShearedRay sheared(ray);
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   uint32_t found = kNoHit;
 
-  uint32_t stack[kBvhMaxDepth];
+  struct Pending {
+    uint32_t node;
+    float entry;
+  };
+  Pending stack[kBvhMaxDepth];
   int stackSize = 0;
+  float rootEntry = 0.0f;
+  if (bvh_.nodes.empty() || !hitsBox(bvh_.nodes[0], slab, tmin, tmax, rootEntry)) return kNoHit;
   uint32_t current = 0;
   for (;;) {
     const BvhNode& node = bvh_.nodes[current];
-    if (hitsBox(node, slab, tmin, tmax)) {
-      if (!node.isLeaf()) {
-        const bool secondIsNear = slab.negative[node.axis];
-        stack[stackSize++] = secondIsNear ? current + 1 : node.offset;
-        current = secondIsNear ? node.offset : current + 1;
+    if (!node.isLeaf()) {
+      uint32_t near = node.offset, far = node.offset + 1;
+      float nearEntry = 0.0f, farEntry = 0.0f;
+      const bool hitNear = hitsBox(bvh_.nodes[near], slab, tmin, tmax, nearEntry);
+      const bool hitFar = hitsBox(bvh_.nodes[far], slab, tmin, tmax, farEntry);
+      if (hitNear && hitFar) {
+        if (farEntry < nearEntry) std::swap(near, far), std::swap(nearEntry, farEntry);
+        stack[stackSize++] = Pending{far, farEntry};
+        prefetch(bvh_.nodes[far]);
+        current = near;
         continue;
       }
+      if (hitNear || hitFar) {
+        current = hitNear ? near : far;
+        continue;
+      }
+    } else {
       for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
         const LeafTriangle& tri = triangles_[i];
         TriangleHit hit;
@@ -103,11 +120,16 @@ uint32_t BvhKernel::traverse(const Ray& ray, float& t, float& u, float& v) const
         v = hit.v;
       }
     }
-    if (stackSize == 0) break;
-    current = stack[--stackSize];
+    // Next: the nearest pending subtree that still starts before the closest hit so far.
+    do {
+      if (stackSize == 0) {
+        t = tmax;
+        return found;
+      }
+      --stackSize;
+    } while (stack[stackSize].entry > tmax);
+    current = stack[stackSize].node;
   }
-  t = tmax;
-  return found;
 }
 
 Hit BvhKernel::intersect(const Ray& ray) const {

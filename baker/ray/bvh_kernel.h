@@ -29,6 +29,15 @@ class BvhKernel final : public RayKernel {
     glm::vec3 p0, p1, p2;
   };
 
+  // Starts loading what visiting `node` will read first (its child pair or its leaf's
+  // triangles), so that the load overlaps the traversal of the nearer subtree.
+  void prefetch(const BvhNode& node) const {
+    if (node.isLeaf())
+      __builtin_prefetch(&triangles_[node.offset]);
+    else
+      __builtin_prefetch(&bvh_.nodes[node.offset]);
+  }
+
   template <bool kAnyHit>
   uint32_t traverse(const Ray& ray, float& t, float& u, float& v) const;
 

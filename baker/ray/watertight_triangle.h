@@ -16,14 +16,16 @@
 
 namespace bounce {
 
-// Per-ray constants of the shear: kz is the dominant direction axis.
+// Per-ray constants of the shear: kz is the dominant direction axis. Coordinates are indexed
+// through plain float arrays: glm's operator[] is a switch, costly with a run-time index.
 struct ShearedRay {
-  glm::vec3 origin;
+  float origin[3];
   int kx, ky, kz;
   float sx, sy, sz;
 
-  explicit ShearedRay(const Ray& ray) : origin(ray.origin) {
-    const glm::vec3 d = ray.direction, a = glm::abs(d);
+  explicit ShearedRay(const Ray& ray) : origin{ray.origin.x, ray.origin.y, ray.origin.z} {
+    const float d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    const glm::vec3 a = glm::abs(ray.direction);
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = kz == 2 ? 0 : kz + 1;
     ky = kx == 2 ? 0 : kx + 1;
@@ -41,7 +43,9 @@ struct TriangleHit {
 // barycentrics u (weight of p1) and v (weight of p2).
 inline bool intersectTriangle(const ShearedRay& r, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2,
                               float tmin, float tmax, TriangleHit& hit) {
-  const glm::vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
+  const float a[3] = {p0.x - r.origin[0], p0.y - r.origin[1], p0.z - r.origin[2]};
+  const float b[3] = {p1.x - r.origin[0], p1.y - r.origin[1], p1.z - r.origin[2]};
+  const float c[3] = {p2.x - r.origin[0], p2.y - r.origin[1], p2.z - r.origin[2]};
   const float ax = a[r.kx] + r.sx * a[r.kz], ay = a[r.ky] + r.sy * a[r.kz];
   const float bx = b[r.kx] + r.sx * b[r.kz], by = b[r.ky] + r.sy * b[r.kz];
   const float cx = c[r.kx] + r.sx * c[r.kz], cy = c[r.ky] + r.sy * c[r.kz];

@@ -13,8 +13,8 @@ namespace bounce {
 namespace {
 
 bool contains(const BvhNode& outer, const BvhNode& inner) {
-  return glm::all(glm::lessThanEqual(outer.lower, inner.lower)) &&
-         glm::all(glm::greaterThanEqual(outer.upper, inner.upper));
+  return glm::all(glm::lessThanEqual(outer.lower(), inner.lower())) &&
+         glm::all(glm::greaterThanEqual(outer.upper(), inner.upper()));
 }
 
 // Walks the tree; returns its depth and checks each invariant on the way.
@@ -26,13 +26,15 @@ int checkNode(const Bvh& bvh, const std::vector<Box>& boxes, uint32_t index, std
     for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
       const uint32_t id = bvh.primitives.at(i);
       ++seen.at(id);
-      EXPECT_TRUE(glm::all(glm::lessThanEqual(node.lower, boxes[id].lower)) &&
-                  glm::all(glm::greaterThanEqual(node.upper, boxes[id].upper)));
+      EXPECT_TRUE(glm::all(glm::lessThanEqual(node.lower(), boxes[id].lower)) &&
+                  glm::all(glm::greaterThanEqual(node.upper(), boxes[id].upper)));
     }
     return 1;
   }
-  const uint32_t first = index + 1, second = node.offset;
-  EXPECT_GT(second, first);
+  const uint32_t first = node.offset, second = node.offset + 1;
+  EXPECT_GT(first, index);
+  EXPECT_EQ(first % 2, 0u);  // pairs share a cache line
+  EXPECT_EQ(reinterpret_cast<uintptr_t>(&bvh.nodes[first]) % 64, 0u);
   EXPECT_TRUE(contains(node, bvh.nodes.at(first)) && contains(node, bvh.nodes.at(second)));
   return 1 + std::max(checkNode(bvh, boxes, first, seen, maxLeafSize),
                       checkNode(bvh, boxes, second, seen, maxLeafSize));

@@ -14,17 +14,27 @@ uint32_t addVertex(WorldGeometry& g, glm::vec3 p) {
   return static_cast<uint32_t>(g.positions.size() - 1);
 }
 
-// A smooth pseudo-random field on the unit sphere: a sum of a few random plane waves.
-float bumps(glm::vec3 n, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  float sum = 0.0f;
-  for (int i = 0; i < 6; ++i) {
-    const glm::vec3 k = glm::vec3(u(rng), u(rng), u(rng)) * 6.0f;
-    sum += std::sin(glm::dot(k, n) + 3.0f * u(rng)) / 6.0f;
+// A smooth pseudo-random field on the unit sphere: a sum of six random plane waves.
+class Bumps {
+ public:
+  explicit Bumps(uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (Wave& w : waves_) w = Wave{glm::vec3(u(rng), u(rng), u(rng)) * 6.0f, 3.0f * u(rng)};
   }
-  return sum;
-}
+  float operator()(glm::vec3 n) const {
+    float sum = 0.0f;
+    for (const Wave& w : waves_) sum += std::sin(glm::dot(w.k, n) + w.phase) / 6.0f;
+    return sum;
+  }
+
+ private:
+  struct Wave {
+    glm::vec3 k;
+    float phase;
+  };
+  Wave waves_[6];
+};
 
 }  // namespace
 
@@ -77,6 +87,7 @@ void addIcosphere(WorldGeometry& g, int subdivisions, glm::vec3 centre, float ra
 void addDisplacedSphere(WorldGeometry& g, int rings, int segments, glm::vec3 centre, float radius,
                         float bumpiness, uint32_t seed) {
   const float pi = std::numbers::pi_v<float>;
+  const Bumps bumps(seed);
   const uint32_t north = addVertex(g, centre + glm::vec3(0, radius, 0));
   const uint32_t south = addVertex(g, centre - glm::vec3(0, radius, 0));
   const auto firstRing = static_cast<uint32_t>(g.positions.size());
@@ -86,7 +97,7 @@ void addDisplacedSphere(WorldGeometry& g, int rings, int segments, glm::vec3 cen
       const float phi = 2.0f * pi * static_cast<float>(s) / static_cast<float>(segments);
       const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
                         std::sin(theta) * std::sin(phi));
-      addVertex(g, centre + radius * (1.0f + bumpiness * bumps(n, seed)) * n);
+      addVertex(g, centre + radius * (1.0f + bumpiness * bumps(n)) * n);
     }
   }
   const auto at = [&](int r, int s) {  // ring r in [1, rings − 1]
