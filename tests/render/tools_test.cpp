@@ -178,6 +178,24 @@ TEST_F(ToolsTest, EglContextWorksOrFailsCleanly) {
   EXPECT_TRUE(fs::exists(exr));
 }
 
+// Without any EGL driver (glvnd told to load a vendor file that does not exist) the default
+// falls back to OSMesa and says why; forcing EGL fails with a message naming the backend.
+TEST_F(ToolsTest, MissingEglFallsBackToOSMesa) {
+  const std::string noEgl = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/egl_vendor.json ";
+  const fs::path png = dir_ / "fallback.png";
+  ToolRun r = run(noEgl + tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                  " --width 16 --height 16 --out " + quote(png));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("EGL unavailable (egl: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("context osmesa"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(png));
+  r = run(noEgl + tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+          " --width 16 --height 16 --context egl --out " + quote(dir_ / "egl.png"));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("error: egl: "), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "egl.png"));
+}
+
 // The viewer under a virtual X server (llvmpipe): a few frames, then a screenshot that shows
 // the lit Cornell box, not a black or failed frame.
 TEST_F(ToolsTest, ViewerRendersUnderXvfb) {
