@@ -153,5 +153,78 @@ TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
   }
 }
 
+// The baker's entry point: irradiance at a point, E = I·cosθ/r² under a point light (exact,
+// deterministic) and E = π·L·F under the square emitter (5 standard errors).
+TEST(DirectLight, IrradianceAtAPoint) {
+  test::World world = planeWorld();
+  Light light;
+  light.position = {0, 0, 2};
+  light.intensity = {10, 20, 5};
+  world.scene.lights.push_back(light);
+  world.build();
+  const PathTracer pointTracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  SobolSampler sampler(1u, 0u);
+  sampler.startSample(0);
+  const glm::dvec3 e(pointTracer.irradiance({1.0f, 0.0f, 0.0f}, {0, 0, 1}, sampler));
+  const double r2 = 5.0;
+  const glm::dvec3 expected = glm::dvec3(light.intensity) * (2.0 / std::sqrt(r2)) / r2;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], expected[c], 1e-5 * expected[c]);
+
+  test::World square = planeWorld();
+  const glm::dvec3 le(2, 3, 4);
+  addQuad(square.scene, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1},
+          addMaterial(square.scene, glm::vec3(0.0f), glm::vec3(le)));
+  square.build();
+  const PathTracer tracer(square.scene, square.geometry, *square.kernel, TraceSettings{});
+  const int n = 2048;
+  glm::dvec3 mean(0.0), m2(0.0);
+  SobolSampler pattern(4u, 9u);
+  for (int i = 0; i < n; ++i) {
+    pattern.startSample(static_cast<uint32_t>(i));
+    const glm::dvec3 value(tracer.irradiance({0.4f, 0.3f, 0.0f}, {0, 0, 1}, pattern));
+    const glm::dvec3 delta = value - mean;
+    mean += delta / static_cast<double>(i + 1);
+    m2 += delta * (value - mean);
+  }
+  const glm::dvec3 se = glm::sqrt(m2 / static_cast<double>(n - 1) / static_cast<double>(n));
+  const glm::dvec3 exact = kPiD * le * rectangleFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0);
+  EXPECT_TRUE(test::agreeWithin(mean, se, exact, glm::dvec3(0.0), 5.0));
+}
+
+// Albedo × base colour texture at uv0 (bilinear, uv (0,0) at the top-left): at a texel's
+// centre the lookup is that texel exactly. Directional light, so Lo = ρ·t/π·E·cosθ exactly.
+TEST(DirectLight, AlbedoTextureMultipliesAlbedo) {
+  test::World world;
+  Texture texture;
+  texture.width = 2;
+  texture.height = 2;
+  texture.texels = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};  // top row, then bottom row
+  world.scene.textures.push_back(texture);
+  const uint32_t m = addMaterial(world.scene, glm::vec3(0.5f));
+  world.scene.materials[m].albedoTexture = 0;
+  // A 2 m square at z = 0 with uv (0,0) at (−1, 1) (top-left) and (1,1) at (1, −1).
+  addQuad(world.scene, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, m);
+  world.scene.meshes.back().uv0 = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0, 0, -1};
+  sun.irradiance = glm::vec3(2.0f);
+  world.scene.lights.push_back(sun);
+  world.build();
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  // Texel centres: uv (0.25, 0.25) is top-left texel (red) at (−0.5, 0.5); uv (0.75, 0.25)
+  // top-right (green) at (0.5, 0.5); uv (0.25, 0.75) bottom-left (blue) at (−0.5, −0.5).
+  const struct {
+    glm::dvec2 at;
+    glm::dvec3 texel;
+  } cases[] = {{{-0.5, 0.5}, {1, 0, 0}}, {{0.5, 0.5}, {0, 1, 0}}, {{-0.5, -0.5}, {0, 0, 1}}};
+  for (const auto& c : cases) {
+    const test::Estimate e = test::estimateLi(tracer, downOnto(c.at.x, c.at.y), 1u, 0u, 4);
+    const glm::dvec3 expected = 0.5 * c.texel / kPiD * 2.0;
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_NEAR(e.mean[ch], expected[ch], 1e-5) << c.at.x << "," << c.at.y;
+  }
+}
+
 }  // namespace
 }  // namespace bounce

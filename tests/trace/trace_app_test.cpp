@@ -1,0 +1,125 @@
+// bounce-trace end to end: loader, units, camera convention, files and exit codes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "image/image_io.h"
+#include "scene/load.h"
+#include "trace/camera_render.h"
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTool = std::string(BOUNCE_BIN_DIR) + "/bounce-trace";
+const fs::path kContent = fs::path(BOUNCE_SOURCE_DIR) / "content";
+
+fs::path scratchDir() {
+  return fs::temp_directory_path() / ("bounce_trace_app_test_" + std::to_string(::getpid()));
+}
+
+fs::path scratch(const std::string& name) {
+  fs::create_directories(scratchDir());
+  return scratchDir() / name;
+}
+
+// Removes the scratch folder after all tests.
+class ScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(scratchDir(), ec);
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+
+int run(const std::string& arguments) {
+  const std::string command = kTool + " " + arguments + " 2>/dev/null";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// point_over_plane.gltf: ρ = 0.5 plane, 1 W/sr point light 1 m above (content/README.md).
+// A pixel's value estimates the mean of L = ρ/π · I·h/(h² + r²)^{3/2} over its footprint on
+// the plane (box filter). The expected value and the variance of L over the footprint come
+// from a 32×32 grid of film positions; one jittered sample has that variance, so the SE of
+// a 64-sample pixel is σ/8 and the tolerance 5 SE (plus float rounding).
+TEST(TraceApp, PointOverPlaneMatchesTheInverseSquareLaw) {
+  const fs::path scene = kContent / "point_over_plane" / "point_over_plane.gltf";
+  const fs::path out = scratch("pop.exr");
+  ASSERT_EQ(run(scene.string() + " --width 12 --height 12 --spp 64 --out " + out.string()), 0);
+  const Image image = readExr(out);
+  ASSERT_EQ(image.width, 12);
+  const Scene loaded = loadScene(scene);
+  ASSERT_EQ(loaded.lights.size(), 1u);
+  const Light& light = loaded.lights[0];
+  const double rho = loaded.materials.at(0).albedo.g;
+  const double intensity = light.intensity.g;
+  const double h = light.position.y;  // the plane is y = 0
+  for (int y = 0; y < 12; ++y) {
+    for (int x = 0; x < 12; ++x) {
+      double sum = 0.0, sum2 = 0.0;
+      const int grid = 32;
+      for (int j = 0; j < grid; ++j) {
+        for (int i = 0; i < grid; ++i) {
+          const Ray ray =
+              cameraRay(loaded.cameras[0], 12, 12, x + (i + 0.5f) / grid, y + (j + 0.5f) / grid);
+          const double t = -static_cast<double>(ray.origin.y) / ray.direction.y;
+          const double px = ray.origin.x + t * ray.direction.x - light.position.x;
+          const double pz = ray.origin.z + t * ray.direction.z - light.position.z;
+          const double l = rho / M_PI * intensity * h / std::pow(h * h + px * px + pz * pz, 1.5);
+          sum += l;
+          sum2 += l * l;
+        }
+      }
+      const double n = grid * grid;
+      const double mean = sum / n;
+      const double sigma = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+      EXPECT_NEAR(image.at(x, y).g, mean, 5.0 * sigma / 8.0 + 1e-5 * mean) << x << "," << y;
+    }
+  }
+}
+
+// The Cornell box seen from its camera has the red wall on the left, the green on the right
+// (content/README.md): a check of the camera convention (−Z forward, +Y up, x to the right).
+TEST(TraceApp, CornellBoxRedWallOnTheLeft) {
+  const fs::path out = scratch("cornell.exr");
+  const fs::path png = scratch("cornell.png");
+  ASSERT_EQ(run((kContent / "cornell_box" / "cornell_box.gltf").string() +
+                " --width 16 --height 16 --spp 8 --out " + out.string() + " --png " + png.string()),
+            0);
+  EXPECT_TRUE(fs::exists(png));
+  const Image image = readExr(out);
+  ASSERT_TRUE(image.allFinite());
+  glm::dvec3 left(0.0), right(0.0);
+  for (int y = 4; y < 12; ++y) {
+    left += glm::dvec3(image.at(1, y));
+    right += glm::dvec3(image.at(14, y));
+  }
+  EXPECT_GT(left.r, 2.0 * left.g);
+  EXPECT_GT(right.g, 2.0 * right.r);
+}
+
+TEST(TraceApp, BadInputFailsWithNonZeroExit) {
+  const fs::path out = scratch("bad.exr");
+  EXPECT_NE(run("/nonexistent/scene.gltf --out " + out.string()), 0);
+  const std::string cornell = (kContent / "cornell_box" / "cornell_box.gltf").string();
+  EXPECT_NE(run(cornell + " --backend nope --out " + out.string()), 0);
+  EXPECT_NE(run(cornell + " --camera nope --width 4 --height 4 --out " + out.string()), 0);
+  // An output path below a regular file cannot be written.
+  const fs::path file = scratch("a_file");
+  { std::ofstream(file) << "x"; }
+  EXPECT_NE(run(cornell + " --width 4 --height 4 --out " + (file / "x.exr").string()), 0);
+  EXPECT_NE(run(cornell), 0);  // --out missing
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace bounce
