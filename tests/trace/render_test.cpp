@@ -86,6 +86,40 @@ TEST(CameraRender, EmbreeAndBvhBackendsAgree) {
   EXPECT_TRUE(test::agreeWithin(ma.mean, ma.standardError, mb.mean, mb.standardError, 5.0));
 }
 
+// Direct-only and indirect-only split every path's contributions by its number of
+// reflections (k ≤ 1, k ≥ 2) using the same sampler dimensions, so with the same seed they
+// add up to the full image sample by sample (up to float summation order).
+TEST(CameraRender, DirectPlusIndirectIsTheFullImage) {
+  test::World world = test::slitRooms(false);
+  Light point;
+  point.position = {3.0f, 1.0f, 1.5f};
+  point.intensity = glm::vec3(0.5f);
+  world.scene.lights.push_back(point);
+  world.build();
+  const Camera camera = test::slitCamera();
+  TraceSettings settings;
+  settings.spp = 8;
+  const Image full =
+      renderCamera(world.scene, world.geometry, *world.kernel, camera, 16, 16, settings);
+  settings.paths = PathSet::DirectOnly;
+  const Image direct =
+      renderCamera(world.scene, world.geometry, *world.kernel, camera, 16, 16, settings);
+  settings.paths = PathSet::IndirectOnly;
+  const Image indirect =
+      renderCamera(world.scene, world.geometry, *world.kernel, camera, 16, 16, settings);
+  double directSum = 0.0, indirectSum = 0.0;
+  for (std::size_t i = 0; i < full.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float sum = direct.pixels[i][c] + indirect.pixels[i][c];
+      ASSERT_NEAR(sum, full.pixels[i][c], 1e-5f * full.pixels[i][c] + 1e-9f) << i;
+    }
+    directSum += direct.pixels[i].g;
+    indirectSum += indirect.pixels[i].g;
+  }
+  EXPECT_GT(directSum, 0.0);
+  EXPECT_GT(indirectSum, 0.0);
+}
+
 TraceSettings quick() {
   TraceSettings settings;
   settings.spp = 4;
