@@ -3,7 +3,7 @@
 //   C(split) = traversalCost + intersectionCost · (A_L·N_L + A_R·N_R) / A
 // at every bin boundary, and splits at the cheapest one unless a leaf (intersectionCost · N)
 // is cheaper and small enough. Subtrees build in parallel; because each node's primitives are
-// partitioned in place and the tree is flattened afterwards in depth-first order, the result
+// partitioned in place and the tree is flattened afterwards (in treelets, see bvh.h), the result
 // is identical for any thread schedule.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_invoke.h>
@@ -35,6 +35,7 @@ struct BuildNode {
 constexpr int kMaxBins = 64;
 constexpr std::size_t kParallelSubtree = 4096;  // fewer primitives: build on this thread
 constexpr std::size_t kParallelBinning = 65536;
+constexpr int kTreeletDepth = 2;  // levels of child pairs stored together (bvh.h)
 // Below this depth SAH chooses the planes; deeper nodes (only reached by pathological inputs
 // where SAH keeps peeling off a few primitives) split at the median, so the tree depth stays
 // under kMaxSahDepth + 32 = kBvhMaxDepth.
@@ -202,23 +203,38 @@ class Builder {
   std::size_t nodeCount() const { return nodeCount_; }
 };
 
-// Depth-first flattening into child pairs: the node at `index` is already written; its two
-// children are appended side by side, then each of their subtrees in turn.
 BvhNode toNode(const BuildNode& node) {
   const glm::vec3 lo = node.box.lower, hi = node.box.upper;
   return BvhNode{
       {{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}}, node.first, static_cast<uint16_t>(node.count), 0};
 }
 
+// Treelets: the child pairs of the top kTreeletDepth levels below the node at `index`, in
+// breadth-first order, one after the other. A ray that reaches the node can request all of
+// their cache lines at once instead of one level after the other (treeletPairs says how many).
 template <typename Nodes>
-void flattenChildren(const BuildNode& node, uint32_t index, Nodes& nodes) {
-  if (node.count > 0) return;
-  const auto pair = static_cast<uint32_t>(nodes.size());
-  nodes[index].offset = pair;
-  nodes.push_back(toNode(*node.children[0]));
-  nodes.push_back(toNode(*node.children[1]));
-  flattenChildren(*node.children[0], pair, nodes);
-  flattenChildren(*node.children[1], pair + 1, nodes);
+void flattenTreelet(const BuildNode& top, uint32_t index, Nodes& nodes) {
+  struct Placed {
+    const BuildNode* node;
+    uint32_t index;
+  };
+  std::vector<Placed> frontier = {{&top, index}}, next;
+  const auto firstPair = static_cast<uint32_t>(nodes.size());
+  for (int level = 0; level < kTreeletDepth; ++level) {
+    next.clear();
+    for (const Placed& p : frontier) {
+      if (p.node->count > 0) continue;
+      const auto pair = static_cast<uint32_t>(nodes.size());
+      nodes[p.index].offset = pair;
+      for (uint32_t k = 0; k < 2; ++k) {
+        nodes.push_back(toNode(*p.node->children[k]));
+        next.push_back({p.node->children[k].get(), pair + k});
+      }
+    }
+    frontier.swap(next);
+  }
+  nodes[index].treeletPairs = static_cast<uint16_t>((nodes.size() - firstPair) / 2);
+  for (const Placed& p : frontier) flattenTreelet(*p.node, p.index, nodes);
 }
 
 }  // namespace
@@ -242,7 +258,7 @@ Bvh buildBvh(std::span<const Box> boxes, std::span<const uint32_t> ids,
   bvh.nodes.reserve(builder.nodeCount() + 1);
   bvh.nodes.push_back(toNode(*root));
   bvh.nodes.push_back(BvhNode{});  // unused: child pairs start at even indices
-  flattenChildren(*root, 0, bvh.nodes);
+  flattenTreelet(*root, 0, bvh.nodes);
   bvh.primitives.resize(primitives.size());
   for (std::size_t i = 0; i < primitives.size(); ++i) bvh.primitives[i] = primitives[i].id;
   return bvh;

@@ -93,6 +93,8 @@ uint32_t BvhKernel::traverse(const Ray& ray, float& t, float& u, float& v) const
   for (;;) {
     const BvhNode& node = bvh_.nodes[current];
     if (!node.isLeaf()) {
+      for (uint32_t pair = 1; pair < node.treeletPairs; ++pair)  // the deeper levels' lines
+        __builtin_prefetch(&bvh_.nodes[node.offset + 2 * pair]);
       uint32_t near = node.offset, far = node.offset + 1;
       float nearEntry = 0.0f, farEntry = 0.0f;
       const bool hitNear = hitsBox(bvh_.nodes[near], slab, tmin, tmax, nearEntry);

@@ -35,6 +35,7 @@ int checkNode(const Bvh& bvh, const std::vector<Box>& boxes, uint32_t index, std
   EXPECT_GT(first, index);
   EXPECT_EQ(first % 2, 0u);  // pairs share a cache line
   EXPECT_EQ(reinterpret_cast<uintptr_t>(&bvh.nodes[first]) % 64, 0u);
+  EXPECT_LE(node.offset + 2u * node.treeletPairs, bvh.nodes.size());  // prefetches stay inside
   EXPECT_TRUE(contains(node, bvh.nodes.at(first)) && contains(node, bvh.nodes.at(second)));
   return 1 + std::max(checkNode(bvh, boxes, first, seen, maxLeafSize),
                       checkNode(bvh, boxes, second, seen, maxLeafSize));
