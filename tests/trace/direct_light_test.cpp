@@ -153,6 +153,37 @@ TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
   }
 }
 
+// The same emitter turned upside down (its front faces away from the plane): single-sided it
+// lights nothing below; double-sided its back face emits too, giving ρ·Le·F again, with each
+// strategy (5 standard errors).
+TEST(DirectLight, OnlyDoubleSidedEmittersEmitFromTheirBackFace) {
+  for (bool doubleSided : {false, true}) {
+    test::World world = planeWorld();
+    const glm::dvec3 le(2, 3, 4);
+    const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le), doubleSided);
+    addQuad(world.scene, {-0.5f, -0.5f, 1}, {0.5f, -0.5f, 1}, {0.5f, 0.5f, 1}, {-0.5f, 0.5f, 1},
+            light);
+    world.build();
+    for (LightStrategy strategy :
+         {LightStrategy::LightOnly, LightStrategy::BrdfOnly, LightStrategy::Mis}) {
+      TraceSettings settings;
+      settings.strategy = strategy;
+      const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+      Ray ray = downOnto(0.4, 0.3);
+      ray.origin.z = 0.5f;
+      const test::Estimate e = test::estimateLi(tracer, ray, 5u, 0u, 2048);
+      const glm::dvec3 expected =
+          doubleSided ? kPlaneAlbedo * le * rectangleFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0)
+                      : glm::dvec3(0.0);
+      EXPECT_TRUE(test::agreeWithin(e.mean, e.standardError(), expected, glm::dvec3(0), 5.0))
+          << "double-sided " << doubleSided << " strategy " << static_cast<int>(strategy);
+      if (!doubleSided) {
+        EXPECT_EQ(e.mean, glm::dvec3(0.0));
+      }
+    }
+  }
+}
+
 // The baker's entry point: irradiance at a point, E = I·cosθ/r² under a point light (exact,
 // deterministic) and E = π·L·F under the square emitter (5 standard errors).
 TEST(DirectLight, IrradianceAtAPoint) {
