@@ -347,6 +347,14 @@ class GltfBuilder {
       const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
       checkIndex(s, model_.scenes, "default scene");
       roots = model_.scenes[static_cast<std::size_t>(s)].nodes;
+    } else {  // no scene at all: show every root node rather than nothing
+      std::vector<bool> isChild(model_.nodes.size(), false);
+      for (const tinygltf::Node& node : model_.nodes)
+        for (const int c : node.children)
+          if (c >= 0 && static_cast<std::size_t>(c) < isChild.size())
+            isChild[static_cast<std::size_t>(c)] = true;
+      for (std::size_t n = 0; n < model_.nodes.size(); ++n)
+        if (!isChild[n]) roots.push_back(static_cast<int>(n));
     }
     struct Pending {
       int node;

@@ -31,7 +31,8 @@ TEST(CornellBox, LoadsTrianglesAndMaterials) {
 }
 
 TEST(CornellBox, EmitterRadianceIs17_12_4AfterPhotometricConversion) {
-  const Material& light = materialNamed(loadScene(kCornell), "light");
+  const Scene scene = loadScene(kCornell);
+  const Material& light = materialNamed(scene, "light");
   // Stored as emissiveFactor (1, 12/17, 4/17) × 17·683 nits; the double-precision conversion
   // must give the float nearest to the intended radiance.
   EXPECT_FLOAT_EQ(light.emission.r, 17.0f);

@@ -46,6 +46,16 @@ TEST(GltfHierarchy, ChildTranslatedUnderRotatedParent) {
   EXPECT_EQ(grandchild.mobility, Mobility::Static);  // overridden
 }
 
+TEST(GltfHierarchy, WithoutScenesEveryRootNodeIsPlaced) {
+  test::TempDir dir;
+  test::GltfFixture f = test::GltfFixture::triangle();
+  f.doc.erase("scene");
+  f.doc.erase("scenes");
+  f.doc["nodes"] = {{{"mesh", 0}, {"children", {1}}}, {{"mesh", 0}}, {{"mesh", 0}}};
+  f.writeGltf(dir / "noscene.gltf");
+  EXPECT_EQ(loadScene(dir / "noscene.gltf").instances.size(), 3u);  // roots 0, 2 and child 1
+}
+
 TEST(GltfHierarchy, CyclesAndBadMobilityAreErrors) {
   test::TempDir dir;
   test::GltfFixture f = test::GltfFixture::triangle();

@@ -78,6 +78,23 @@ TEST(Texture, ObjMapKdIsDecodedAndVIsFlipped) {
   EXPECT_EQ(scene.meshes.at(0).normals.at(0), glm::vec3(0, 0, 1));
 }
 
+TEST(Texture, GltfMissingImageIsALoadError) {
+  test::TempDir dir;
+  test::GltfFixture f = test::GltfFixture::triangle();
+  f.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  f.doc["images"] = {{{"uri", "absent.png"}}};
+  f.doc["textures"] = {{{"source", 0}}};
+  f.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  f.writeGltf(dir / "noimage.gltf");
+  try {
+    loadScene(dir / "noimage.gltf");
+    ADD_FAILURE() << "loaded with a missing image";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("noimage.gltf"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("absent.png"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Texture, MissingTextureFileIsALoadError) {
   test::TempDir dir;
   test::writeText(dir / "t.mtl", "newmtl m\nmap_Kd absent.png\n");

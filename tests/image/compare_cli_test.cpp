@@ -1,0 +1,78 @@
+// bounce-compare end to end: files in, numbers and exit codes out.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "image/image_compare.h"
+#include "image/image_io.h"
+
+namespace bounce {
+namespace {
+
+class CompareCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        std::filesystem::temp_directory_path() / ("bounce_compare_cli_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  int run(const std::string& args) {
+    const std::string command = std::string(BOUNCE_BIN_DIR) + "/bounce-compare " + args + " > " +
+                                (dir_ / "stdout.txt").string() + " 2> " +
+                                (dir_ / "stderr.txt").string();
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string read(const std::string& name) {
+    std::ifstream in(dir_ / name, std::ios::binary | std::ios::ate);
+    std::string text(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)), '\0');
+    in.seekg(0);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    return text;
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(CompareCli, JsonMetricsMaskAndErrorImage) {
+  // Reference 0.5 everywhere; the image is 0.5 + 0.25 on the left column, 0.5 elsewhere.
+  // The mask keeps only the left column, so bias = RMSE = 0.25 in every channel.
+  Image ref(4, 4, glm::vec3(0.5f)), a = ref;
+  Image mask(4, 4);
+  for (int y = 0; y < 4; ++y) {
+    a.at(0, y) = glm::vec3(0.75f);
+    mask.at(0, y) = glm::vec3(1.0f);
+  }
+  writeExr(path("a.exr"), a);
+  writeExr(path("b.exr"), ref);
+  writeDisplayPng(path("mask.png"), mask);
+  ASSERT_EQ(run(path("a.exr") + " " + path("b.exr") + " --json --mask " + path("mask.png") +
+                " --error-image " + path("error.png")),
+            0)
+      << read("stderr.txt");
+  const nlohmann::json out = nlohmann::json::parse(read("stdout.txt"));
+  EXPECT_EQ(out["comparedPixels"], 4);
+  EXPECT_NEAR(out["all"]["bias"].get<double>(), 0.25, 1e-7);
+  EXPECT_NEAR(out["channels"]["g"]["rmse"].get<double>(), 0.25, 1e-7);
+  EXPECT_TRUE(std::filesystem::exists(path("error.png")));
+  EXPECT_GT(out["errorImage"]["redAt"].get<double>(), 0.0);
+}
+
+TEST_F(CompareCli, SizeMismatchFailsWithAMessage) {
+  writeExr(path("a.exr"), Image(4, 4));
+  writeExr(path("b.exr"), Image(4, 3));
+  EXPECT_NE(run(path("a.exr") + " " + path("b.exr")), 0);
+  EXPECT_NE(read("stderr.txt").find("sizes differ"), std::string::npos) << read("stderr.txt");
+  EXPECT_NE(run(path("absent.exr") + " " + path("b.exr")), 0);
+}
+
+}  // namespace
+}  // namespace bounce
