@@ -23,6 +23,12 @@ struct DriverQuirks {
   // Compile logs name the source string and line as "S:L(C): error: ..." (Mesa) or
   // "S(L) : error ..." (NVIDIA, AMD); shader.cpp rewrites both to "file:L: ...".
   bool logFormatsDiffer = true;
+
+  // Under AddressSanitizer: GLX and EGL unload Mesa's driver (swrast_dri.so, libGLX_mesa) when
+  // the last context or display goes, so LeakSanitizer's report at exit shows the driver's own
+  // allocations as "<unknown module>" that no suppression can name. Sanitized builds pin every
+  // loaded GL driver with RTLD_NODELETE (gl_functions.cpp); normal builds leave them alone.
+  bool driversUnloadBeforeLeakCheck = true;
 };
 
 inline constexpr DriverQuirks kDriverQuirks{};
