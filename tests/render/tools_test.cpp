@@ -196,6 +196,14 @@ TEST_F(ToolsTest, MissingEglFallsBackToOSMesa) {
   EXPECT_FALSE(fs::exists(dir_ / "egl.png"));
 }
 
+// Without any display the viewer says so and exits 1 (no crash, no hang).
+TEST_F(ToolsTest, ViewerWithoutDisplayFailsCleanly) {
+  const ToolRun r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + tool("bounce-view") + " " +
+                        content("cornell_box/cornell_box.gltf") + " --frames 1");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("bounce-view: error: glfw: "), std::string::npos) << r.output;
+}
+
 // The viewer under a virtual X server (llvmpipe): a few frames, then a screenshot that shows
 // the lit Cornell box, not a black or failed frame.
 TEST_F(ToolsTest, ViewerRendersUnderXvfb) {
