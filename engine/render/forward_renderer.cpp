@@ -85,11 +85,31 @@ ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path
     indices.insert(indices.end(), {tri.x, tri.y, tri.z});
     gpu.ranges.back().indexCount += 3;
     const Material& m = gpu.materials[material];
-    if (m.isEmissive()) {
+    // A zero-area emitter gives no light (and its plane, hence the shader's facing test, is
+    // undefined).
+    if (m.isEmissive() && glm::length(world.triangleCross(t)) > 0.0f) {
       emitterTable.emplace_back(world.positions[tri.x], 0.0f);
       emitterTable.emplace_back(world.positions[tri.y], 0.0f);
       emitterTable.emplace_back(world.positions[tri.z], 0.0f);
       emitterTable.emplace_back(m.emission, m.doubleSided ? 1.0f : 0.0f);
+    }
+  }
+  // Shading normals must be unit: a vertex without one (zero after flatten) takes the
+  // area-weighted mean of its triangles' geometric normals.
+  std::vector<glm::vec3> fallbackNormals(vertices.size(), glm::vec3(0.0f));
+  bool missingNormals = false;
+  for (std::size_t t = 0; t < world.triangleCount(); ++t) {
+    const glm::vec3 cross = world.triangleCross(t);
+    for (const uint32_t v : {world.triangles[t].x, world.triangles[t].y, world.triangles[t].z}) {
+      if (glm::length(vertices[v].normal) > 0.0f) continue;
+      fallbackNormals[v] += cross;
+      missingNormals = true;
+    }
+  }
+  if (missingNormals) {
+    for (std::size_t v = 0; v < vertices.size(); ++v) {
+      const float length = glm::length(fallbackNormals[v]);
+      if (length > 0.0f) vertices[v].normal = fallbackNormals[v] / length;
     }
   }
   gpu.mesh.emplace(vertices, indices);
@@ -108,6 +128,7 @@ ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path
     warnings_.push_back(std::to_string(gpu.emitterCount) +
                         " emissive triangles: each fragment loops over all of them (slow)");
 
+  gpu.textures.reserve(scene.textures.size());
   for (const Texture& texture : scene.textures) {
     if (texture.width > 0 && texture.height > 0 &&
         texture.texels.size() ==

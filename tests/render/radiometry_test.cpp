@@ -107,5 +107,24 @@ TEST(Radiometry, SpotLightFollowsSpotFalloff) {
   EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));  // far outside the outer cone: exactly dark
 }
 
+// Robustness: a mesh without shading normals is shaded with its geometric normal, and a
+// zero-area emissive triangle lights nothing (and puts no NaN in the image).
+TEST(Radiometry, MissingNormalsAndDegenerateEmittersStayFinite) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  scene.meshes.back().normals.assign(scene.meshes.back().positions.size(), glm::vec3(0.0f));
+  Material emitter;
+  emitter.emission = glm::vec3(5.0f);
+  addQuad(scene, {0, 1, 0}, {1, 0, 0}, {2, 0, 0}, emitter);  // collinear: zero area
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0, -1, 0};
+  sun.irradiance = glm::vec3(2.0f);
+  scene.lights.push_back(sun);
+  const Image image = render(scene, downCamera(2.0f), kSize, kSize);
+  EXPECT_TRUE(image.allFinite());
+  expectNear(image.at(20, 40), kAlbedo / kPi * sun.irradiance, "no normals", 20, 40);
+}
+
 }  // namespace
 }  // namespace bounce::test
