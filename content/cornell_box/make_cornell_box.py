@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Writes cornell_box.gltf from Cornell's published measurements (standard library only).
 
-Run from anywhere:  /usr/bin/python3 content/cornell_box/make_cornell_box.py
+Run from anywhere (optional argument: another output path):
+    /usr/bin/python3 content/cornell_box/make_cornell_box.py
 Sources and conversions are recorded in content/README.md.
 """
 import math
@@ -110,7 +111,7 @@ def main():
     # which puts world +x (the red wall) on the image's left.
     gltf.node({"name": "camera", "camera": 0, "rotation": [0.0, 1.0, 0.0, 0.0],
                "translation": [c * MM for c in CAMERA_POSITION]})
-    gltf.write(os.path.join(out_dir, "cornell_box.gltf"))
+    gltf.write(sys.argv[1] if len(sys.argv) > 1 else os.path.join(out_dir, "cornell_box.gltf"))
 
 
 if __name__ == "__main__":

@@ -6,7 +6,8 @@ A 4 m × 4 m Lambertian plane (ρ = 0.5) at y = 0 facing +y; a white point light
 centre looking straight down. Irradiance at a floor point at horizontal distance r:
 E(r) = I·h / (h² + r²)^(3/2) W/m², radiance L = ρ/π · E (1/(2π) W/(sr·m²) below the light).
 
-Run from anywhere:  /usr/bin/python3 content/point_over_plane/make_point_over_plane.py
+Run from anywhere (optional argument: another output path):
+    /usr/bin/python3 content/point_over_plane/make_point_over_plane.py
 """
 import math
 import os
@@ -42,7 +43,7 @@ def main():
     h = math.sqrt(0.5)
     gltf.node({"name": "camera", "camera": 0, "rotation": [-h, 0.0, 0.0, h],
                "translation": [0.0, CAMERA_HEIGHT, 0.0]})
-    gltf.write(os.path.join(out_dir, "point_over_plane.gltf"))
+    gltf.write(sys.argv[1] if len(sys.argv) > 1 else os.path.join(out_dir, "point_over_plane.gltf"))
 
 
 if __name__ == "__main__":
