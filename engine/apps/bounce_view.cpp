@@ -1,7 +1,8 @@
 // bounce-view: the scene in a window (GLFW, OpenGL 3.3 core) with a fly camera. Controls:
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
-//   (PNG + EXR), Esc quits. The title shows the camera, the frame time and the speed.
+//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. The title shows the camera,
+//   the frame time, the speed and the exposure.
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
 
@@ -95,8 +96,10 @@ class Viewer {
       if (now - titleShown > std::chrono::milliseconds(250)) {
         titleShown = now;
         char title[256];
-        std::snprintf(title, sizeof title, "bounce-view — %s — camera '%s' — %.1f ms — %.2f m/s",
-                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(), frameMs, speed_);
+        std::snprintf(title, sizeof title,
+                      "bounce-view — %s — camera '%s' — %.1f ms — %.2f m/s — %+.1f EV",
+                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(), frameMs, speed_,
+                      exposure_);
         window_.setTitle(title);
       }
     }
@@ -121,6 +124,8 @@ class Viewer {
       if (key == Key::Plus) speed_ *= 1.5f;
       if (key == Key::Minus) speed_ /= 1.5f;
       if (key == Key::F12) saveRequested_ = true;
+      if (key == Key::LeftBracket) exposure_ -= 0.5f;
+      if (key == Key::RightBracket) exposure_ += 0.5f;
     }
     speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
     const auto axis = [&](Key plus, Key minus) {
@@ -185,7 +190,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
-      "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, Esc quits.",
+      "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
+      "exposure, Esc quits.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj)")->required();
   app.add_option("--camera", options.camera, "start at this camera (default: the first)");

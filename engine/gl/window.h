@@ -26,6 +26,8 @@ enum class Key {
   Plus,
   Minus,
   LeftShift,
+  LeftBracket,
+  RightBracket,
   Digit1,
   Digit2,
   Digit3,

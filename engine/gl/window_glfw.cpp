@@ -27,17 +27,29 @@ GLADapiproc glfwProc(const char* name) {
   return glfwGetProcAddress(name);
 }
 
-constexpr std::array<std::pair<Key, int>, 21> kKeyCodes = {{
-    {Key::W, GLFW_KEY_W},           {Key::A, GLFW_KEY_A},
-    {Key::S, GLFW_KEY_S},           {Key::D, GLFW_KEY_D},
-    {Key::Q, GLFW_KEY_Q},           {Key::E, GLFW_KEY_E},
-    {Key::Tab, GLFW_KEY_TAB},       {Key::F12, GLFW_KEY_F12},
-    {Key::Escape, GLFW_KEY_ESCAPE}, {Key::Plus, GLFW_KEY_EQUAL},
-    {Key::Minus, GLFW_KEY_MINUS},   {Key::LeftShift, GLFW_KEY_LEFT_SHIFT},
-    {Key::Digit1, GLFW_KEY_1},      {Key::Digit2, GLFW_KEY_2},
-    {Key::Digit3, GLFW_KEY_3},      {Key::Digit4, GLFW_KEY_4},
-    {Key::Digit5, GLFW_KEY_5},      {Key::Digit6, GLFW_KEY_6},
-    {Key::Digit7, GLFW_KEY_7},      {Key::Digit8, GLFW_KEY_8},
+constexpr std::array<std::pair<Key, int>, 23> kKeyCodes = {{
+    {Key::W, GLFW_KEY_W},
+    {Key::A, GLFW_KEY_A},
+    {Key::S, GLFW_KEY_S},
+    {Key::D, GLFW_KEY_D},
+    {Key::Q, GLFW_KEY_Q},
+    {Key::E, GLFW_KEY_E},
+    {Key::Tab, GLFW_KEY_TAB},
+    {Key::F12, GLFW_KEY_F12},
+    {Key::Escape, GLFW_KEY_ESCAPE},
+    {Key::Plus, GLFW_KEY_EQUAL},
+    {Key::Minus, GLFW_KEY_MINUS},
+    {Key::LeftShift, GLFW_KEY_LEFT_SHIFT},
+    {Key::LeftBracket, GLFW_KEY_LEFT_BRACKET},
+    {Key::RightBracket, GLFW_KEY_RIGHT_BRACKET},
+    {Key::Digit1, GLFW_KEY_1},
+    {Key::Digit2, GLFW_KEY_2},
+    {Key::Digit3, GLFW_KEY_3},
+    {Key::Digit4, GLFW_KEY_4},
+    {Key::Digit5, GLFW_KEY_5},
+    {Key::Digit6, GLFW_KEY_6},
+    {Key::Digit7, GLFW_KEY_7},
+    {Key::Digit8, GLFW_KEY_8},
     {Key::Digit9, GLFW_KEY_9},
 }};
 
