@@ -2,13 +2,18 @@
 // find which world point each pixel sees (the pixel-centre ray, as the rasterizer samples it).
 #pragma once
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "gl/context.h"
 #include "gl/shader.h"
+#include "image/image_io.h"
 #include "render/forward_renderer.h"
 #include "scene/scene.h"
 
@@ -72,10 +77,18 @@ inline gl::Context& testContext() {
   return *context;
 }
 
+// Renders offscreen and returns the pixels as they come back from the EXR file bounce-render
+// would write (32-bit float, so the round trip is exact).
 inline Image render(const Scene& scene, const Camera& camera, int width, int height) {
   testContext();
   ForwardRenderer renderer(scene, gl::shaderDirectory());
-  return renderer.renderImage(camera, width, height);
+  const Image image = renderer.renderImage(camera, width, height);
+  const std::filesystem::path exr = std::filesystem::temp_directory_path() /
+                                    ("bounce-render-test-" + std::to_string(::getpid()) + ".exr");
+  writeExr(exr, image);
+  Image stored = readExr(exr);
+  std::filesystem::remove(exr);
+  return stored;
 }
 
 }  // namespace bounce::test
