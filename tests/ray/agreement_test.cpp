@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 #include <vector>
 
 #include "ray/ray_kernel.h"
@@ -122,6 +123,32 @@ TEST(BackendAgreement, ClosedMeshesInARoom) {
   testing::addTriangleSoup(g, 2000, glm::vec3(-9), glm::vec3(9), 0.5f, 4);
   testing::finish(g);
   expectAgreement(compare(g, mixedRays(g, {0, 4, 9}, {0, -2, 0}, 6.0f)));
+}
+
+// Queries are const and thread-safe: two threads sharing one kernel (each setting its own
+// FTZ/DAZ for Embree) get exactly the answers of a single thread.
+TEST(BackendAgreement, ConcurrentQueriesMatchSingleThreaded) {
+  WorldGeometry g;
+  testing::addIcosphere(g, 4, {0, 0, 0}, 2.0f);
+  testing::addTriangleSoup(g, 5000, glm::vec3(-4), glm::vec3(4), 0.5f, 9);
+  testing::finish(g);
+  const std::vector<Ray> rays = testing::surfaceRays(g, 20000, 3);
+  for (const RayBackend backend : {RayBackend::Embree, RayBackend::Bvh}) {
+    const auto kernel = makeRayKernel(g, backend);
+    std::vector<Hit> expected(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) expected[i] = kernel->intersect(rays[i]);
+    std::vector<Hit> concurrent(rays.size());
+    const auto half = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) concurrent[i] = kernel->intersect(rays[i]);
+    };
+    std::thread other(half, 0, rays.size() / 2);
+    half(rays.size() / 2, rays.size());
+    other.join();
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      ASSERT_EQ(concurrent[i].triangle, expected[i].triangle) << kernel->name() << " ray " << i;
+      ASSERT_EQ(concurrent[i].t, expected[i].t);
+    }
+  }
 }
 
 // A content scene, looked at by its own camera, or else from in front of its bounds (+z).
