@@ -19,7 +19,7 @@ bool bitIdentical(const Image& a, const Image& b) {
 }
 
 // A corridor with an area emitter plus a point and a spot light: every estimator path runs.
-test::World busyWorld(RayBackend backend) {
+test::World busyWorld() {
   test::World world = test::corridor();
   Light point;
   point.type = LightType::Point;
@@ -30,12 +30,12 @@ test::World busyWorld(RayBackend backend) {
   spot.position = {3.5f, 0.5f, 1.9f};
   spot.direction = glm::normalize(glm::vec3(-0.5f, 0.2f, -1.0f));
   world.scene.lights = {point, spot};
-  world.build(backend);
   return world;
 }
 
 TEST(CameraRender, SameSeedIsBitIdenticalWithOneAndTwoThreads) {
-  const test::World world = busyWorld(RayBackend::Embree);
+  test::World world = busyWorld();
+  world.build(RayBackend::Embree);
   const Camera camera = test::corridorCamera();
   TraceSettings settings;
   settings.spp = 16;
@@ -66,13 +66,14 @@ TEST(CameraRender, SameSeedIsBitIdenticalWithOneAndTwoThreads) {
 // Embree and our BVH find the same hits up to float ties, so the two images estimate the same
 // value: image means within 5 combined standard errors (other seeds, so independent).
 TEST(CameraRender, EmbreeAndBvhBackendsAgree) {
-  std::unique_ptr<test::World> bvh;
+  const auto bvh = std::make_unique<test::World>(busyWorld());
   try {
-    bvh = std::make_unique<test::World>(busyWorld(RayBackend::Bvh));
+    bvh->build(RayBackend::Bvh);
   } catch (const std::exception& e) {
     GTEST_SKIP() << "BVH backend unavailable: " << e.what();
   }
-  const test::World embree = busyWorld(RayBackend::Embree);
+  test::World embree = busyWorld();
+  embree.build(RayBackend::Embree);
   const Camera camera = test::corridorCamera();
   TraceSettings settings;
   settings.spp = 64;

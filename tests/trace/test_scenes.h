@@ -28,7 +28,8 @@ void addInwardBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material);
 // A pinhole camera at `eye` looking at `target`.
 Camera lookAt(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov);
 
-// A scene plus what tracing it needs; build() after the scene is complete.
+// A scene plus what tracing it needs. Call build() last, once the World is where it will stay:
+// the kernel refers to `geometry`, so moving a built World leaves the kernel dangling.
 struct World {
   Scene scene;
   WorldGeometry geometry;
