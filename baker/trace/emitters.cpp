@@ -24,6 +24,7 @@ EmitterTable::EmitterTable(const Scene& scene, const WorldGeometry& geometry)
     emitterOfTriangle_[t] = static_cast<uint32_t>(triangles_.size());
     triangles_.push_back(t);
     areas_.push_back(area);
+    normals_.push_back(glm::normalize(geometry.triangleCross(t)));
     radiance_.push_back(le);
     doubleSided_.push_back(material.doubleSided ? 1 : 0);
     weights.push_back(weight);
@@ -40,7 +41,7 @@ EmitterSample EmitterTable::sample(glm::vec2 u, glm::vec2 v) const {
   EmitterSample s;
   s.position = (1.0f - b.x - b.y) * geometry_.positions[tri.x] + b.x * geometry_.positions[tri.y] +
                b.y * geometry_.positions[tri.z];
-  s.normal = glm::normalize(geometry_.triangleCross(t));
+  s.normal = normals_[e];
   s.radiance = radiance_[e];
   s.doubleSided = doubleSided_[e] != 0;
   s.pdfArea = table_.pmf(e) / areas_[e];

@@ -42,6 +42,7 @@ class EmitterTable {
   const WorldGeometry& geometry_;
   std::vector<uint32_t> triangles_;  // emitter index -> triangle
   std::vector<float> areas_;         // m²
+  std::vector<glm::vec3> normals_;   // unit front-face normals
   std::vector<glm::vec3> radiance_;  // Le
   std::vector<uint8_t> doubleSided_;
   std::vector<uint32_t> emitterOfTriangle_;  // triangle -> emitter index or kNone

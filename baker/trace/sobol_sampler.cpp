@@ -72,18 +72,30 @@ uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
 SobolSampler::SobolSampler(uint32_t seed, uint32_t pixel)
     : patternSeed_(hashKeys(seed, pixel, 0x50b01u)) {}
 
+glm::uvec3 SobolSampler::pairSeeds(uint32_t d) {
+  auto compute = [this](uint32_t dim) {
+    const uint32_t pairSeed = hashCombine(patternSeed_, dim);
+    return glm::uvec3(pairSeed, hashCombine(pairSeed, 1u), hashCombine(pairSeed, 2u));
+  };
+  if (d >= kCachedPairs) return compute(d);
+  if (!((cached_ >> d) & 1u)) {
+    seeds_[d] = compute(d);
+    cached_ |= 1u << d;
+  }
+  return seeds_[d];
+}
+
 glm::uvec2 SobolSampler::pairBits() {
-  const uint32_t pairSeed = hashCombine(patternSeed_, dimension_++);
+  const glm::uvec3 seeds = pairSeeds(dimension_++);
   // Shuffling the index by a nested uniform scramble keeps every power-of-two prefix a
   // (0,m,2)-net (the low m bits of the shuffled index are a permutation of the low m bits),
   // while decorrelating this pair from the others.
   //   shuffled = nestedUniformScramble(index) = reverse(LK(reverse(index)))
   //   x = nestedUniformScramble(sobolDimension0(shuffled)) = reverse(LK(shuffled))
   // since sobolDimension0 = reverse: written with the reversals that cancel removed.
-  const uint32_t reversedShuffled = laineKarrasPermutation(reverseBits(index_), pairSeed);
-  const uint32_t shuffled = reverseBits(reversedShuffled);
-  return {reverseBits(laineKarrasPermutation(shuffled, hashCombine(pairSeed, 1u))),
-          nestedUniformScramble(sobolDimension1(shuffled), hashCombine(pairSeed, 2u))};
+  const uint32_t shuffled = reverseBits(laineKarrasPermutation(reverseBits(index_), seeds.x));
+  return {reverseBits(laineKarrasPermutation(shuffled, seeds.y)),
+          nestedUniformScramble(sobolDimension1(shuffled), seeds.z)};
 }
 
 glm::vec2 SobolSampler::get2D() {

@@ -13,6 +13,7 @@
 //     thread count or schedule.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -48,10 +49,16 @@ class SobolSampler {
 
  private:
   glm::uvec2 pairBits();
+  // The scramble seeds of pair d (index shuffle, x, y): functions of (seed, pixel, d) only,
+  // so they are cached for the first pairs and reused by every sample of the pattern.
+  glm::uvec3 pairSeeds(uint32_t d);
 
+  static constexpr uint32_t kCachedPairs = 32;
   uint32_t patternSeed_;
   uint32_t index_ = 0;
   uint32_t dimension_ = 0;
+  uint32_t cached_ = 0;  // bit d set: seeds_[d] is valid
+  std::array<glm::uvec3, kCachedPairs> seeds_;
 };
 
 }  // namespace bounce
