@@ -10,6 +10,7 @@
 
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
+#include "scene/framing.h"
 #include "scene/load.h"
 #include "scene/world_geometry.h"
 #include "trace/camera_render.h"
@@ -42,10 +43,16 @@ struct Options {
 
 int run(const Options& o) {
   const bounce::Scene scene = bounce::loadScene(o.scene);
-  if (scene.cameras.empty()) {
-    throw std::runtime_error(o.scene.string() + ": the scene has no camera");
-  }
-  const bounce::Camera& camera = scene.cameras[o.camera.empty() ? 0 : scene.findCamera(o.camera)];
+  // Without a camera in the file, frame the scene as bounce-render does (square unless the
+  // image size is given).
+  const float imageAspect = o.width > 0 && o.height > 0
+                                ? static_cast<float>(o.width) / static_cast<float>(o.height)
+                                : 1.0f;
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, o.camera, imageAspect, &framed);
+  if (framed)
+    std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
+                 o.scene.c_str());
   // Default size: 512 rows, width from the camera's aspect ratio when it has one.
   int width = o.width, height = o.height;
   const float aspect = camera.aspect > 0.0f ? camera.aspect : 1.0f;

@@ -13,6 +13,7 @@
 #include "image/image_io.h"
 #include "render/forward_renderer.h"
 #include "render/view.h"
+#include "scene/framing.h"
 #include "scene/load.h"
 
 namespace {
@@ -31,16 +32,11 @@ struct Options {
 int run(const Options& options) {
   const bounce::Scene scene = bounce::loadScene(options.scene);
   const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-  bounce::Camera camera;
-  if (!options.camera.empty()) {
-    camera = scene.cameras[scene.findCamera(options.camera)];
-  } else if (!scene.cameras.empty()) {
-    camera = scene.cameras.front();
-  } else {
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
+  if (framed)
     std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
                  options.scene.c_str());
-    camera = bounce::frameBounds(bounce::sceneBounds(scene), aspect);
-  }
 
   std::optional<bounce::gl::ContextBackend> backend;
   if (options.context == "osmesa") backend = bounce::gl::ContextBackend::OSMesa;

@@ -22,6 +22,7 @@
 #include "render/forward_renderer.h"
 #include "render/tonemap_pass.h"
 #include "render/view.h"
+#include "scene/framing.h"
 #include "scene/load.h"
 
 namespace {

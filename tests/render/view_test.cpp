@@ -8,6 +8,7 @@
 
 #include "render/fly_camera.h"
 #include "render/view.h"
+#include "scene/framing.h"
 #include "test_scenes.h"
 
 namespace bounce::test {

@@ -107,6 +107,22 @@ TEST(TraceApp, CornellBoxRedWallOnTheLeft) {
   EXPECT_GT(right.g, 2.0 * right.r);
 }
 
+// OBJ files bring no camera: bounce-trace frames the scene's bounds (scene/framing.h) as
+// bounce-render does. McGuire's box is open towards +Z, so the framed camera (on the +Z side,
+// looking down −Z) sees the lit interior: the image is finite and not black.
+TEST(TraceApp, SceneWithoutCameraIsFramed) {
+  const fs::path obj =
+      fs::path(BOUNCE_SHARED_SCENES) / "mcguire_cornell_box" / "CornellBox-Original.obj";
+  if (!fs::exists(obj)) GTEST_SKIP() << obj << " not found";
+  const fs::path out = scratch("framed.exr");
+  ASSERT_EQ(run(obj.string() + " --width 8 --height 8 --spp 4 --out " + out.string()), 0);
+  const Image image = readExr(out);
+  ASSERT_TRUE(image.allFinite());
+  double sum = 0.0;
+  for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
+  EXPECT_GT(sum, 0.0);
+}
+
 TEST(TraceApp, BadInputFailsWithNonZeroExit) {
   const fs::path out = scratch("bad.exr");
   EXPECT_NE(run("/nonexistent/scene.gltf --out " + out.string()), 0);
