@@ -17,3 +17,7 @@ if(BOUNCE_BUILD_TESTS)
   find_package(GTest REQUIRED)
   find_package(benchmark REQUIRED)
 endif()
+if(NOT EXISTS ${BOUNCE_SHARED_SCENES}/mcguire_cornell_box)
+  message(WARNING "BOUNCE_SHARED_SCENES=${BOUNCE_SHARED_SCENES} holds no shared scenes: the tests "
+                  "that load them will fail. Point it at the shared/scenes folder.")
+endif()
