@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "ray/bvh_kernel.h"
-#include "ray/embree_kernel.h"
+#include "ray/ray_kernel_bvh.h"
+#include "ray/ray_kernel_embree.h"
 
 namespace bounce {
 

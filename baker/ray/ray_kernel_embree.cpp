@@ -1,4 +1,4 @@
-#include "ray/embree_kernel.h"
+#include "ray/ray_kernel_embree.h"
 
 #include <pmmintrin.h>
 #include <xmmintrin.h>

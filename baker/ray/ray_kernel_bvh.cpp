@@ -1,4 +1,4 @@
-#include "ray/bvh_kernel.h"
+#include "ray/ray_kernel_bvh.h"
 
 #include <algorithm>
 #include <cmath>
