@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "support/form_factors.h"
 #include "test_scenes.h"
 
 namespace bounce::test {
@@ -17,23 +18,6 @@ constexpr int kSize = 64;
 constexpr double kPi = std::numbers::pi;
 const glm::vec3 kAlbedo(0.8f, 0.5f, 0.25f);
 const glm::vec3 kEmission(6.0f, 3.0f, 1.5f);  // W/(sr·m²)
-
-// Form factor from a point to a parallel rectangle X × Y at height h with one corner straight
-// above the point (Howell's catalogue, configuration B-1; checked against quadrature):
-//   F = 1/(2π) [x/√(1+x²) atan(y/√(1+x²)) + y/√(1+y²) atan(x/√(1+y²))],  x = X/h, y = Y/h.
-double parallelCornerFormFactor(double X, double Y, double h) {
-  const double x = X / h, y = Y / h;
-  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
-  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * kPi);
-}
-
-// Point to a rectangle in a perpendicular plane: the rectangle stands at distance d, spans W
-// sideways from the point's foot and H up from the point's own plane (Howell B-3):
-//   F = 1/(2π) [atan(W/d) − d/√(d²+H²) · atan(W/√(d²+H²))].
-double perpendicularFormFactor(double d, double H, double W) {
-  const double s = std::sqrt(d * d + H * H);
-  return (std::atan(W / d) - d / s * std::atan(W / s)) / (2 * kPi);
-}
 
 // A 2a × 2a square at height h centred above the origin, seen from floor point p: it splits
 // into four rectangles with a corner above p, so F = Σ F_corner.

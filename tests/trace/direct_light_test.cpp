@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/light_falloff.h"
+#include "support/form_factors.h"
 #include "test_scenes.h"
 
 namespace bounce {
@@ -12,6 +13,7 @@ namespace {
 
 using test::addMaterial;
 using test::addQuad;
+using test::parallelRectangleFormFactor;
 
 constexpr double kPiD = 3.14159265358979323846;
 const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
@@ -109,20 +111,6 @@ TEST(DirectLight, DirectionalLightOverPlane) {
   EXPECT_EQ(shadow.mean, glm::dvec3(0.0));
 }
 
-// View factor from a differential area to a parallel rectangle [0,a]×[0,b] at distance c,
-// with the normal through a corner (e.g. Howell's catalogue, B-3):
-//   F = 1/(2π) [ A/√(1+A²) atan(B/√(1+A²)) + B/√(1+B²) atan(A/√(1+B²)) ], A = a/c, B = b/c.
-// Odd in a and b, so any rectangle follows by inclusion–exclusion of signed corners.
-double cornerFactor(double a, double b, double c) {
-  const double A = a / c, B = b / c;
-  const double sa = std::sqrt(1 + A * A), sb = std::sqrt(1 + B * B);
-  return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2 * kPiD);
-}
-double rectangleFactor(double x, double y, double x0, double x1, double y0, double y1, double c) {
-  return cornerFactor(x1 - x, y1 - y, c) - cornerFactor(x0 - x, y1 - y, c) -
-         cornerFactor(x1 - x, y0 - y, c) + cornerFactor(x0 - x, y0 - y, c);
-}
-
 // A 1 m × 1 m emitter (radiance Le, facing down, albedo 0) 1 m over the plane: the plane
 // reflects Lo = ρ · Le · F. Light sampling, BRDF sampling and MIS must all agree with it
 // within 5 standard errors of the estimate (sample variance of the 4096 samples).
@@ -139,7 +127,7 @@ TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
     settings.strategy = strategy;
     const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
     for (glm::dvec2 at : {glm::dvec2(0, 0), glm::dvec2(0.4, 0.3), glm::dvec2(1.5, 0.2)}) {
-      const double f = rectangleFactor(at.x, at.y, -0.5, 0.5, -0.5, 0.5, 1.0);
+      const double f = parallelRectangleFormFactor(at.x, at.y, -0.5, 0.5, -0.5, 0.5, 1.0);
       const glm::dvec3 expected = kPlaneAlbedo * le * f;
       Ray ray = downOnto(at.x, at.y);
       ray.origin.z = 0.5f;  // below the emitter
@@ -173,8 +161,9 @@ TEST(DirectLight, OnlyDoubleSidedEmittersEmitFromTheirBackFace) {
       ray.origin.z = 0.5f;
       const test::Estimate e = test::estimateLi(tracer, ray, 5u, 0u, 2048);
       const glm::dvec3 expected =
-          doubleSided ? kPlaneAlbedo * le * rectangleFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0)
-                      : glm::dvec3(0.0);
+          doubleSided
+              ? kPlaneAlbedo * le * parallelRectangleFormFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0)
+              : glm::dvec3(0.0);
       EXPECT_TRUE(test::agreeWithin(e.mean, e.standardError(), expected, glm::dvec3(0), 5.0))
           << "double-sided " << doubleSided << " strategy " << static_cast<int>(strategy);
       if (!doubleSided) {
@@ -218,7 +207,8 @@ TEST(DirectLight, IrradianceAtAPoint) {
     m2 += delta * (value - mean);
   }
   const glm::dvec3 se = glm::sqrt(m2 / static_cast<double>(n - 1) / static_cast<double>(n));
-  const glm::dvec3 exact = kPiD * le * rectangleFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0);
+  const glm::dvec3 exact =
+      kPiD * le * parallelRectangleFormFactor(0.4, 0.3, -0.5, 0.5, -0.5, 0.5, 1.0);
   EXPECT_TRUE(test::agreeWithin(mean, se, exact, glm::dvec3(0.0), 5.0));
 }
 
