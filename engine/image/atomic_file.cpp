@@ -22,12 +22,17 @@ void writeFileAtomically(const std::filesystem::path& path, std::span<const unsi
 
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const int writeErrno = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (!written || !closed) {
+  // Each step keeps the errno of the call that failed: small files only meet a full disk or a
+  // size limit at the flush. fsync before the rename, so that after a crash the name never
+  // points at a file whose data never reached the disk.
+  int failure = 0;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) failure = errno;
+  if (!failure && std::fflush(f) != 0) failure = errno;
+  if (!failure && ::fsync(::fileno(f)) != 0) failure = errno;
+  if (std::fclose(f) != 0 && !failure) failure = errno;
+  if (failure) {
     fs::remove(tmp, ec);
-    throw std::runtime_error(path.string() + ": write failed: " + std::strerror(writeErrno));
+    throw std::runtime_error(path.string() + ": write failed: " + std::strerror(failure));
   }
   fs::rename(tmp, path, ec);
   if (ec) {

@@ -1,8 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 
 namespace fs = std::filesystem;
@@ -72,4 +77,27 @@ TEST(ImageIo, MissingExrIsAnErrorNamingTheFile) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/x.exr"), std::string::npos);
   }
+}
+
+// A write that fails at the flush (here: a file-size limit of 100 bytes, met only when stdio
+// flushes its buffer) reports the real reason and leaves nothing behind.
+TEST(ImageIo, FailedFlushReportsItsReasonAndLeavesNoFile) {
+  const fs::path dir = freshDir("fsize");
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);  // get EFBIG, not a signal
+  rlimit small = saved;
+  small.rlim_cur = 100;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    bounce::writeFileAtomically(dir / "big.bin", std::vector<unsigned char>(1000, 7));
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previousHandler);
+  EXPECT_NE(message.find("big.bin"), std::string::npos) << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;
+  EXPECT_EQ(countEntries(dir), 0);
 }
