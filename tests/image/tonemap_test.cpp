@@ -24,6 +24,13 @@ TEST(ToneMap, FilmicCurveIsMonotonicFromZeroToOne) {
   }
 }
 
+// Pinned values of the curve x(2.51x+0.03)/(x(2.43x+0.59)+0.14), computed by hand.
+TEST(ToneMap, FilmicCurveHasItsClosedForm) {
+  EXPECT_NEAR(bounce::filmicCurve(1.0f), 2.54f / 3.16f, 1e-6f);
+  EXPECT_NEAR(bounce::filmicCurve(0.5f), 0.5f * 1.285f / (0.5f * 1.805f + 0.14f), 1e-6f);
+  EXPECT_NEAR(bounce::filmicCurve(0.18f), 0.18f * 0.4818f / (0.18f * 1.0274f + 0.14f), 1e-6f);
+}
+
 TEST(ToneMap, ExposureDoublesPerEv) {
   // +1 EV on radiance L equals EV 0 on 2L.
   const glm::vec3 a = bounce::toneMap(glm::vec3(0.2f, 0.4f, 0.1f), 1.0f);

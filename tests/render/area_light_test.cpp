@@ -38,7 +38,8 @@ Material emitter() {
 
 void expectNear(glm::vec3 actual, glm::vec3 expected, int x, int y) {
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(actual[c], expected[c], 0.01f * std::abs(expected[c]) + 1e-7f)
+    // 1e-3 relative: see radiometry_test.cpp (GLSL leaves acos/atan precision to the driver).
+    EXPECT_NEAR(actual[c], expected[c], 1e-3f * std::abs(expected[c]) + 1e-7f)
         << "pixel (" << x << "," << y << ") channel " << c;
 }
 
