@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   std::string imagePath, referencePath, maskPath, errorImagePath;
   std::optional<float> errorScale;
   bool json = false;
+  bool allowNonFinite = false;
   app.add_option("A", imagePath, "image to assess (linear EXR)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -59,6 +60,9 @@ int main(int argc, char** argv) {
   app.add_option("--mask", maskPath, "PNG mask: pixels whose value is 0 are excluded")
       ->check(CLI::ExistingFile);
   app.add_flag("--json", json, "print the metrics as JSON");
+  app.add_flag(
+      "--allow-nonfinite", allowNonFinite,
+      "exit 0 even when the image has NaN/Inf pixels (they are excluded from the metrics)");
   app.add_option("--error-image", errorImagePath,
                  "write a false-colour PNG of |a-b|/(|b|+0.01) (blue 0 ... red >= scale)");
   app.add_option("--error-scale", errorScale,
@@ -78,6 +82,7 @@ int main(int argc, char** argv) {
                           {"reference", referencePath},
                           {"comparedPixels", error.comparedPixels},
                           {"nonFinitePixels", error.nonFinitePixels},
+                          {"nonFiniteInImage", error.nonFiniteInImage},
                           {"relMseEpsilon", bounce::kRelMseEpsilon},
                           {"relErrorEpsilon", bounce::kRelErrorEpsilon},
                           {"channels",
@@ -112,6 +117,20 @@ int main(int argc, char** argv) {
       }
     }
     if (json) std::cout << out.dump(2) << "\n";
+    // Metrics over no pixel, or over only the finite part of a broken render, would read as
+    // "no error": both fail unless the caller accepts them.
+    if (error.comparedPixels == 0) {
+      std::cerr << "bounce-compare: " << imagePath << " vs " << referencePath
+                << ": no pixel to compare (" << error.nonFinitePixels
+                << " non-finite, the rest masked out)\n";
+      return 1;
+    }
+    if (error.nonFiniteInImage > 0 && !allowNonFinite) {
+      std::cerr << "bounce-compare: " << imagePath << ": " << error.nonFiniteInImage
+                << " pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite accepts "
+                   "this)\n";
+      return 1;
+    }
   } catch (const std::invalid_argument& e) {  // sizes differ
     std::cerr << "bounce-compare: " << imagePath << " vs " << referencePath << ": " << e.what()
               << "\n";

@@ -77,16 +77,22 @@ Mask readMask(const std::filesystem::path& path) {
   if (pixels == nullptr) {
     throw std::runtime_error(path.string() + ": cannot read mask: " + stbi_failure_reason());
   }
+  Mask mask = maskFromPixels(pixels, width, height, channels);
+  stbi_image_free(pixels);
+  return mask;
+}
+
+Mask maskFromPixels(const unsigned char* pixels, int width, int height, int channels) {
   Mask mask{
       width, height,
       std::vector<uint8_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))};
-  const auto c = static_cast<std::size_t>(channels);
+  const auto stride = static_cast<std::size_t>(channels);
+  const std::size_t colours = channels >= 3 ? 3 : 1;  // grey(+alpha) or RGB(+alpha)
   for (std::size_t i = 0; i < mask.keep.size(); ++i) {
     bool any = false;
-    for (std::size_t k = 0; k < c; ++k) any = any || pixels[i * c + k] != 0;
+    for (std::size_t k = 0; k < colours; ++k) any = any || pixels[i * stride + k] != 0;
     mask.keep[i] = any ? 1 : 0;
   }
-  stbi_image_free(pixels);
   return mask;
 }
 
@@ -100,6 +106,7 @@ ImageError compareImages(const Image& a, const Image& ref, const Mask* mask) {
     const glm::vec3 pa = a.pixels[i], pb = ref.pixels[i];
     if (!finite(pa) || !finite(pb)) {
       ++result.nonFinitePixels;
+      if (!finite(pa)) ++result.nonFiniteInImage;
       continue;
     }
     ++result.comparedPixels;

@@ -35,6 +35,7 @@ struct ImageError {
   ChannelError all;                      // over every channel value of the compared pixels
   std::size_t comparedPixels = 0;        // inside the mask, finite in both images
   std::size_t nonFinitePixels = 0;       // inside the mask, NaN/Inf in a or ref (excluded)
+  std::size_t nonFiniteInImage = 0;      // of those, the ones NaN/Inf in a (a broken render)
 };
 
 // Which pixels to compare: keep[i] != 0 compares pixel i (rows top first, like Image).
@@ -44,9 +45,13 @@ struct Mask {
   std::vector<uint8_t> keep;
 };
 
-// Reads a mask image (PNG, …): a pixel whose channels are all 0 is excluded.
+// Reads a mask image (PNG, …): a pixel whose colour channels are all 0 is excluded.
 // Throws std::runtime_error naming the file and the reason.
 Mask readMask(const std::filesystem::path& path);
+// The same from decoded 8-bit pixels: 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA) channels.
+// A pixel is kept when a colour channel is non-zero; alpha is ignored, so an opaque black
+// pixel of an RGBA mask excludes its pixel.
+Mask maskFromPixels(const unsigned char* pixels, int width, int height, int channels);
 
 // Throws std::invalid_argument when the sizes of a, ref (and mask) differ.
 ImageError compareImages(const Image& a, const Image& ref, const Mask* mask = nullptr);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "image/image_compare.h"
@@ -72,6 +73,26 @@ TEST_F(CompareCli, SizeMismatchFailsWithAMessage) {
   EXPECT_NE(run(path("a.exr") + " " + path("b.exr")), 0);
   EXPECT_NE(read("stderr.txt").find("sizes differ"), std::string::npos) << read("stderr.txt");
   EXPECT_NE(run(path("absent.exr") + " " + path("b.exr")), 0);
+}
+
+// A broken render must not pass as "no error": all-NaN fails (nothing to compare), partly NaN
+// fails unless --allow-nonfinite, and the message names the image.
+TEST_F(CompareCli, NonFiniteImageFails) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  writeExr(path("ref.exr"), Image(4, 4, glm::vec3(1.0f)));
+  writeExr(path("nan.exr"), Image(4, 4, glm::vec3(nan)));
+  EXPECT_NE(run(path("nan.exr") + " " + path("ref.exr")), 0);
+  EXPECT_NE(read("stderr.txt").find("nan.exr"), std::string::npos) << read("stderr.txt");
+
+  Image half(4, 4, glm::vec3(1.0f));
+  for (int x = 0; x < 4; ++x) half.at(x, 0) = glm::vec3(nan);
+  writeExr(path("half.exr"), half);
+  EXPECT_NE(run(path("half.exr") + " " + path("ref.exr")), 0);
+  EXPECT_NE(read("stderr.txt").find("half.exr"), std::string::npos) << read("stderr.txt");
+  EXPECT_EQ(run(path("half.exr") + " " + path("ref.exr") + " --json --allow-nonfinite"), 0);
+  const nlohmann::json out = nlohmann::json::parse(read("stdout.txt"));
+  EXPECT_EQ(out["comparedPixels"], 12);
+  EXPECT_EQ(out["nonFiniteInImage"], 4);
 }
 
 }  // namespace

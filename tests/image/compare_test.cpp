@@ -104,5 +104,20 @@ TEST(CompareImages, FalseColourRamp) {
   EXPECT_EQ(colours.at(2, 0), glm::vec3(1, 0, 0));
 }
 
+// Masks keep a pixel when a colour channel is non-zero; alpha never keeps it (an opaque black
+// RGBA pixel is excluded), for every channel layout stb can return.
+TEST(CompareImages, MaskIgnoresAlpha) {
+  const unsigned char grey[] = {0, 255};
+  const unsigned char greyAlpha[] = {0, 255, 255, 255};
+  const unsigned char rgb[] = {0, 0, 0, 0, 9, 0};
+  const unsigned char rgba[] = {0, 0, 0, 255, 255, 255, 255, 255};
+  for (const auto& [pixels, channels] :
+       {std::pair{grey, 1}, std::pair{greyAlpha, 2}, std::pair{rgb, 3}, std::pair{rgba, 4}}) {
+    const Mask mask = maskFromPixels(pixels, 2, 1, channels);
+    EXPECT_EQ(mask.keep[0], 0) << channels << " channels";
+    EXPECT_EQ(mask.keep[1], 1) << channels << " channels";
+  }
+}
+
 }  // namespace
 }  // namespace bounce
