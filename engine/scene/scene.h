@@ -82,6 +82,8 @@ struct Light {
 // A pinhole camera looking down its local −Z axis with +Y up (the glTF convention).
 struct Camera {
   std::string name;
+  // Rigid: a rotation (orthonormal columns, determinant +1) plus the translation. Loaders strip
+  // a node's scale and shear, so znear/zfar stay metres in the world.
   glm::mat4 cameraToWorld{1.0f};
   float yfov = 0.6859f;  // full vertical field of view, radians
   float aspect = 0.0f;   // width/height; 0 means "take it from the image size"
