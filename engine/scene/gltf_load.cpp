@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -93,6 +94,28 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
   if (node.scale.size() == 3)
     s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
   return glm::mat4(t * r * s);  // T·R·S (glTF 2.0 §3.5.3)
+}
+
+// A camera node's world matrix without its scale and shear: the view direction (−Z) and the
+// up axis (+Y, made orthogonal to it) are kept, +X = Y × Z, so the result is a rotation plus
+// the node's translation — the right-handed glTF camera frame even under a mirroring parent.
+// The renderer's view matrix is its inverse: with scale left in, that inverse would rescale the
+// clip range znear..zfar (metres). Empty when the columns are zero or linearly dependent.
+std::optional<glm::mat4> rigidFrame(const glm::mat4& m) {
+  const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
+  const double det = glm::dot(x, glm::cross(y, z));
+  if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return std::nullopt;
+  const glm::dvec3 ez = glm::normalize(z);
+  const glm::dvec3 yPerp = y - glm::dot(y, ez) * ez;
+  if (!(glm::length(yPerp) > 0.0)) return std::nullopt;
+  const glm::dvec3 ey = glm::normalize(yPerp);
+  const glm::dvec3 ex = glm::cross(ey, ez);
+  glm::mat4 rigid(1.0f);
+  rigid[0] = glm::vec4(glm::vec3(ex), 0.0f);
+  rigid[1] = glm::vec4(glm::vec3(ey), 0.0f);
+  rigid[2] = glm::vec4(glm::vec3(ez), 0.0f);
+  rigid[3] = glm::vec4(glm::vec3(m[3]), 1.0f);
+  return rigid;
 }
 
 bool allFinite(const glm::mat4& m) {
@@ -331,7 +354,10 @@ class GltfBuilder {
     camera.name = !gc.name.empty()     ? gc.name
                   : !node.name.empty() ? node.name
                                        : "camera" + std::to_string(index);
-    camera.cameraToWorld = world;
+    const std::optional<glm::mat4> rigid = rigidFrame(world);
+    if (!rigid)
+      fail(what + ": camera '" + camera.name + "' has a degenerate transform (zero scale)");
+    camera.cameraToWorld = *rigid;
     camera.yfov = static_cast<float>(p.yfov);
     camera.aspect = static_cast<float>(p.aspectRatio);
     camera.znear = static_cast<float>(p.znear);
