@@ -274,10 +274,7 @@ class GltfBuilder {
       if (mesh.indices.size() % 3 != 0)
         fail(what + ": index count " + std::to_string(mesh.indices.size()) +
              " is not a multiple of 3");
-      for (glm::vec3& normal : mesh.normals) {
-        const float len = glm::length(normal);
-        normal = len > 0.0f ? normal / len : glm::vec3(0, 1, 0);
-      }
+      repairNormals(mesh);  // zero or non-finite NORMAL entries: from the adjacent triangles
       if (mesh.normals.empty()) makeFlatNormals(mesh);  // glTF 2.0 §3.7.2.1: flat when absent
       if (prim.material >= 0) {
         checkIndex(prim.material, model_.materials, what + " material");
