@@ -158,6 +158,14 @@ class GltfBuilder {
     }
   }
 
+  // `v` as a float; a value finite in double but beyond float's range (~3.4e38) is an error,
+  // not a silent infinity.
+  float toFloat(double v, const std::string& what) const {
+    const auto f = static_cast<float>(v);
+    if (!std::isfinite(f)) fail(what + " (" + std::to_string(v) + ") is not representable");
+    return f;
+  }
+
   glm::vec3 vec3(const std::vector<double>& v, glm::dvec3 fallback, const std::string& what) const {
     if (v.empty()) return glm::vec3(fallback);
     if (v.size() < 3) fail(what + " has fewer than 3 components");
@@ -194,7 +202,8 @@ class GltfBuilder {
     if (!m.emissiveFactor.empty()) {  // keep the exact doubles of the file
       const glm::dvec3 exact(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
       for (int c = 0; c < 3; ++c)
-        material.emission[c] = static_cast<float>(nitsToRadiance(exact[c] * strength));
+        material.emission[c] =
+            toFloat(nitsToRadiance(exact[c] * strength), what + ": emitted radiance");
     } else {
       material.emission = glm::vec3(factor);
     }
@@ -304,7 +313,9 @@ class GltfBuilder {
     const tinygltf::Light& gl = model_.lights[static_cast<std::size_t>(index)];
     Light light;
     light.name = gl.name.empty() ? "light" + std::to_string(index) : gl.name;
-    const glm::vec3 color = vec3(gl.color, glm::dvec3(1.0), what + " light color");
+    vec3(gl.color, glm::dvec3(1.0), what + " light color");  // checks: 3 finite, non-negative
+    const glm::dvec3 color =  // the file's exact doubles: color × intensity may exceed float
+        gl.color.empty() ? glm::dvec3(1.0) : glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
     if (!std::isfinite(gl.intensity) || gl.intensity < 0.0)
       fail(what + ": light intensity is negative or not finite");
     light.position = glm::vec3(world[3]);
@@ -315,12 +326,14 @@ class GltfBuilder {
     if (gl.type == "directional") {
       light.type = LightType::Directional;
       for (int c = 0; c < 3; ++c)
-        radiometric[c] = static_cast<float>(luxToWattsPerM2(color[c] * gl.intensity));
+        radiometric[c] =
+            toFloat(luxToWattsPerM2(color[c] * gl.intensity), what + ": light irradiance");
       light.irradiance = radiometric;
     } else if (gl.type == "point" || gl.type == "spot") {
       light.type = gl.type == "point" ? LightType::Point : LightType::Spot;
       for (int c = 0; c < 3; ++c)
-        radiometric[c] = static_cast<float>(candelaToWattsPerSr(color[c] * gl.intensity));
+        radiometric[c] =
+            toFloat(candelaToWattsPerSr(color[c] * gl.intensity), what + ": light intensity");
       light.intensity = radiometric;
       if (light.type == LightType::Spot) {
         const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
@@ -356,9 +369,12 @@ class GltfBuilder {
       fail(what + ": camera '" + camera.name + "' has a degenerate transform (zero scale)");
     camera.cameraToWorld = *rigid;
     camera.yfov = static_cast<float>(p.yfov);
-    camera.aspect = static_cast<float>(p.aspectRatio);
-    camera.znear = static_cast<float>(p.znear);
-    if (p.zfar > p.znear) camera.zfar = static_cast<float>(p.zfar);  // 0/absent: infinite → default
+    camera.aspect = toFloat(p.aspectRatio, what + ": camera aspectRatio");
+    camera.znear = toFloat(p.znear, what + ": camera znear");
+    // zfar 0/absent means infinite: a finite default that stays beyond znear (a projection
+    // with znear >= zfar is empty).
+    camera.zfar = p.zfar > p.znear ? toFloat(p.zfar, what + ": camera zfar")
+                                   : std::max(1000.0f, 2.0f * camera.znear);
     scene_.cameras.push_back(camera);
   }
 

@@ -124,5 +124,20 @@ TEST(GltfLight, DirectionIsUnitUnderScaledMirroredParents) {
   }
 }
 
+// glTF's absent zfar means an infinite far plane; the finite stand-in must stay beyond znear
+// even for a far znear (a projection with znear >= zfar clips everything).
+TEST(GltfCamera, AbsentZfarStaysBeyondZnear) {
+  test::TempDir dir;
+  for (const double znear : {0.1, 2000.0}) {
+    test::GltfFixture f = cameraAbove(nullptr);
+    f.doc["cameras"][0]["perspective"] = {{"yfov", 1.0}, {"znear", znear}};
+    f.writeGltf(dir / "nofar.gltf");
+    const Camera camera = loadScene(dir / "nofar.gltf").cameras.at(0);
+    EXPECT_FLOAT_EQ(camera.znear, static_cast<float>(znear));
+    EXPECT_GE(camera.zfar, 1000.0f);
+    EXPECT_GE(camera.zfar, 2.0f * camera.znear) << "znear " << znear;
+  }
+}
+
 }  // namespace
 }  // namespace bounce

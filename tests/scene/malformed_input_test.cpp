@@ -186,5 +186,34 @@ TEST(MalformedInput, ObjProblems) {
   expectLoadError(dir / "undefined.obj", "'b'");
 }
 
+// Finite in the file's double but beyond float's ~3.4e38 once converted: not representable in
+// the scene model, so an error rather than an infinite emitter, light or camera.
+TEST(MalformedInput, ValuesBeyondFloatRange) {
+  TempDir dir;
+  // 1e42 nits = 1e42/683 ≈ 1.5e39 W/(sr·m²) (1e40 nits would still fit: 1.5e37).
+  GltfFixture emissive = GltfFixture::triangle();
+  emissive.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  emissive.doc["materials"] = {
+      {{"name", "sun"},
+       {"emissiveFactor", {1.0, 1.0, 1.0}},
+       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e42}}}}}}};
+  emissive.writeGltf(dir / "strength.gltf");
+  expectLoadError(dir / "strength.gltf", "not representable");
+  for (const char* type : {"point", "directional"}) {
+    GltfFixture light = GltfFixture::triangle();
+    light.doc["extensions"] = {
+        {"KHR_lights_punctual", {{"lights", {{{"type", type}, {"intensity", 1e300}}}}}}};
+    light.doc["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+    light.writeGltf(dir / "intensity.gltf");
+    expectLoadError(dir / "intensity.gltf", "not representable");
+  }
+  GltfFixture camera = GltfFixture::triangle();
+  camera.doc["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 1e39}}}}};
+  camera.doc["nodes"][0]["camera"] = 0;
+  camera.writeGltf(dir / "znear.gltf");
+  expectLoadError(dir / "znear.gltf", "not representable");
+}
+
 }  // namespace
 }  // namespace bounce
