@@ -103,6 +103,9 @@ struct Scene {
   std::vector<Instance> instances;
   std::vector<Light> lights;
   std::vector<Camera> cameras;
+  // What the loader could not represent (e.g. an ignored emissiveTexture), one sentence each,
+  // for the tools to print.
+  std::vector<std::string> warnings;
 
   std::size_t triangleCount() const;
   // Index of the camera called `name`; throws std::invalid_argument naming the known cameras.
