@@ -32,18 +32,41 @@ Camera corridorCamera() {
   return lookAt({3.8f, 1.0f, 1.0f}, {2.5f, 1.0f, 0.0f}, {0, 0, 1}, kFov);
 }
 
-World slitRooms(bool withPartition) {
+namespace {
+
+// The slit rooms with walls of albedo `wallAlbedo`.
+World slitRoomsWithWalls(bool withPartition, float wallAlbedo) {
   World world;
-  const uint32_t wall = addMaterial(world.scene, glm::vec3(0.7f));
+  const uint32_t wall = addMaterial(world.scene, glm::vec3(wallAlbedo));
   addInwardBox(world.scene, {0, 0, 0}, {4, 2, 2}, wall);
   if (withPartition) {
-    addQuad(world.scene, {2, 0, 0}, {2, 0.99f, 0}, {2, 0.99f, 2}, {2, 0, 2}, wall);
-    addQuad(world.scene, {2, 1.01f, 0}, {2, 2, 0}, {2, 2, 2}, {2, 1.01f, 2}, wall);
+    addQuad(world.scene, {kSlitX, 0, 0}, {kSlitX, kSlitY0, 0}, {kSlitX, kSlitY0, 2}, {kSlitX, 0, 2},
+            wall);
+    addQuad(world.scene, {kSlitX, kSlitY1, 0}, {kSlitX, 2, 0}, {kSlitX, 2, 2}, {kSlitX, kSlitY1, 2},
+            wall);
   }
-  const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(10.0f));
-  addQuad(world.scene, {0.5f, 0.5f, 1.99f}, {0.5f, 1.5f, 1.99f}, {1.5f, 1.5f, 1.99f},
-          {1.5f, 0.5f, 1.99f}, light);
+  const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(kSlitLightLe));
+  addQuad(world.scene, {kSlitLightX0, kSlitLightY0, kSlitLightZ},
+          {kSlitLightX0, kSlitLightY1, kSlitLightZ}, {kSlitLightX1, kSlitLightY1, kSlitLightZ},
+          {kSlitLightX1, kSlitLightY0, kSlitLightZ}, light);
   return world;
+}
+
+}  // namespace
+
+World slitRooms(bool withPartition) {
+  return slitRoomsWithWalls(withPartition, 0.7f);
+}
+
+World blackSlitRooms(bool withPartition, float floorAlbedo) {
+  World world = slitRoomsWithWalls(withPartition, 0.0f);
+  // addInwardBox lists the floor (z = 0, facing +z) first.
+  world.scene.meshes[0].material = addMaterial(world.scene, glm::vec3(floorAlbedo));
+  return world;
+}
+
+Camera slitFloorCamera() {
+  return lookAt({3.0f, 1.0f, 1.5f}, {3.0f, 1.0f, 0.0f}, {1, 0, 0}, kFov);
 }
 
 Camera slitCamera() {

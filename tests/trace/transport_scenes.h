@@ -22,4 +22,16 @@ Camera corridorCamera();
 World slitRooms(bool withPartition);
 Camera slitCamera();
 
+// The slit rooms with black (ρ = 0) walls, partition, ceiling and emitter: only the floor
+// (the box's first mesh) reflects, with albedo `floorAlbedo`. A floor point sees no other
+// reflecting surface, so its radiance is ρ·Le·F with F the form factor of the part of the
+// emitter visible through the slit: a closed-form reference.
+World blackSlitRooms(bool withPartition, float floorAlbedo);
+// Straight down from (3, 1, 1.5), 60°: the view holds only the right room's floor.
+Camera slitFloorCamera();
+// Geometry of the slit rooms (the floats the scenes are built from).
+constexpr float kSlitY0 = 0.99f, kSlitY1 = 1.01f, kSlitX = 2.0f;
+constexpr float kSlitLightX0 = 0.5f, kSlitLightX1 = 1.5f, kSlitLightY0 = 0.5f, kSlitLightY1 = 1.5f,
+                kSlitLightZ = 1.99f, kSlitLightLe = 10.0f;
+
 }  // namespace bounce::test
