@@ -9,6 +9,8 @@
 
 #include <unistd.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "image/image_io.h"
 #include "scene/load.h"
 #include "trace/camera_render.h"
@@ -63,6 +65,13 @@ TEST(TraceApp, PointOverPlaneMatchesTheInverseSquareLaw) {
   const double rho = loaded.materials.at(0).albedo.g;
   const double intensity = light.intensity.g;
   const double h = light.position.y;  // the plane is y = 0
+  // The plane's extent in x and z: a ray that misses it (above the horizon or past its edge)
+  // sees black.
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& p : loaded.meshes.at(0).positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
   for (int y = 0; y < 12; ++y) {
     for (int x = 0; x < 12; ++x) {
       double sum = 0.0, sum2 = 0.0;
@@ -72,9 +81,13 @@ TEST(TraceApp, PointOverPlaneMatchesTheInverseSquareLaw) {
           const Ray ray =
               cameraRay(loaded.cameras[0], 12, 12, x + (i + 0.5f) / grid, y + (j + 0.5f) / grid);
           const double t = -static_cast<double>(ray.origin.y) / ray.direction.y;
-          const double px = ray.origin.x + t * ray.direction.x - light.position.x;
-          const double pz = ray.origin.z + t * ray.direction.z - light.position.z;
-          const double l = rho / M_PI * intensity * h / std::pow(h * h + px * px + pz * pz, 1.5);
+          const double wx = ray.origin.x + t * ray.direction.x;
+          const double wz = ray.origin.z + t * ray.direction.z;
+          const bool onPlane = t > 0 && wx >= lo.x && wx <= hi.x && wz >= lo.z && wz <= hi.z;
+          const double px = wx - light.position.x;
+          const double pz = wz - light.position.z;
+          const double l =
+              onPlane ? rho / M_PI * intensity * h / std::pow(h * h + px * px + pz * pz, 1.5) : 0.0;
           sum += l;
           sum2 += l * l;
         }
@@ -84,6 +97,46 @@ TEST(TraceApp, PointOverPlaneMatchesTheInverseSquareLaw) {
       const double sigma = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
       EXPECT_NEAR(image.at(x, y).g, mean, 5.0 * sigma / 8.0 + 1e-5 * mean) << x << "," << y;
     }
+  }
+}
+
+// cameraRay against the pinhole model written out independently: a point at camera-space
+// (X, Y, Z), Z < 0, projects to film position
+//   x = w/2 · (1 + X / (−Z · tan(yfov/2) · aspect)),  y = h/2 · (1 − Y / (−Z · tan(yfov/2))),
+// aspect = w/h (origin top-left, y down). The ray through that film position must pass
+// through the point's world position, for non-square images (both orientations), a rotated
+// and translated camera, and points near the film's corners (where a wrong field of view or
+// aspect moves the ray furthest). Tolerance: float rounding, 1e-5 of the distance.
+TEST(TraceApp, CameraRayFollowsThePinholeProjection) {
+  Camera camera;
+  camera.yfov = 0.9f;
+  const glm::mat4 rotation =
+      glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(0.3f, 1.0f, -0.4f)));
+  camera.cameraToWorld = glm::translate(glm::mat4(1.0f), glm::vec3(1.5f, -2.0f, 0.7f)) * rotation;
+  const double tanHalf = std::tan(0.5 * static_cast<double>(camera.yfov));
+  for (const glm::ivec2 size : {glm::ivec2(48, 20), glm::ivec2(20, 48), glm::ivec2(33, 33)}) {
+    const double aspect = static_cast<double>(size.x) / size.y;
+    int onFilm = 0;
+    for (const glm::dvec3 c : {glm::dvec3(0.9, 0.35, -2.0), glm::dvec3(-2.1, -1.1, -5.0),
+                               glm::dvec3(0.35, 0.85, -2.0), glm::dvec3(-0.38, -0.85, -2.0),
+                               glm::dvec3(0.3, -0.1, -1.0), glm::dvec3(0.1, -0.3, -1.0)}) {
+      const double x = size.x / 2.0 * (1.0 + c.x / (-c.z * tanHalf * aspect));
+      const double y = size.y / 2.0 * (1.0 - c.y / (-c.z * tanHalf));
+      if (x < 0 || x > size.x || y < 0 || y > size.y) continue;  // off the film
+      ++onFilm;
+      const glm::dvec3 world = glm::dvec3(camera.cameraToWorld * glm::vec4(glm::vec3(c), 1.0f));
+      const Ray ray =
+          cameraRay(camera, size.x, size.y, static_cast<float>(x), static_cast<float>(y));
+      const glm::dvec3 toPoint = world - glm::dvec3(ray.origin);
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(ray.direction));
+      const double along = glm::dot(toPoint, dir);
+      const double miss = glm::length(toPoint - along * dir);  // distance of the point to the ray
+      EXPECT_GT(along, 0.0);
+      EXPECT_LT(miss, 1e-5 * glm::length(toPoint))
+          << size.x << "x" << size.y << " point " << c.x << "," << c.y << "," << c.z << " at film "
+          << x << "," << y;
+    }
+    EXPECT_GE(onFilm, 3) << size.x << "x" << size.y;
   }
 }
 
