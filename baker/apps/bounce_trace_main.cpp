@@ -104,12 +104,20 @@ int run(const Options& o) {
   std::fprintf(
       stderr,
       "bounce-trace: %s camera '%s' %dx%d, %d spp, max depth %d: %.1f Msamples in "
-      "%.2f s (%.3f Msamples/s, %d threads, %s), standard error %.2f%% of the mean -> %s\n",
+      "%.2f s (%.3f Msamples/s, %d threads, %s), standard error %.2f%% of the mean, %llu "
+      "non-finite samples -> %s\n",
       o.scene.filename().string().c_str(), camera.name.c_str(), width, height, settings.spp,
       settings.maxDepth, static_cast<double>(render.samples) * 1e-6, render.seconds,
       render.seconds > 0.0 ? static_cast<double>(render.samples) * 1e-6 / render.seconds : 0.0,
       render.threads, kernel->name(), meanSum > 0.0 ? 100.0 * errorSum / meanSum : 0.0,
-      o.out.string().c_str());
+      static_cast<unsigned long long>(render.nonFiniteSamples), o.out.string().c_str());
+  if (render.nonFiniteSamples > 0) {
+    std::fprintf(stderr,
+                 "bounce-trace: warning: %llu of %llu samples were non-finite (NaN or infinite "
+                 "scene data in %s?) and counted as black: the affected pixels are biased low\n",
+                 static_cast<unsigned long long>(render.nonFiniteSamples),
+                 static_cast<unsigned long long>(render.samples), o.scene.string().c_str());
+  }
   return 0;
 }
 

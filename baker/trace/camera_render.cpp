@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -72,7 +73,11 @@ CameraRender traceCamera(const Scene& scene, const WorldGeometry& geometry, cons
                         static_cast<uint64_t>(tilesX) * static_cast<uint64_t>(tilesY),
                         settings.progress);
 
+  std::vector<uint64_t> tileNonFinite(static_cast<std::size_t>(tilesX) *
+                                      static_cast<std::size_t>(tilesY));
+
   auto renderTile = [&](int tile) {
+    uint64_t nonFinite = 0;
     const DenormalsFlushed flushed;
     const int x0 = (tile % tilesX) * kTileSize;
     const int y0 = (tile / tilesX) * kTileSize;
@@ -88,7 +93,9 @@ CameraRender traceCamera(const Scene& scene, const WorldGeometry& geometry, cons
           const glm::vec2 jitter = sampler.get2D();
           const Ray ray = cameraRay(camera, width, height, static_cast<float>(x) + jitter.x,
                                     static_cast<float>(y) + jitter.y);
-          const glm::dvec3 value(tracer.Li(ray, sampler));
+          bool wasNonFinite = false;
+          const glm::dvec3 value(tracer.Li(ray, sampler, &wasNonFinite));
+          if (wasNonFinite) ++nonFinite;
           const glm::dvec3 delta = value - mean;
           mean += delta / static_cast<double>(s + 1);
           m2 += delta * (value - mean);
@@ -98,6 +105,7 @@ CameraRender traceCamera(const Scene& scene, const WorldGeometry& geometry, cons
             spp > 1 ? glm::vec3(m2 / static_cast<double>(spp - 1)) : glm::vec3(0.0f);
       }
     }
+    tileNonFinite[static_cast<std::size_t>(tile)] = nonFinite;
     progress.advance(1, static_cast<uint64_t>(x1 - x0) * static_cast<uint64_t>(y1 - y0) * spp);
   };
 
@@ -110,6 +118,7 @@ CameraRender traceCamera(const Scene& scene, const WorldGeometry& geometry, cons
         },
         tbb::simple_partitioner());
   });
+  for (const uint64_t n : tileNonFinite) out.nonFiniteSamples += n;
   out.samples = static_cast<uint64_t>(width) * static_cast<uint64_t>(height) * spp;
   out.seconds = progress.elapsedSeconds();
   out.threads = arena.max_concurrency();

@@ -25,6 +25,10 @@ struct CameraRender {
   Image radiance;        // per-pixel mean, W/(sr·m²)
   Image sampleVariance;  // per-pixel unbiased sample variance of one sample's radiance
   uint64_t samples = 0;  // camera paths traced
+  // Samples whose estimate was non-finite (NaN/inf from bad scene data) and entered the
+  // pixel's mean as black (PathTracer::Li): each one biases its pixel low. Counted per tile,
+  // summed in tile order.
+  uint64_t nonFiniteSamples = 0;
   double seconds = 0.0;  // wall time
   int threads = 0;       // threads the arena ran with
 };

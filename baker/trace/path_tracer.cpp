@@ -186,7 +186,8 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
   return radiance;
 }
 
-glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler) const {
+glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite) const {
+  if (nonFinite != nullptr) *nonFinite = false;
   const uint32_t baseDim = sampler.dimension();
   if (!finiteRay(ray)) return glm::vec3(0.0f);
   const Hit hit = kernel_.intersect(ray);
@@ -200,7 +201,9 @@ glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler) const {
     rest *= settings_.clampRadiance / maxComponent(rest);
   }
   const glm::vec3 radiance = seen + rest;
-  return isFinite(radiance) ? radiance : glm::vec3(0.0f);
+  if (isFinite(radiance)) return radiance;
+  if (nonFinite != nullptr) *nonFinite = true;
+  return glm::vec3(0.0f);
 }
 
 glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal,

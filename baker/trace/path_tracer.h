@@ -26,9 +26,11 @@ class PathTracer {
   // One-sample estimate of the radiance arriving at ray.origin from −ray.direction,
   // W/(sr·m²) per channel (i.e. the radiance leaving the first surface hit towards the
   // origin; black where the ray escapes). Uses the sampler's dimensions from its current
-  // one on. Always finite (a non-finite estimate is returned as black and counted by the
-  // caller via isFinite).
-  glm::vec3 Li(const Ray& ray, SobolSampler& sampler) const;
+  // one on. Always finite: a non-finite estimate (possible only from non-finite scene data
+  // that slipped past the checks) is returned as black, which biases the pixel low; when
+  // `nonFinite` is given, *nonFinite is set to whether that happened, so the caller can count
+  // such samples (traceCamera does: CameraRender::nonFiniteSamples).
+  glm::vec3 Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite = nullptr) const;
 
   // One-sample estimate of the irradiance E (W/m²) at `position` on a surface with unit
   // normal `normal` (facing the hemisphere integrated over): E = π × the radiance a white

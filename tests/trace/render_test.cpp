@@ -191,6 +191,32 @@ TEST(BadInput, NonFiniteDataGivesFinitePixels) {
   for (const glm::vec3& p : black.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
 }
 
+// Emission that is finite but absurd (3·10³⁸ W/(sr·m²), near FLT_MAX) in a furnace of albedo
+// 0.9: the exact radiance Le/(1 − ρ) = 3·10³⁹ exceeds the float range, so the estimates
+// overflow to infinity (the seen emission plus any reflected light already does). Those
+// samples are returned as black and counted: the count is positive, never above the
+// samples taken, and the image stays finite. The same furnace with Le = 1 counts none.
+TEST(BadInput, NonFiniteSamplesAreCounted) {
+  TraceSettings settings = quick();
+  settings.maxDepth = 8;
+  test::World huge = test::furnace(0.9f, glm::vec3(3e38f));
+  huge.build();
+  const CameraRender bad =
+      traceCamera(huge.scene, huge.geometry, *huge.kernel, test::furnaceCamera(), 8, 8, settings);
+  std::printf("overflowing furnace: %llu of %llu samples non-finite\n",
+              static_cast<unsigned long long>(bad.nonFiniteSamples),
+              static_cast<unsigned long long>(bad.samples));
+  EXPECT_TRUE(bad.radiance.allFinite());
+  EXPECT_GT(bad.nonFiniteSamples, 0u);
+  EXPECT_LE(bad.nonFiniteSamples, bad.samples);
+
+  test::World sane = test::furnace(0.9f, glm::vec3(1.0f));
+  sane.build();
+  const CameraRender good =
+      traceCamera(sane.scene, sane.geometry, *sane.kernel, test::furnaceCamera(), 8, 8, settings);
+  EXPECT_EQ(good.nonFiniteSamples, 0u);
+}
+
 TEST(BadInput, InvalidSettingsThrow) {
   test::World world = test::furnace(0.5f, glm::vec3(1.0f));
   world.build();
