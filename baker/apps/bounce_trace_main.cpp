@@ -43,6 +43,8 @@ struct Options {
 
 int run(const Options& o) {
   const bounce::Scene scene = bounce::loadScene(o.scene);
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
   // Without a camera in the file, frame the scene as bounce-render does (square unless the
   // image size is given).
   const float imageAspect = o.width > 0 && o.height > 0

@@ -31,6 +31,8 @@ struct Options {
 
 int run(const Options& options) {
   const bounce::Scene scene = bounce::loadScene(options.scene);
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
   const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
   bool framed = false;
   const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);

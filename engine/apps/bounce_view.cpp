@@ -57,6 +57,8 @@ class Viewer {
         exposure_(options.exposure) {
     std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
                  window_.renderer().c_str());
+    for (const std::string& warning : scene_.warnings)
+      std::fprintf(stderr, "bounce-view: warning: %s\n", warning.c_str());
     for (const std::string& warning : renderer_.warnings())
       std::fprintf(stderr, "bounce-view: warning: %s\n", warning.c_str());
     cameras_ = scene_.cameras;

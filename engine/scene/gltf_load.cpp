@@ -208,7 +208,18 @@ class GltfBuilder {
       material.emission = glm::vec3(factor);
     }
     material.doubleSided = m.doubleSided;
+    warnIgnored(m, material.name);
     scene_.materials.push_back(std::move(material));
+  }
+
+  // Features that change what the file looks like but that the scene model cannot hold
+  // (docs/units.md): loaded without them, with a warning in Scene::warnings.
+  void warnIgnored(const tinygltf::Material& m, const std::string& name) {
+    const std::string what = "material '" + name + "'";
+    if (m.emissiveTexture.index >= 0)
+      scene_.warnings.push_back(what + ": emissiveTexture ignored (emission is uniform)");
+    if (m.pbrMetallicRoughness.baseColorTexture.extensions.count("KHR_texture_transform") != 0)
+      scene_.warnings.push_back(what + ": KHR_texture_transform on baseColorTexture ignored");
   }
 
   uint32_t texture(int textureIndex, const std::string& what) {
