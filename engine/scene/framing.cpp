@@ -27,6 +27,10 @@ Bounds sceneBounds(const Scene& scene) {
 Camera frameBounds(const Bounds& bounds, float aspect) {
   Camera camera;
   camera.name = "framed";
+  if (bounds.empty) {  // nothing to frame: one metre in front of the origin
+    camera.cameraToWorld = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 1));
+    return camera;
+  }
   const glm::vec3 centre = 0.5f * (bounds.lo + bounds.hi);
   const float radius = std::max(0.5f * glm::length(bounds.hi - bounds.lo), 1e-3f);
   // Half-angles of the vertical and horizontal fields of view; the narrower one decides.

@@ -19,7 +19,8 @@ struct Bounds {
 Bounds sceneBounds(const Scene& scene);
 
 // A camera on the +Z side of the bounds, looking down −Z at their centre, far enough that the
-// bounding sphere fits in both fields of view. An empty `bounds` gives a camera at (0,0,1).
+// bounding sphere fits in both fields of view. An empty `bounds` (a scene with no vertices)
+// gives a camera at (0,0,1) looking down −Z at the origin, with Camera's default clip range.
 Camera frameBounds(const Bounds& bounds, float aspect);
 
 // The camera a tool renders from: the one called `name` (std::invalid_argument when the scene
