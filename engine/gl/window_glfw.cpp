@@ -10,10 +10,6 @@
 
 namespace bounce::gl {
 
-struct Window::Impl {
-  GLFWwindow* window = nullptr;
-};
-
 namespace {
 
 int windowCount = 0;
@@ -61,6 +57,21 @@ int glfwKey(Key key) {
 
 }  // namespace
 
+// Owns the GLFW window and one reference on the GLFW library, so a constructor that throws
+// part-way (no window, no GL 3.3 functions) destroys what it made and keeps the count right.
+struct Window::Impl {
+  bool holdsGlfw = false;
+  GLFWwindow* window = nullptr;
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  ~Impl() {
+    if (window) glfwDestroyWindow(window);
+    if (holdsGlfw && --windowCount == 0) glfwTerminate();
+  }
+};
+
 struct WindowCallbacks {
   static void key(GLFWwindow* w, int key, int, int action, int) {
     auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
@@ -82,28 +93,26 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     throw ContextError("glfw: cannot initialize (" + lastGlfwError + ")");
   }
   ++windowCount;
+  impl_->holdsGlfw = true;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   impl_->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
-  if (!impl_->window) {
-    const std::string why = lastGlfwError;
-    if (--windowCount == 0) glfwTerminate();
-    throw ContextError("glfw: cannot open a window with an OpenGL 3.3 core context (" + why + ")");
+  if (!impl_->window) {  // impl_'s destructor releases GLFW
+    throw ContextError("glfw: cannot open a window with an OpenGL 3.3 core context (" +
+                       lastGlfwError + ")");
   }
   glfwSetWindowUserPointer(impl_->window, this);
   glfwSetKeyCallback(impl_->window, WindowCallbacks::key);
   glfwSetScrollCallback(impl_->window, WindowCallbacks::scroll);
   glfwMakeContextCurrent(impl_->window);
-  glfwSwapInterval(0);  // frame times measure rendering, not the display's refresh
-  loadGlFunctions(this, glfwProc);
+  glfwSwapInterval(0);              // frame times measure rendering, not the display's refresh
+  loadGlFunctions(this, glfwProc);  // may throw: impl_ then destroys the window
 }
 
 Window::~Window() {
-  forgetGlFunctions(this);
-  glfwDestroyWindow(impl_->window);
-  if (--windowCount == 0) glfwTerminate();
+  forgetGlFunctions(this);  // then impl_ destroys the window and releases GLFW
 }
 
 void Window::makeCurrent() {
