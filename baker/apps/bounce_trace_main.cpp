@@ -1,5 +1,6 @@
 // bounce-trace: the reference path tracer's command line. Renders a scene camera's view in
 // linear radiance W/(sr·m²) (EXR) and, when asked, a tone-mapped PNG.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -19,6 +20,9 @@
 #include "trace/sampling.h"
 
 namespace {
+
+// Largest image side in pixels, given or derived (a 16384² radiance image is 3 GiB).
+constexpr int kMaxSide = 16384;
 
 struct Options {
   std::filesystem::path scene;
@@ -55,12 +59,25 @@ int run(const Options& o) {
   if (framed)
     std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
                  o.scene.c_str());
-  // Default size: 512 rows, width from the camera's aspect ratio when it has one.
+  // Default size: 512 rows, width from the camera's aspect ratio when it has one. A side
+  // derived from an extreme aspect is clamped to 1..kMaxSide (the --width/--height range).
   int width = o.width, height = o.height;
-  const float aspect = camera.aspect > 0.0f ? camera.aspect : 1.0f;
+  const double aspect = camera.aspect > 0.0f ? static_cast<double>(camera.aspect) : 1.0;
   if (width <= 0 && height <= 0) height = 512;
-  if (height <= 0) height = std::max(1, static_cast<int>(std::lround(width / aspect)));
-  if (width <= 0) width = std::max(1, static_cast<int>(std::lround(height * aspect)));
+  bool clamped = false;
+  const auto derivedSide = [&clamped](double side) {
+    const double bounded = std::clamp(side, 1.0, static_cast<double>(kMaxSide));
+    if (!(side >= 0.5 && side < kMaxSide + 0.5)) clamped = true;  // rounds outside the range
+    return static_cast<int>(std::lround(bounded));
+  };
+  if (height <= 0) height = derivedSide(width / aspect);
+  if (width <= 0) width = derivedSide(height * aspect);
+  if (clamped) {
+    std::fprintf(stderr,
+                 "bounce-trace: warning: camera '%s' has aspect ratio %g: image size clamped to "
+                 "%dx%d (each side 1..%d; give --width and --height to choose)\n",
+                 camera.name.c_str(), aspect, width, height, kMaxSide);
+  }
 
   bounce::TraceSettings settings;
   settings.spp = o.spp;
@@ -144,8 +161,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1024));
   app.add_option("--backend", o.backend, "ray kernel: embree or bvh")
       ->check(CLI::IsMember({"embree", "bvh"}));
-  app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, 16384));
-  app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, 16384));
+  app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, kMaxSide));
+  app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, kMaxSide));
   app.add_option("--out", o.out, "output EXR, linear radiance W/(sr·m²)")->required();
   app.add_option("--png", o.png, "also write a tone-mapped sRGB PNG");
   app.add_option("--std-error", o.stdError,

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -41,6 +42,13 @@ class ScratchCleanup : public ::testing::Environment {
   }
 };
 const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 int run(const std::string& arguments) {
   const std::string command = kTool + " " + arguments + " 2>/dev/null";
@@ -174,6 +182,30 @@ TEST(TraceApp, SceneWithoutCameraIsFramed) {
   double sum = 0.0;
   for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
   EXPECT_GT(sum, 0.0);
+}
+
+// A camera with aspect ratio 10⁶ and only --height given: the derived width (10⁶ px) is
+// clamped to 16384 and stderr says so, naming the camera and its aspect.
+TEST(TraceApp, ExtremeCameraAspectIsClamped) {
+  const fs::path source = kContent / "point_over_plane" / "point_over_plane.gltf";
+  std::string text = readText(source);
+  const std::string key = "\"aspectRatio\": 1.0";
+  const std::size_t at = text.find(key);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, key.size(), "\"aspectRatio\": 1000000.0");
+  const fs::path scene = scratch("wide.gltf");
+  { std::ofstream(scene) << text; }
+  const fs::path out = scratch("wide.exr");
+  const fs::path log = scratch("wide.log");
+  const std::string command = kTool + " " + scene.string() + " --height 1 --spp 1 --quiet --out " +
+                              out.string() + " 2>" + log.string();
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_EQ(readExr(out).width, 16384);
+  const std::string messages = readText(log);
+  EXPECT_NE(messages.find("camera 'top' has aspect ratio 1e+06"), std::string::npos) << messages;
+  EXPECT_NE(messages.find("16384x1"), std::string::npos) << messages;
+  EXPECT_NE(messages.find(", 0 non-finite samples"), std::string::npos) << messages;
 }
 
 TEST(TraceApp, BadInputFailsWithNonZeroExit) {
