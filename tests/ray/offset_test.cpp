@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "both_backends.h"
 #include "ray/ray_kernel.h"
 #include "test_geometry.h"
 
@@ -121,12 +122,7 @@ TEST_P(OffsetTest, ShadowRaysDoNotJumpPastAThinOccluder) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, OffsetTest,
-                         ::testing::Values(RayBackend::Embree, RayBackend::Bvh),
-                         [](const ::testing::TestParamInfo<RayBackend>& backend) {
-                           return std::string(backend.param == RayBackend::Embree ? "Embree"
-                                                                                  : "Bvh");
-                         });
+INSTANTIATE_TEST_SUITE_P(Backends, OffsetTest, kBothBackends, backendName);
 
 }  // namespace
 }  // namespace bounce

@@ -1,5 +1,6 @@
 // Exact single-triangle queries, ray validation and degenerate triangles, for both backends.
 #include "ray/ray_kernel.h"
+#include "both_backends.h"
 
 #include <gtest/gtest.h>
 
@@ -106,12 +107,7 @@ TEST_P(RayKernelTest, EmptySceneMisses) {
   EXPECT_FALSE(kernel->occluded(Ray{}));
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, RayKernelTest,
-                         ::testing::Values(RayBackend::Embree, RayBackend::Bvh),
-                         [](const ::testing::TestParamInfo<RayBackend>& backend) {
-                           return std::string(backend.param == RayBackend::Embree ? "Embree"
-                                                                                  : "Bvh");
-                         });
+INSTANTIATE_TEST_SUITE_P(Backends, RayKernelTest, kBothBackends, backendName);
 
 TEST(ParseRayBackend, AcceptsTheTwoNamesAndRejectsOthers) {
   EXPECT_EQ(parseRayBackend("embree"), RayBackend::Embree);

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "both_backends.h"
 #include "ray/ray_kernel.h"
 #include "test_geometry.h"
 
@@ -99,12 +100,7 @@ TEST_P(WatertightTest, RaysAtEdgesAndVerticesOfAnIcosphereNeverEscape) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, WatertightTest,
-                         ::testing::Values(RayBackend::Embree, RayBackend::Bvh),
-                         [](const ::testing::TestParamInfo<RayBackend>& backend) {
-                           return std::string(backend.param == RayBackend::Embree ? "Embree"
-                                                                                  : "Bvh");
-                         });
+INSTANTIATE_TEST_SUITE_P(Backends, WatertightTest, kBothBackends, backendName);
 
 }  // namespace
 }  // namespace bounce
