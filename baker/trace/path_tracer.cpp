@@ -186,6 +186,12 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
   return radiance;
 }
 
+glm::vec3 PathTracer::clamped(glm::vec3 radiance) const {
+  const float limit = settings_.clampRadiance;
+  const float peak = maxComponent(radiance);
+  return limit > 0.0f && peak > limit ? radiance * (limit / peak) : radiance;
+}
+
 glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite) const {
   if (nonFinite != nullptr) *nonFinite = false;
   const uint32_t baseDim = sampler.dimension();
@@ -196,10 +202,7 @@ glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite)
   if (!makeSurfacePoint(scene_, geometry_, ray, hit, point)) return glm::vec3(0.0f);
   // Emitters seen directly count fully (no other strategy can find them).
   const glm::vec3 seen = minReflections_ == 0 ? point.emitted : glm::vec3(0.0f);
-  glm::vec3 rest = reflected(point, glm::vec3(1.0f), 0, baseDim, sampler);
-  if (settings_.clampRadiance > 0.0f && maxComponent(rest) > settings_.clampRadiance) {
-    rest *= settings_.clampRadiance / maxComponent(rest);
-  }
+  const glm::vec3 rest = clamped(reflected(point, glm::vec3(1.0f), 0, baseDim, sampler));
   const glm::vec3 radiance = seen + rest;
   if (isFinite(radiance)) return radiance;
   if (nonFinite != nullptr) *nonFinite = true;
@@ -214,10 +217,7 @@ glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal,
   point.geometricNormal = normal;
   point.shadingNormal = normal;
   point.albedo = glm::vec3(1.0f);
-  glm::vec3 lo = reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler);
-  if (settings_.clampRadiance > 0.0f && maxComponent(lo) > settings_.clampRadiance) {
-    lo *= settings_.clampRadiance / maxComponent(lo);
-  }
+  const glm::vec3 lo = clamped(reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler));
   const glm::vec3 e = kPi * lo;
   return isFinite(e) ? e : glm::vec3(0.0f);
 }

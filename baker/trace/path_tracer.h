@@ -50,6 +50,9 @@ class PathTracer {
   // weight, plus every delta light), not yet multiplied by the path throughput.
   glm::vec3 sampleAreaLight(const SurfacePoint& point, SobolSampler& sampler) const;
   glm::vec3 sampleDeltaLights(const SurfacePoint& point) const;
+  // The firefly clamp (off when settings_.clampRadiance ≤ 0): scales a sample's reflected
+  // radiance so its largest channel is at most the clamp. Biased low; see docs/path_tracer.md.
+  glm::vec3 clamped(glm::vec3 radiance) const;
   bool visible(glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to, glm::vec3 toNormal) const;
 
   const Scene& scene_;
