@@ -1,0 +1,32 @@
+// The lightmap atlas: gives every static instance its own region of one lightmap. GL-free.
+//
+// A mesh's own lightmap UVs (glTF TEXCOORD_1, Mesh::uv1) are used when valid (inside [0,1], no
+// overlapping triangles, enough texels per triangle); otherwise charts are generated: region
+// growing over the half-edge structure with a normal-cone bound, planar projection for
+// near-planar charts and least-squares conformal maps for the rest, every chart scaled to one
+// world-space texel density, packed with `padding` texels around each chart.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bake/lightmap_layout.h"
+#include "scene/scene.h"
+
+namespace bounce {
+
+struct AtlasSettings {
+  float texelSize = 0.0f;   // metres per texel edge; 0 = derive it from texelBudget
+  int texelBudget = 65536;  // texels the static surface area should cover when texelSize is 0
+  int padding = 2;          // texels between charts (dilation and bilinear filtering need ≥ 2)
+  int maxSize = 4096;       // largest atlas edge, texels
+};
+
+struct Atlas {
+  LightmapLayout layout;
+  std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
+};
+
+Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings);
+
+}  // namespace bounce

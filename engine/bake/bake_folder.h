@@ -1,0 +1,42 @@
+// The bake folder: what bounce-bake writes and the renderer reads, one versioned format with its
+// reader and writer here. GL-free.
+//
+//   <dir>/bake.json       manifest: format version, scene hash, settings, what the map holds
+//                         (indirect only, or direct too for baked-only lights), atlas stats,
+//                         samples per texel, estimated error, time per phase
+//   <dir>/lightmap.exr    irradiance E in W/m² per linear-RGB channel, one texel per atlas texel,
+//                         rows top first (see lightmap_layout.h)
+//   <dir>/layout.bin      the LightmapLayout (versioned binary)
+//   <dir>/vpls            reserved for the virtual point lights (a later issue)
+//
+// A folder is written whole or not at all: into "<dir>.tmp-<pid>", then renamed over <dir>, so
+// an interrupted bake leaves the previous one intact.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "bake/lightmap_layout.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace bounce {
+
+inline constexpr int kBakeFormatVersion = 1;
+
+struct Bake {
+  LightmapLayout layout;
+  Image irradiance;          // W/m², layout.width × layout.height
+  std::string manifestJson;  // bake.json as written (the renderer reads what it needs from it)
+};
+
+// Hash of everything in the scene that changes a bake (geometry, instances and their mobility,
+// materials, lights), hex. Cameras and warnings do not count.
+std::string sceneContentHash(const Scene& scene);
+
+// Reads <dir>; throws LoadError naming the file and the reason when a file is missing or
+// malformed, when the format version is not kBakeFormatVersion, or when the bake was made for
+// another scene (its hash differs from sceneContentHash(scene)).
+Bake readBake(const std::filesystem::path& dir, const Scene& scene);
+
+}  // namespace bounce
