@@ -39,4 +39,9 @@ std::string sceneContentHash(const Scene& scene);
 // another scene (its hash differs from sceneContentHash(scene)).
 Bake readBake(const std::filesystem::path& dir, const Scene& scene);
 
+// Writes <dir> whole or not at all (see above). bake.manifestJson must be a JSON object holding
+// at least "formatVersion" (= kBakeFormatVersion) and "sceneHash"; throws std::runtime_error
+// naming the folder and the reason otherwise, or when a write fails.
+void writeBake(const std::filesystem::path& dir, const Bake& bake);
+
 }  // namespace bounce
