@@ -1,0 +1,116 @@
+// Scenes that make plausible estimator bugs visible where the square-over-a-parallel-plane
+// tests cannot: emitters of unequal area and radiance (the emitter-selection pmf must agree
+// with the pdf in the MIS weight), an emitter perpendicular to its receiver (the cosine at the
+// emitter and the cosine at the receiver differ) and surfaces with smooth normals (a delta
+// light's cosine belongs to the shading normal, its horizon to the geometric one). Each is
+// checked through PathTracer::Li and through PathTracer::irradiance, the baker's entry point,
+// against closed forms from tests/support, within 5 standard errors of the estimate (its
+// sample variance) or float rounding where the estimator is deterministic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "support/form_factors.h"
+#include "test_scenes.h"
+
+namespace bounce {
+namespace {
+
+using test::addMaterial;
+using test::addQuad;
+using test::parallelRectangleFormFactor;
+
+constexpr double kPiD = std::numbers::pi;
+const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
+
+// A 200 m × 200 m plane at z = 0 facing +z with albedo kPlaneAlbedo; its vertex normals are
+// `shadingNormal` (the geometric one, +z, unless given).
+test::World planeWorld(glm::vec3 shadingNormal = {0, 0, 1}) {
+  test::World world;
+  const uint32_t m = addMaterial(world.scene, glm::vec3(kPlaneAlbedo));
+  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
+  world.scene.meshes.back().normals.assign(4, glm::normalize(shadingNormal));
+  return world;
+}
+
+// A ray straight down onto the plane point (x, y, 0) from `height` above it.
+Ray downOnto(double x, double y, float height) {
+  Ray ray;
+  ray.origin = glm::vec3(static_cast<float>(x), static_cast<float>(y), height);
+  ray.direction = {0, 0, -1};
+  return ray;
+}
+
+// A rectangle [x0,x1]×[y0,y1] at height z whose front (the emitting face) faces −z.
+void addDownwardRectangle(test::World& world, float x0, float x1, float y0, float y1, float z,
+                          uint32_t material) {
+  addQuad(world.scene, {x0, y0, z}, {x0, y1, z}, {x1, y1, z}, {x1, y0, z}, material);
+}
+
+const char* strategyName(LightStrategy s) {
+  switch (s) {
+    case LightStrategy::Mis:
+      return "MIS";
+    case LightStrategy::LightOnly:
+      return "light-only";
+    case LightStrategy::BrdfOnly:
+      return "BRDF-only";
+  }
+  return "?";
+}
+
+// The estimate's mean within 5 of its standard errors of the closed form (per channel).
+void expectMatches(const std::string& what, const test::Estimate& e, glm::dvec3 expected) {
+  const glm::dvec3 se = e.standardError();
+  std::printf("%s: %.5f expected %.5f (%+.2f%%, %+.1f SE)\n", what.c_str(), e.mean.g, expected.g,
+              100.0 * (e.mean.g / expected.g - 1.0), (e.mean.g - expected.g) / se.g);
+  EXPECT_TRUE(test::agreeWithin(e.mean, se, expected, glm::dvec3(0.0), 5.0)) << what;
+}
+
+// Two emitters of very different area and radiance over the plane: a small bright one
+// (0.2 m × 0.2 m at 0.8 m, Le = (20, 10, 30)) and a large dim one (1 m × 2 m at 1.2 m,
+// Le = (1, 2, 0.5)). Sampled by power, a triangle of the small one is picked with
+// probability 0.070; by area it would be 0.0098, uniformly 0.25, so a pick pmf that
+// disagrees with the density in the MIS weight (or with the one NEE divides by) moves the
+// estimate. The plane reflects Lo = ρ·Σ Le_i·F_i and a point on it receives E = π·Σ Le_i·F_i,
+// F_i the closed-form parallel-rectangle form factors (the emitters do not shadow each other
+// and are black, and light leaving the plane escapes).
+TEST(BlindSpots, UnequalEmittersMatchTheirFormFactors) {
+  test::World world = planeWorld();
+  const glm::dvec3 bright(20, 10, 30), dim(1, 2, 0.5);
+  addDownwardRectangle(world, 0.2f, 0.4f, -0.1f, 0.1f, 0.8f,
+                       addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(bright)));
+  addDownwardRectangle(world, -1.5f, -0.5f, -1.0f, 1.0f, 1.2f,
+                       addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(dim)));
+  world.build();
+  uint32_t pattern = 200;
+  for (glm::dvec2 at : {glm::dvec2(0.3, 0.0), glm::dvec2(-0.2, 0.4), glm::dvec2(-1.1, -0.3)}) {
+    const glm::dvec3 sumLeF =
+        bright * parallelRectangleFormFactor(at.x, at.y, 0.2, 0.4, -0.1, 0.1, 0.8) +
+        dim * parallelRectangleFormFactor(at.x, at.y, -1.5, -0.5, -1.0, 1.0, 1.2);
+    for (LightStrategy strategy :
+         {LightStrategy::Mis, LightStrategy::LightOnly, LightStrategy::BrdfOnly}) {
+      TraceSettings settings;
+      settings.strategy = strategy;
+      const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+      const std::string where = std::string(strategyName(strategy)) + " at (" +
+                                std::to_string(at.x) + ", " + std::to_string(at.y) + ")";
+      ++pattern;
+      expectMatches("unequal emitters, Li " + where,
+                    test::estimateLi(tracer, downOnto(at.x, at.y, 0.5f), pattern, pattern, 8192),
+                    kPlaneAlbedo * sumLeF);
+      ++pattern;
+      const glm::vec3 p(static_cast<float>(at.x), static_cast<float>(at.y), 0.0f);
+      expectMatches("unequal emitters, irradiance " + where,
+                    test::estimateIrradiance(tracer, p, {0, 0, 1}, pattern, pattern, 8192),
+                    kPiD * sumLeF);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bounce
