@@ -23,6 +23,7 @@ namespace {
 using test::addMaterial;
 using test::addQuad;
 using test::parallelRectangleFormFactor;
+using test::perpendicularFormFactor;
 
 constexpr double kPiD = std::numbers::pi;
 const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
@@ -108,6 +109,64 @@ TEST(BlindSpots, UnequalEmittersMatchTheirFormFactors) {
       expectMatches("unequal emitters, irradiance " + where,
                     test::estimateIrradiance(tracer, p, {0, 0, 1}, pattern, pattern, 8192),
                     kPiD * sumLeF);
+    }
+  }
+}
+
+// An emitter standing perpendicular to the receiving plane, the wall x = 1 m facing −x over
+// y ∈ [y0, y1], z ∈ [z0, z1]. Seen from a plane point, the cosine at the receiver (z/r) and at
+// the emitter (Δx/r) differ everywhere, unlike over a parallel emitter where they are equal;
+// swapping them (in the solid-angle pdf, in the contribution or in the MIS weight of BRDF
+// hits) moves the estimate. Closed form: the perpendicular-rectangle form factor, summed over
+// the two sides of the receiver's foot and differenced over height:
+// F = Σ_{W ∈ {y − y0, y1 − y}} F⊥(d, z1, W) − F⊥(d, z0, W), d = 1 − x.
+// Two walls: a 1.1 m × 1 m one (light sampling carries the MIS estimate) and a 6 m × 3 m one
+// with receivers 5–20 cm from its foot, where BRDF hits carry much of it (p_brdf = z/(π·r)
+// against p_light = r³/(A·d)), so a wrong cosine in their MIS weight shows (it moves MIS by
+// 7–11%; 32768 samples keep MIS's standard error near 0.6%).
+struct Wall {
+  float y0, y1, z0, z1;
+  std::vector<glm::dvec2> receivers;
+  int samples;
+};
+
+TEST(BlindSpots, PerpendicularEmitterMatchesItsFormFactor) {
+  const glm::dvec3 le(3, 4, 5);
+  uint32_t pattern = 300;
+  const Wall walls[] = {{-0.4f, 0.7f, 0.2f, 1.2f, {{0.0, 0.0}, {0.6, 0.1}, {-0.5, 0.5}}, 8192},
+                        {-3.0f, 3.0f, 0.0f, 3.0f, {{0.8, 0.3}, {0.95, -1.0}}, 32768}};
+  for (const Wall& wall : walls) {
+    test::World world = planeWorld();
+    const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le));
+    // Counter-clockwise seen from −x: the front faces −x, towards the receivers.
+    addQuad(world.scene, {1, wall.y0, wall.z0}, {1, wall.y0, wall.z1}, {1, wall.y1, wall.z1},
+            {1, wall.y1, wall.z0}, light);
+    world.build();
+    for (glm::dvec2 at : wall.receivers) {
+      const double d = 1.0 - at.x;
+      double f = 0.0;
+      for (double w : {at.y - wall.y0, wall.y1 - at.y}) {
+        f += perpendicularFormFactor(d, wall.z1, w) - perpendicularFormFactor(d, wall.z0, w);
+      }
+      for (LightStrategy strategy :
+           {LightStrategy::Mis, LightStrategy::LightOnly, LightStrategy::BrdfOnly}) {
+        TraceSettings settings;
+        settings.strategy = strategy;
+        const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+        const std::string where = std::string(strategyName(strategy)) + " at (" +
+                                  std::to_string(at.x) + ", " + std::to_string(at.y) + ")";
+        ++pattern;
+        expectMatches(
+            "perpendicular emitter, Li " + where,
+            test::estimateLi(tracer, downOnto(at.x, at.y, 0.01f), pattern, pattern, wall.samples),
+            kPlaneAlbedo * le * f);
+        ++pattern;
+        const glm::vec3 p(static_cast<float>(at.x), static_cast<float>(at.y), 0.0f);
+        expectMatches(
+            "perpendicular emitter, irradiance " + where,
+            test::estimateIrradiance(tracer, p, {0, 0, 1}, pattern, pattern, wall.samples),
+            kPiD * le * f);
+      }
     }
   }
 }
