@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/delta_light.h"
 #include "support/form_factors.h"
 #include "test_scenes.h"
 
@@ -168,6 +169,118 @@ TEST(BlindSpots, PerpendicularEmitterMatchesItsFormFactor) {
             kPiD * le * f);
       }
     }
+  }
+}
+
+// Smooth normals: the plane's shading normal is tilted 30° towards +x from its geometric
+// normal +z. A delta light reflects Lo = ρ/π·E⊥·max(0, n_s·ω) while it is above the geometric
+// surface (tests/support/delta_light.h). The lights are placed so that n_s·ω and n_g·ω differ
+// by 10–90% (and at x = 5 n_s·ω < 0 < n_g·ω: black). Deterministic (NEE only; bounce rays
+// escape), so the tolerance is float rounding.
+const glm::dvec3 kTiltedNormal(0.5, 0.0, std::sqrt(0.75));
+
+void expectExactly(const std::string& what, const PathTracer& tracer, const Ray& ray,
+                   glm::dvec3 expected) {
+  const test::Estimate e = test::estimateLi(tracer, ray, 1u, 0u, 16);
+  std::printf("%s: %.6f expected %.6f\n", what.c_str(), e.mean.g, expected.g);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(e.mean[c], expected[c], 1e-5 * std::abs(expected[c]) + 1e-9)
+        << what << ", channel " << c;
+    EXPECT_LE(e.variance[c], 1e-12) << what << ": a delta light's estimate has no variance";
+  }
+}
+
+TEST(BlindSpots, DeltaLightCosineIsOnTheShadingNormal) {
+  const glm::dvec3 up(0, 0, 1);
+  {
+    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    Light light;
+    light.type = LightType::Point;
+    light.position = {0, 0, 2};
+    light.intensity = {10, 20, 5};
+    world.scene.lights.push_back(light);
+    world.build();
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+    for (double x : {-1.0, 1.0, 2.5, 5.0}) {
+      const glm::dvec3 expected = test::pointLightRadiance(
+          kPlaneAlbedo, glm::dvec3(light.intensity), glm::dvec3(light.position),
+          glm::dvec3(x, 0.3, 0.0), kTiltedNormal, up);
+      expectExactly("point light, smooth normal, x = " + std::to_string(x), tracer,
+                    downOnto(x, 0.3, 1.0f), expected);
+    }
+  }
+  {
+    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(1, 0.3f, -2));
+    sun.irradiance = {3, 2, 1};
+    world.scene.lights.push_back(sun);
+    world.build();
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+    const glm::dvec3 expected = test::lambertianRadiance(
+        kPlaneAlbedo, glm::dvec3(sun.irradiance), -glm::dvec3(sun.direction), kTiltedNormal, up);
+    expectExactly("directional light, smooth normal", tracer, downOnto(0.5, 0.5, 1.0f), expected);
+  }
+}
+
+// The reverse: light from below the geometric surface but above the tilted shading normal's
+// horizon (n_s·ω > 0 > n_g·ω) must not reach the surface, for a point and a directional light:
+// the horizon belongs to the geometric normal.
+TEST(BlindSpots, DeltaLightBelowTheGeometricSurfaceDoesNotLeak) {
+  const glm::dvec3 toPoint(2.0, 0.0, -0.3);  // from the receiver at the origin
+  const glm::dvec3 toSun = glm::normalize(glm::dvec3(1.0, 0.2, -0.2));
+  ASSERT_GT(glm::dot(kTiltedNormal, toPoint), 0.0);
+  ASSERT_GT(glm::dot(kTiltedNormal, toSun), 0.0);
+  Light point;
+  point.type = LightType::Point;
+  point.position = glm::vec3(toPoint);
+  point.intensity = {10, 20, 5};
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = -glm::vec3(toSun);
+  sun.irradiance = {3, 2, 1};
+  for (const Light& light : {point, sun}) {
+    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    world.scene.lights = {light};
+    world.build();
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+    expectExactly(std::string(light.type == LightType::Point ? "point" : "directional") +
+                      " light below the geometric surface",
+                  tracer, downOnto(0.0, 0.0, 1.0f), glm::dvec3(0.0));
+  }
+}
+
+// Irradiance (the baker's entry point) from light that reached a smooth-normal surface from a
+// delta light: a 2 m × 2 m reflector at z = 1 m facing down (ρ = kPlaneAlbedo, shading normal
+// tilted 30° off its geometric −z), lit from below by a directional light. Every point of it
+// reflects the same radiance L_r = ρ/π·E⊥·max(0, n_s·ω), so a point at z = 0 facing up
+// receives E = π·L_r·F (parallel-rectangle form factor). With the cosine on the geometric
+// normal L_r would be 1.77× larger.
+TEST(BlindSpots, IrradianceFromASmoothNormalReflector) {
+  test::World world;
+  const uint32_t m = addMaterial(world.scene, glm::vec3(kPlaneAlbedo));
+  addDownwardRectangle(world, -1, 1, -1, 1, 1, m);
+  const glm::dvec3 shading = glm::normalize(glm::dvec3(-0.5, 0.0, -std::sqrt(0.75)));
+  world.scene.meshes.back().normals.assign(4, glm::vec3(shading));
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(-0.6f, 0, 1));  // travelling up
+  sun.irradiance = {3, 2, 1};
+  world.scene.lights.push_back(sun);
+  world.build();
+  const glm::dvec3 lr = test::lambertianRadiance(kPlaneAlbedo, glm::dvec3(sun.irradiance),
+                                                 -glm::dvec3(sun.direction), shading, {0, 0, -1});
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
+  uint32_t pattern = 400;
+  for (glm::dvec2 at : {glm::dvec2(0.3, 0.2), glm::dvec2(-0.8, 1.3)}) {
+    const double f = parallelRectangleFormFactor(at.x, at.y, -1, 1, -1, 1, 1);
+    ++pattern;
+    const glm::vec3 p(static_cast<float>(at.x), static_cast<float>(at.y), 0.0f);
+    expectMatches("smooth-normal reflector, irradiance at (" + std::to_string(at.x) + ", " +
+                      std::to_string(at.y) + ")",
+                  test::estimateIrradiance(tracer, p, {0, 0, 1}, pattern, pattern, 8192),
+                  kPiD * lr * f);
   }
 }
 
