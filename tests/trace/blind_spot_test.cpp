@@ -16,6 +16,7 @@
 
 #include "support/delta_light.h"
 #include "support/form_factors.h"
+#include "support/polygon_form_factor.h"
 #include "test_scenes.h"
 
 namespace bounce {
@@ -25,6 +26,7 @@ using test::addMaterial;
 using test::addQuad;
 using test::parallelRectangleFormFactor;
 using test::perpendicularFormFactor;
+using test::polygonFormFactor;
 
 constexpr double kPiD = std::numbers::pi;
 const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
@@ -281,6 +283,122 @@ TEST(BlindSpots, IrradianceFromASmoothNormalReflector) {
                       std::to_string(at.y) + ")",
                   test::estimateIrradiance(tracer, p, {0, 0, 1}, pattern, pattern, 8192),
                   kPiD * lr * f);
+  }
+}
+
+// Lambert's contour formula (tests/support/polygon_form_factor.h), the reference of the next
+// tests, against the two rectangle closed forms it must reproduce.
+TEST(BlindSpots, LambertsFormulaMatchesTheRectangleClosedForms) {
+  const glm::dvec3 up(0, 0, 1);
+  // The square [−0.5,0.5]² at height 1, counter-clockwise seen from below.
+  const std::vector<glm::dvec3> square = {
+      {-0.5, -0.5, 1}, {-0.5, 0.5, 1}, {0.5, 0.5, 1}, {0.5, -0.5, 1}};
+  for (glm::dvec2 at : {glm::dvec2(0, 0), glm::dvec2(0.4, 0.3), glm::dvec2(1.5, -0.2)}) {
+    EXPECT_NEAR(polygonFormFactor(square, {at.x, at.y, 0}, up),
+                parallelRectangleFormFactor(at.x, at.y, -0.5, 0.5, -0.5, 0.5, 1.0), 1e-12);
+  }
+  // The wall x = 1, y ∈ [−0.4, 0.7], z ∈ [0.2, 1.2], counter-clockwise seen from −x.
+  const std::vector<glm::dvec3> wall = {
+      {1, -0.4, 0.2}, {1, -0.4, 1.2}, {1, 0.7, 1.2}, {1, 0.7, 0.2}};
+  for (glm::dvec2 at : {glm::dvec2(0, 0), glm::dvec2(0.6, 0.1)}) {
+    double f = 0.0;
+    for (double w : {at.y + 0.4, 0.7 - at.y}) {
+      f += perpendicularFormFactor(1 - at.x, 1.2, w) - perpendicularFormFactor(1 - at.x, 0.2, w);
+    }
+    EXPECT_NEAR(polygonFormFactor(wall, {at.x, at.y, 0}, up), f, 1e-12);
+  }
+  // Clipping: the half of the square above y = 0 seen from (0, 0, 0) is half the square.
+  EXPECT_NEAR(polygonFormFactor(test::clipPolygon(square, {0, 0, 0}, {0, 1, 0}), {0, 0, 0}, up),
+              0.5 * parallelRectangleFormFactor(0, 0, -0.5, 0.5, -0.5, 0.5, 1.0), 1e-12);
+}
+
+// A 1 m × 0.6 m emitter tilted 45° (centre (1, 0, 1), facing (−1, 0, −1)/√2, Le = (3, 4, 5)):
+// neither parallel nor perpendicular to its receivers. Its corners as floats, as the scene
+// holds them, counter-clockwise seen from its front.
+std::vector<glm::vec3> tiltedEmitterCorners() {
+  const glm::vec3 c(1, 0, 1), a = 0.5f * glm::vec3(0.70710678f, 0, -0.70710678f), b(0, 0.3f, 0);
+  return {c - a - b, c - a + b, c + a + b, c + a - b};
+}
+
+void addTiltedEmitter(test::World& world, glm::dvec3 le) {
+  const std::vector<glm::vec3> p = tiltedEmitterCorners();
+  addQuad(world.scene, p[0], p[1], p[2], p[3],
+          addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le)));
+}
+
+// F of the tilted emitter seen from x with the cosine on `cosineNormal` and the horizon on
+// `horizonNormal` (clipped by both planes); 0 behind it (it emits from its front only).
+double tiltedEmitterFormFactor(glm::dvec3 x, glm::dvec3 cosineNormal, glm::dvec3 horizonNormal) {
+  std::vector<glm::dvec3> polygon;
+  for (glm::vec3 p : tiltedEmitterCorners()) polygon.emplace_back(p);
+  const glm::dvec3 front = glm::cross(polygon[1] - polygon[0], polygon[2] - polygon[0]);
+  if (glm::dot(front, x - polygon[0]) <= 0.0) return 0.0;
+  polygon = test::clipPolygon(test::clipPolygon(polygon, x, horizonNormal), x, cosineNormal);
+  return polygonFormFactor(polygon, x, cosineNormal);
+}
+
+// The tilted emitter through Li over a flat plane (Lo = ρ·Le·F) and through irradiance at
+// points in empty space (no plane: E = π·Le·F), facing up, 30° towards +x and 51° towards −x
+// (whose horizon cuts the emitter), each strategy, 8192 samples, 5 SE.
+TEST(BlindSpots, TiltedEmitterMatchesLambertsFormula) {
+  const glm::dvec3 le(3, 4, 5), up(0, 0, 1);
+  test::World plane = planeWorld();
+  addTiltedEmitter(plane, le);
+  plane.build();
+  test::World empty;
+  addTiltedEmitter(empty, le);
+  empty.build();
+  uint32_t pattern = 600;
+  for (LightStrategy strategy :
+       {LightStrategy::Mis, LightStrategy::LightOnly, LightStrategy::BrdfOnly}) {
+    TraceSettings settings;
+    settings.strategy = strategy;
+    const PathTracer onPlane(plane.scene, plane.geometry, *plane.kernel, settings);
+    const PathTracer inSpace(empty.scene, empty.geometry, *empty.kernel, settings);
+    for (glm::dvec2 at : {glm::dvec2(0.0, 0.0), glm::dvec2(0.5, -0.3), glm::dvec2(1.0, 1.2)}) {
+      const std::string where = std::string(strategyName(strategy)) + " at (" +
+                                std::to_string(at.x) + ", " + std::to_string(at.y) + ")";
+      const glm::dvec3 x(at.x, at.y, 0.0);
+      ++pattern;
+      expectMatches("tilted emitter, Li " + where,
+                    test::estimateLi(onPlane, downOnto(at.x, at.y, 0.1f), pattern, pattern, 8192),
+                    kPlaneAlbedo * le * tiltedEmitterFormFactor(x, up, up));
+      for (glm::dvec3 n : {up, kTiltedNormal, glm::normalize(glm::dvec3(-0.8, 0, 1))}) {
+        ++pattern;
+        expectMatches(
+            "tilted emitter, irradiance facing (" + std::to_string(n.x) + ", 0, " +
+                std::to_string(n.z) + ") " + where,
+            test::estimateIrradiance(inSpace, glm::vec3(x), glm::vec3(n), pattern, pattern, 8192),
+            kPiD * le * tiltedEmitterFormFactor(x, n, n));
+      }
+    }
+  }
+}
+
+// An area emitter over a smooth-normal plane (shading normal 30° towards −x, i.e. away from
+// the emitter): NEE weighs by n_s·ω, BRDF sampling draws about n_s, MIS mixes the two with
+// pdfs on n_s, and the horizon is the geometric one: Lo = ρ·Le·F with the cosine on n_s and
+// the polygon clipped by both planes (the shading horizon cuts the emitter as seen from the
+// origin).
+TEST(BlindSpots, AreaLightOnSmoothNormalsMatchesLambertsFormula) {
+  const glm::dvec3 le(3, 4, 5), up(0, 0, 1);
+  const glm::dvec3 away(-kTiltedNormal.x, 0.0, kTiltedNormal.z);
+  test::World world = planeWorld(glm::vec3(away));
+  addTiltedEmitter(world, le);
+  world.build();
+  uint32_t pattern = 700;
+  for (LightStrategy strategy :
+       {LightStrategy::Mis, LightStrategy::LightOnly, LightStrategy::BrdfOnly}) {
+    TraceSettings settings;
+    settings.strategy = strategy;
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+    for (glm::dvec2 at : {glm::dvec2(0.0, 0.0), glm::dvec2(-0.7, 0.4), glm::dvec2(1.0, 1.2)}) {
+      ++pattern;
+      expectMatches("area light on smooth normals, Li " + std::string(strategyName(strategy)) +
+                        " at (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ")",
+                    test::estimateLi(tracer, downOnto(at.x, at.y, 0.1f), pattern, pattern, 8192),
+                    kPlaneAlbedo * le * tiltedEmitterFormFactor({at.x, at.y, 0}, away, up));
+    }
   }
 }
 
