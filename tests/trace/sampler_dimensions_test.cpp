@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "test_scenes.h"
+#include "trace/rng.h"
 
 namespace bounce {
 namespace {
@@ -159,6 +160,66 @@ TEST(SamplerDimensions, RouletteFromTheFirstReflectionIsUnbiased) {
     EXPECT_TRUE(test::agreeWithin(eA.mean, eA.standardError(), eB.mean, eB.standardError(), 5.0))
         << name << " irradiance";
     pattern += 4;
+  }
+}
+
+// The camera's pixel jitter against the decisions of the path it starts, through
+// traceCamera itself: one wide pixel looks down on a plane lit by two equal emitters, A over
+// +x (alias bins 0 and 1: picked when the pick's first number is < 0.5) and B over −x (bins 2
+// and 3). The left half of the pixel (jitter x < 0.5) sees the −x side, lit mostly by B. If
+// the path's emitter pick reused the jitter's pair, the left half would always sample A and
+// the right half B: each side would sample the emitter far from it. The reference is computed
+// apart: the same tracer's Li on camera rays jittered by independent hashed numbers
+// (trace/rng.h). Light-only and MIS, 5 combined SE.
+TEST(SamplerDimensions, PixelJitterIsIndependentOfThePath) {
+  test::World world;
+  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0},
+          addMaterial(world.scene, glm::vec3(0.5f)));
+  const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), {4, 4, 4});
+  addQuad(world.scene, {0.3f, -0.3f, 0.5f}, {0.3f, 0.3f, 0.5f}, {0.9f, 0.3f, 0.5f},
+          {0.9f, -0.3f, 0.5f}, light);  // A, facing down
+  addQuad(world.scene, {-0.9f, -0.3f, 0.5f}, {-0.9f, 0.3f, 0.5f}, {-0.3f, 0.3f, 0.5f},
+          {-0.3f, -0.3f, 0.5f}, light);  // B, facing down
+  world.build();
+  // From (0, 0, 0.4) straight down, image x along world +x; the pixel spans x ∈ [−1.2, 1.2].
+  const Camera camera = test::lookAt({0, 0, 0.4f}, {0, 0, 0}, {0, 1, 0}, 2.0f * std::atan(3.0f));
+  uint32_t seed = 20;
+  for (LightStrategy strategy : {LightStrategy::LightOnly, LightStrategy::Mis}) {
+    TraceSettings settings;
+    settings.strategy = strategy;
+    settings.maxDepth = 1;
+    settings.spp = 8192;
+    settings.seed = ++seed;
+    const CameraRender render =
+        traceCamera(world.scene, world.geometry, *world.kernel, camera, 1, 1, settings);
+    const test::ImageMean pixel = test::imageMean(render, settings.spp);
+
+    const PathTracer tracer(world.scene, world.geometry, *world.kernel, settings);
+    SobolSampler sampler(++seed, 0u);
+    test::Estimate reference;
+    glm::dvec3 m2(0.0);
+    const int n = settings.spp;
+    for (int i = 0; i < n; ++i) {
+      const auto k = static_cast<uint32_t>(i);
+      const Ray ray =
+          cameraRay(camera, 1, 1, uniformFloat(seed, 2 * k), uniformFloat(seed, 2 * k + 1));
+      sampler.startSample(k);
+      sampler.setDimension(1);
+      const glm::dvec3 value(tracer.Li(ray, sampler));
+      const glm::dvec3 delta = value - reference.mean;
+      reference.mean += delta / static_cast<double>(i + 1);
+      m2 += delta * (value - reference.mean);
+    }
+    reference.n = n;
+    reference.variance = m2 / static_cast<double>(n - 1);
+    const char* name = strategy == LightStrategy::Mis ? "MIS" : "light-only";
+    std::printf("%s pixel: traceCamera %.5f, independent jitter %.5f (%+.2f%%, SE %.5f, %.5f)\n",
+                name, pixel.mean.g, reference.mean.g,
+                100.0 * (pixel.mean.g / reference.mean.g - 1.0), pixel.standardError.g,
+                reference.standardError().g);
+    EXPECT_TRUE(test::agreeWithin(pixel.mean, pixel.standardError, reference.mean,
+                                  reference.standardError(), 5.0))
+        << name;
   }
 }
 
