@@ -1,11 +1,12 @@
 // Scenes that make plausible estimator bugs visible where the square-over-a-parallel-plane
 // tests cannot: emitters of unequal area and radiance (the emitter-selection pmf must agree
-// with the pdf in the MIS weight), an emitter perpendicular to its receiver (the cosine at the
-// emitter and the cosine at the receiver differ) and surfaces with smooth normals (a delta
-// light's cosine belongs to the shading normal, its horizon to the geometric one). Each is
-// checked through PathTracer::Li and through PathTracer::irradiance, the baker's entry point,
-// against closed forms from tests/support, within 5 standard errors of the estimate (its
-// sample variance) or float rounding where the estimator is deterministic.
+// with the pdf in the MIS weight), emitters perpendicular or tilted 45° to their receivers
+// (the cosine at the emitter and the cosine at the receiver differ) and surfaces with smooth
+// normals (a light's cosine belongs to the shading normal, its horizon to the geometric one,
+// for delta and area lights). Each is checked through PathTracer::Li and, where it applies,
+// through PathTracer::irradiance, the baker's entry point, against closed forms from
+// tests/support, within 5 standard errors of the estimate (its sample variance) or float
+// rounding where the estimator is deterministic.
 #include <gtest/gtest.h>
 
 #include <cmath>
