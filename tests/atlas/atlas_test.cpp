@@ -169,9 +169,11 @@ TEST(AtlasDensity, TexelBudgetSetsTheDensityForSmallAndLargeScenes) {
   }
 }
 
-// Curved charts (least-squares conformal maps): angles nearly kept, areas within a factor 2 of
-// the density, the whole chart at the density. A cap of half-angle θ flattened conformally has
-// area scales spread by about 1/cos²(θ/2)² (stereographic): 1.32 at the 43° cone.
+// Curved charts (least-squares conformal maps): angles nearly kept, the whole chart at the
+// density. A spherical cap of half-angle θ mapped conformally (stereographically) has area scales
+// from its centre to its rim in the ratio 1/cos⁴(θ/2): 1.35 at the segmentation's 43° cone, so
+// the spread of texel area / world area over a chart's triangles is bounded by 1.5 (1.35 plus the
+// triangulation's own error); a cylinder is developable (exactly 1).
 TEST(AtlasDensity, ConformalChartsHaveBoundedDistortion) {
   Scene scene;
   addInstance(scene, addSphereMesh(scene, 24, 48), glm::mat4(1));
@@ -196,9 +198,10 @@ TEST(AtlasDensity, ConformalChartsHaveBoundedDistortion) {
                 "density, worst anisotropy %.4f\n",
                 instance, lo, hi, worstAnisotropy);
     EXPECT_NEAR(uvTotal / worldTotal, 1.0, 0.01) << "instance " << instance;
-    EXPECT_GT(lo, 0.5) << "instance " << instance;
-    EXPECT_LT(hi, 2.0) << "instance " << instance;
-    EXPECT_LT(worstAnisotropy, 1.25) << "instance " << instance;
+    EXPECT_LT(hi / lo, 1.5) << "instance " << instance;
+    EXPECT_GT(lo, 0.75) << "instance " << instance;
+    EXPECT_LT(hi, 1.33) << "instance " << instance;
+    EXPECT_LT(worstAnisotropy, 1.1) << "instance " << instance;
   }
 }
 
