@@ -138,6 +138,18 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     for (const glm::ivec2 c : cells) rects.push_back(c + settings.padding);
     const std::optional<Packing> packing = packRectangles(rects, settings.maxSize);
     if (!packing) {
+      // Coarser texels shrink every chart, down to one texel plus its padding each; when even
+      // that does not fit, no texel size will.
+      const bool allMinimal = std::all_of(cells.begin(), cells.end(),
+                                          [](glm::ivec2 c) { return c.x == 1 && c.y == 1; });
+      if (allMinimal) {
+        std::ostringstream reason;
+        reason << "the " << charts.size() << " lightmap charts of " << scene.source
+               << " do not fit in a " << settings.maxSize << " x " << settings.maxSize
+               << " atlas even at one texel each (with " << settings.padding
+               << " texels padding); raise the maximum atlas size";
+        throw std::runtime_error(reason.str());
+      }
       texelSize *= 1.1f;
       continue;
     }

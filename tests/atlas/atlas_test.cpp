@@ -301,6 +301,34 @@ TEST(AtlasMeshUv1, InvalidUv1IsRejectedWithANote) {
   EXPECT_NE(c.notes[0].find("fewer"), std::string::npos) << c.notes[0];
 }
 
+// Two triangles as two uv1 islands, `gap` apart in uv1 units (6 vertices, none shared).
+Scene twoIslands(float gap) {
+  Scene scene;
+  Mesh mesh;
+  mesh.name = "islands";
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  mesh.normals.assign(6, glm::vec3(0, 0, 1));
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  mesh.uv1 = {{0.0f, 0.0f},       {0.5f, 0.0f}, {0.5f, 0.5f},
+              {0.5f + gap, 0.0f}, {1.0f, 0.5f}, {0.5f + gap, 0.5f}};
+  scene.materials.push_back(Material{});
+  scene.meshes.push_back(mesh);
+  addInstance(scene, 0, glm::scale(glm::mat4(1), glm::vec3(3.0f, 2.0f, 1.0f)));
+  return scene;
+}
+
+// At 0.05 m per texel the uv1 square is about 98 texels across: a gap of 0.1 is about 10 texels,
+// one of 0.005 half a texel (less than the 2 texels of padding).
+TEST(AtlasMeshUv1, IslandsCloserThanThePaddingAreRejected) {
+  const Atlas wide = buildAtlas(twoIslands(0.1f), atTexelSize(0.05f));
+  EXPECT_EQ(wide.chartKinds.meshUv1, 1);
+  EXPECT_TRUE(wide.notes.empty());
+  const Atlas close = buildAtlas(twoIslands(0.005f), atTexelSize(0.05f));
+  EXPECT_EQ(close.chartKinds.meshUv1, 0);
+  ASSERT_EQ(close.notes.size(), 1u);
+  EXPECT_NE(close.notes[0].find("closer than 2 texels"), std::string::npos) << close.notes[0];
+}
+
 TEST(AtlasContent, UtilisationOnContentScenes) {
   for (const char* path :
        {"content/cornell_box/cornell_box.gltf", "content/point_over_plane/point_over_plane.gltf"}) {
@@ -347,6 +375,10 @@ TEST(AtlasSettingsCheck, NonsenseIsRefused) {
   EXPECT_GT(atlas.layout.texelSize, 0.001f);
   ASSERT_FALSE(atlas.notes.empty());
   EXPECT_EQ(overlapProblem(atlas), "");
+  // Every chart takes at least 3 × 3 texels with its padding: this scene's dozens of charts
+  // cannot fit in 8 × 8 at any texel size.
+  s.maxSize = 8;
+  EXPECT_THROW(buildAtlas(scene, s), std::runtime_error);
 }
 
 }  // namespace
