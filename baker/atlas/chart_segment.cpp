@@ -56,8 +56,7 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
   const std::size_t triangles = mesh.triangleCount();
 
   // The half-edge mesh over welded positions (a glTF mesh splits vertices at normal and UV
-  // seams; the charts must see through those). A triangle that would make an edge non-manifold
-  // is added on its own vertices: it then has no neighbours and becomes a chart of its own.
+  // seams; the charts must see through those).
   HalfEdgeMesh halfEdges;
   std::map<std::array<float, 3>, HalfEdgeMesh::VertexHandle> welded;
   auto vertexAt = [&](glm::vec3 p) -> HalfEdgeMesh::VertexHandle {
@@ -79,14 +78,19 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
       groups.degenerate.push_back(static_cast<uint32_t>(t));
       continue;
     }
+    // A face OpenMesh refuses (a third face on an edge, a vertex whose fan would not be a
+    // disc, or a flipped neighbour) is retried with one corner, then two, then all three on
+    // vertices of its own: it keeps as many neighbours as the half-edge structure allows.
     auto face = halfEdges.add_face(v[0], v[1], v[2]);
-    if (!face.is_valid()) {
-      std::array<HalfEdgeMesh::VertexHandle, 3> own;
-      for (int k = 0; k < 3; ++k) {
-        const glm::vec3 p = mesh.corner(t, k);
-        own[k] = halfEdges.add_vertex(HalfEdgeMesh::Point(p.x, p.y, p.z));
-      }
-      face = halfEdges.add_face(own[0], own[1], own[2]);
+    for (const int own : {1, 2, 4, 3, 5, 6, 7}) {
+      if (face.is_valid()) break;
+      std::array<HalfEdgeMesh::VertexHandle, 3> corner = v;
+      for (int k = 0; k < 3; ++k)
+        if (own & (1 << k)) {
+          const glm::vec3 p = mesh.corner(t, k);
+          corner[k] = halfEdges.add_vertex(HalfEdgeMesh::Point(p.x, p.y, p.z));
+        }
+      face = halfEdges.add_face(corner[0], corner[1], corner[2]);
     }
     faceTriangle.push_back(static_cast<uint32_t>(t));
   }
