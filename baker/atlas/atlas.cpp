@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "atlas/chart_flatten.h"
+#include "atlas/chart_merge.h"
 #include "atlas/chart_pack.h"
 #include "atlas/chart_segment.h"
 #include "atlas/mesh_uv1.h"
@@ -17,6 +18,8 @@ namespace {
 // Slack below which a chart's extent is not rounded up to one more texel (its last texel would
 // hold a sliver narrower than 1 % of a texel).
 constexpr float kExtentSlack = 0.01f;
+// Charts covering fewer texels than this merge across folds with small neighbours.
+constexpr double kSmallChartTexels = 16.0;
 
 struct StaticInstance {
   uint32_t instance = 0;
@@ -35,18 +38,24 @@ WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
 }
 
 // The charts of one instance, flattened in metres and turned to their smallest rectangle.
-std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world) {
+// Charts under kSmallChartTexels texels at `texelSize` may merge across folds (chart_merge.h).
+std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, float texelSize) {
   const TriangleGroups groups = segmentCharts(world, SegmentSettings{});
+  std::vector<FlatGroup> flat;
+  for (const std::vector<uint32_t>& group : groups.charts)
+    flat.push_back({group, flattenChart(world, group, 1.0f)});
+  const double smallArea = kSmallChartTexels * static_cast<double>(texelSize) * texelSize;
+  flat = mergeSmallCharts(world, std::move(flat), groups.contacts, smallArea);
   std::vector<Chart> charts;
-  for (const std::vector<uint32_t>& group : groups.charts) {
-    FlatChart flat = flattenChart(world, group, 1.0f);
-    if (!flat.cornerUv.empty()) {
-      orientChart(flat.cornerUv);
-      charts.push_back({instance, group, std::move(flat.cornerUv), flat.source});
+  for (FlatGroup& group : flat) {
+    if (!group.flat.cornerUv.empty()) {
+      orientChart(group.flat.cornerUv);
+      charts.push_back(
+          {instance, group.triangles, std::move(group.flat.cornerUv), group.flat.source});
       continue;
     }
     // No flattening of the whole region is free of folds: one chart per triangle.
-    for (const uint32_t t : group) {
+    for (const uint32_t t : group.triangles) {
       FlatChart single = flattenPlanar(world, {t}, 1.0f);
       orientChart(single.cornerUv);
       charts.push_back({instance, {t}, std::move(single.cornerUv), ChartSource::Planar});
@@ -128,7 +137,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
         uv1Notes.push_back("mesh '" + mesh.name + "' (instance '" +
                            scene.instances[s.instance].name + "'): " + uv1.reason +
                            ", so its lightmap UVs were generated");
-      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world);
+      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texelSize);
       for (Chart chart : s.charts) {
         cells.push_back(toTexels(chart, texelSize));
         charts.push_back(std::move(chart));

@@ -205,13 +205,26 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
       break;
     }
   }
-  for (const std::vector<int>& faces : chartFaces) {
-    if (faces.empty()) continue;
+  std::vector<int> finalIndex(chartFaces.size(), -1);
+  for (std::size_t c = 0; c < chartFaces.size(); ++c) {
+    if (chartFaces[c].empty()) continue;
+    finalIndex[c] = static_cast<int>(groups.charts.size());
     std::vector<uint32_t> chart;
-    for (const int f : faces) chart.push_back(faceTriangle[f]);
+    for (const int f : chartFaces[c]) chart.push_back(faceTriangle[f]);
     std::sort(chart.begin(), chart.end());
     groups.charts.push_back(std::move(chart));
   }
+  std::map<std::pair<int, int>, double> contact;
+  for (std::size_t f = 0; f < faceChart.size(); ++f)
+    for (auto h : halfEdges.fh_range(halfEdges.face_handle(static_cast<int>(f)))) {
+      const auto g = halfEdges.opposite_face_handle(h);
+      if (!g.is_valid()) continue;
+      const int a = finalIndex[faceChart[f]], b = finalIndex[faceChart[g.idx()]];
+      if (a < b) contact[{a, b}] += static_cast<double>(halfEdges.calc_edge_length(h));
+    }
+  for (const auto& [pair, length] : contact)
+    groups.contacts.push_back(
+        {static_cast<uint32_t>(pair.first), static_cast<uint32_t>(pair.second), length});
   return groups;
 }
 

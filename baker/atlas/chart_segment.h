@@ -23,9 +23,16 @@ struct SegmentSettings {
   double degenerateArea = 1e-14;  // m²: triangles below it join no chart (see TriangleGroups)
 };
 
+// Two charts that share edges (in the half-edge structure), whatever the fold between them.
+struct ChartContact {
+  uint32_t a = 0, b = 0;  // indices into TriangleGroups::charts, a < b
+  double length = 0.0;    // metres of shared edges
+};
+
 struct TriangleGroups {
   std::vector<std::vector<uint32_t>> charts;  // triangle indices, each a connected region
   std::vector<uint32_t> degenerate;           // triangles with no area or no distinct corners
+  std::vector<ChartContact> contacts;         // sorted by (a, b)
 };
 
 TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& settings);

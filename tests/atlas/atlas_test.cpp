@@ -117,10 +117,14 @@ TEST(AtlasLayout, NoOverlapAndPaddingOnVariedScenes) {
   wide.padding = 5;
   const Atlas padded = buildAtlas(varied, wide);
   EXPECT_EQ(overlapProblem(padded), "");
-  const Scene cornell = contentScene("content/cornell_box/cornell_box.gltf");
-  const Atlas atlas = buildAtlas(cornell, AtlasSettings{});
-  EXPECT_EQ(regionProblem(cornell, atlas), "");
-  EXPECT_EQ(overlapProblem(atlas), "");
+  for (const std::string& path :
+       {std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box/cornell_box.gltf",
+        std::string(BOUNCE_SHARED_SCENES) + "/mcguire_cornell_box/CornellBox-Sphere.obj"}) {
+    const Scene scene = loadScene(path);
+    const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+    EXPECT_EQ(regionProblem(scene, atlas), "") << path;
+    EXPECT_EQ(overlapProblem(atlas), "") << path;
+  }
 }
 
 TEST(AtlasLayout, DynamicInstancesGetNoRegion) {
@@ -223,6 +227,21 @@ TEST(AtlasCharts, CornellBoxWallsAreOneChartEach) {
     EXPECT_EQ(charts.size(), expected) << name;
   }
   EXPECT_EQ(static_cast<int>(allCharts.size()), atlas.layout.chartCount);
+}
+
+// Tiny charts merge across folds: a 10 cm cube at 5 cm texels has faces of 4 texels, each of
+// which alone would take 4 × 4 texels with its padding; a large cube keeps its six faces apart.
+TEST(AtlasCharts, TinyChartsMergeAcrossFoldsLargeOnesDoNot) {
+  Scene scene;
+  const uint32_t cube = addUnitCubeMesh(scene);
+  addInstance(scene, cube, glm::scale(glm::mat4(1), glm::vec3(0.1f)));
+  addInstance(scene, cube, glm::translate(glm::mat4(1), glm::vec3(1, 0, 0)));
+  const Atlas atlas = buildAtlas(scene, atTexelSize(0.05f));
+  EXPECT_EQ(overlapProblem(atlas), "");
+  const std::set<uint32_t> tiny(atlas.triangleChart[0].begin(), atlas.triangleChart[0].end());
+  const std::set<uint32_t> large(atlas.triangleChart[1].begin(), atlas.triangleChart[1].end());
+  EXPECT_LE(tiny.size(), 2u);
+  EXPECT_EQ(large.size(), 6u);
 }
 
 // Two instances of one mesh at scales 1 and 2: 4× the atlas area and 4× the texels.
@@ -339,6 +358,15 @@ TEST(AtlasContent, UtilisationOnContentScenes) {
     EXPECT_LE(atlas.layout.width, 1024) << path;
     EXPECT_LE(atlas.layout.height, 1024) << path;
   }
+}
+
+// By hand (about a minute): atlas_test --gtest_also_run_disabled_tests --gtest_filter=*Conference*
+TEST(AtlasContent, DISABLED_ConferenceRoomIsValid) {
+  const Scene scene = loadScene(std::string(BOUNCE_SHARED_SCENES) + "/conference/conference.obj");
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  EXPECT_NEAR(recountUtilisation(atlas), atlas.layout.utilisation, 1e-6);
 }
 
 TEST(AtlasContent, SameSceneSameLayout) {
