@@ -105,7 +105,8 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     if (instance.mobility != Mobility::Static) continue;
     StaticInstance s{i, worldMeshOf(scene, instance), {}};
     if (s.world.triangleCount() == 0) continue;
-    for (std::size_t t = 0; t < s.world.triangleCount(); ++t) staticArea += s.world.area(t);
+    for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
+      if (const double a = s.world.area(t); std::isfinite(a)) staticArea += a;
     statics.push_back(std::move(s));
   }
   atlas.staticArea = staticArea;

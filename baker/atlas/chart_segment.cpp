@@ -72,9 +72,14 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
   const bool omerrWasEnabled = omerr().is_enabled();
   omerr().disable();
   for (std::size_t t = 0; t < triangles; ++t) {
+    // Non-finite corners (never from the loaders, which refuse them) join no chart either.
+    if (!(mesh.area(t) >= settings.degenerateArea)) {
+      groups.degenerate.push_back(static_cast<uint32_t>(t));
+      continue;
+    }
     std::array<HalfEdgeMesh::VertexHandle, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = vertexAt(mesh.corner(t, k));
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] || mesh.area(t) < settings.degenerateArea) {
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
       groups.degenerate.push_back(static_cast<uint32_t>(t));
       continue;
     }

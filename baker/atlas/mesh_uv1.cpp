@@ -73,6 +73,10 @@ Uv1Check checkMeshUv1(const Mesh& mesh, const WorldMesh& world, float texelSize,
         std::abs(static_cast<double>(signedArea(mesh.uv1[i[0]], mesh.uv1[i[1]], mesh.uv1[i[2]])));
     worldArea += world.area(t);
   }
+  if (!std::isfinite(worldArea)) {
+    check.reason = "its positions are not finite";
+    return check;
+  }
   if (!(uvArea > 0.0)) {
     check.reason = "its TEXCOORD_1 has no area";
     return check;

@@ -383,6 +383,25 @@ TEST(AtlasContent, SameSceneSameLayout) {
   }
 }
 
+// Triangles without area (repeated corners, collinear, non-finite) share a one-texel chart;
+// the rest of the mesh is laid out as usual.
+TEST(AtlasCharts, DegenerateTrianglesGetOneTexel) {
+  Scene scene;
+  const uint32_t quad = addUnitQuadMesh(scene);
+  Mesh& mesh = scene.meshes[quad];
+  mesh.positions.insert(mesh.positions.end(),
+                        {{2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {std::nanf(""), 0, 0}});
+  mesh.normals.resize(mesh.positions.size(), glm::vec3(0, 0, 1));
+  mesh.indices.insert(mesh.indices.end(), {4, 5, 6, 0, 1, 7, 4, 4, 5});
+  addInstance(scene, quad, glm::mat4(1));
+  const Atlas atlas = buildAtlas(scene, atTexelSize(0.1f));
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  EXPECT_EQ(atlas.chartKinds.degenerate, 1);
+  EXPECT_EQ(atlas.chartKinds.planar, 1);
+  EXPECT_NEAR(atlas.staticArea, 1.0, 1e-6);
+}
+
 TEST(AtlasSettingsCheck, NonsenseIsRefused) {
   const Scene scene = variedScene();
   AtlasSettings s;
