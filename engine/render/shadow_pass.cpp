@@ -28,10 +28,11 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                        std::to_string(kMaxPointShadows) + " point lights cast no shadows");
 }
 
-void ShadowPass::render(const GpuScene& scene, const Box& visibleBox) {
+void ShadowPass::render(const GpuScene& scene, const ViewVolume& view) {
+  lastFrame_ = {};
   if (!settings_.enabled) return;
-  spot_.render(scene, visibleBox, depth_, target_);
-  point_.render(scene, visibleBox, depth_, target_);
+  lastFrame_ += spot_.render(scene, view, depth_, target_);
+  lastFrame_ += point_.render(scene, view, depth_, target_);
   gl::checkErrors("shadow pass");
 }
 

@@ -22,10 +22,12 @@ class ShadowPass {
   ShadowPass(const GpuScene& scene, const PunctualLights& lights, const ShadowSettings& settings,
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
 
-  // `visibleBox`: world box of what the camera can see (its frustum within the scene bounds).
-  void render(const GpuScene& scene, const Box& visibleBox);
+  // `view`: what the camera can see; maps that cannot reach it are not rendered.
+  void render(const GpuScene& scene, const ViewVolume& view);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
+  // What the last render() drew (culling's effect).
+  const ShadowDrawCount& lastFrame() const { return lastFrame_; }
 
  private:
   ShadowSettings settings_;
@@ -34,6 +36,7 @@ class ShadowPass {
   std::vector<int> lightSlot_;  // per punctual light: its map's slot in its kind, −1 for none
   SpotShadowMaps spot_;
   PointShadowMaps point_;
+  ShadowDrawCount lastFrame_;
 };
 
 }  // namespace bounce
