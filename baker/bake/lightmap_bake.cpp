@@ -57,6 +57,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.relativeError = std::move(gathered.relativeError);
   bake.rays = guard.rays + gathered.rays;
   bake.totalSamples = gathered.totalSamples;
+  bake.nonFiniteSamples = gathered.nonFiniteSamples;
   bake.seconds.irradiance = clock.lap();
 
   std::vector<uint8_t> valid(texels, 0);

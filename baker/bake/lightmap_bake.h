@@ -41,6 +41,7 @@ struct LightmapBake {
   uint64_t pointsInside = 0, pointsAcross = 0;
   uint64_t rays = 0;  // leak guard + irradiance
   uint64_t totalSamples = 0;
+  uint64_t nonFiniteSamples = 0;  // counted as black (texel_irradiance.h)
   // Estimated error over valid covered texels with E > 0: mean and 95th percentile of the
   // per-texel relative standard error.
   float meanRelativeError = 0.0f;

@@ -80,6 +80,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   out.irradiance = Image(coverage.width, coverage.height);
   out.samples.assign(texels, 0);
   out.relativeError.assign(texels, 0.0f);
+  std::vector<uint32_t> nonFinite(texels, 0);
   const int maxSpp = std::max(settings.maxSpp, 1);
   const auto rows = static_cast<uint64_t>(coverage.height);
   ProgressLine progress("bounce-bake: irradiance", rows, settings.progress);
@@ -103,10 +104,14 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         glm::vec3 e(0.0f);
         if (anyBakedDirect) {
           sampler.setDimension(kDimBakedDirect);
-          e += bakedDirect.irradiance(point.position, point.shadingNormal, sampler);
+          bool bad = false;
+          e += bakedDirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
+          nonFinite[texel] += bad ? 1 : 0;
         }
         sampler.setDimension(kDimIndirect);
-        e += indirect.irradiance(point.position, point.shadingNormal, sampler);
+        bool bad = false;
+        e += indirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
+        nonFinite[texel] += bad ? 1 : 0;
         sum += glm::dvec3(e);
         const double y = luminance(e);
         const double delta = y - mean;
@@ -117,7 +122,8 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       const double standardError = std::sqrt(variance / static_cast<double>(n));
       const float relative = mean > 0.0 ? static_cast<float>(standardError / mean) : 0.0f;
       out.relativeError[texel] = relative;
-      if (settings.targetError > 0.0f && relative < settings.targetError) break;
+      if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && relative < settings.targetError)
+        break;
       if (mean <= 0.0 && variance <= 0.0) break;  // nothing reaches this texel
     }
     out.samples[texel] = n;
@@ -141,6 +147,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         });
   });
   for (const uint32_t s : out.samples) out.totalSamples += s;
+  for (const uint32_t n : nonFinite) out.nonFiniteSamples += n;
   out.rays = counting.count();
   out.seconds = progress.elapsedSeconds();
   return out;

@@ -8,10 +8,10 @@
 // Sample s of texel i uses the sampler pattern (seed, i): dimension 0 picks one of the texel's
 // points uniformly, the baked direct light uses dimensions 1–4 and the indirect path 5 on.
 // The texel value is the mean over its samples, so it estimates the mean of E over the texel's
-// covered area. Samples are taken in batches of 16 until the relative standard error of the
-// luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is reached; a texel
-// whose samples are all zero stops after the first batch (error 0). Every texel is computed by
-// one task from its own pattern: the result does not depend on the thread count.
+// covered area. Samples are taken in batches of 16 until, from 32 samples on, the relative standard
+// error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is reached; a
+// texel whose samples are all zero stops after the first batch (error 0). Every texel is computed
+// by one task from its own pattern: the result does not depend on the thread count.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +35,9 @@ struct IrradianceSettings {
 };
 
 inline constexpr int kIrradianceBatch = 16;
+// The error estimate is trusted from two batches on (at 16 samples its own relative
+// uncertainty, 1/√(2(n−1)) ≈ 18%, stops too many texels early on a lucky estimate).
+inline constexpr uint32_t kMinAdaptiveSpp = 32;
 
 struct TexelIrradiance {
   Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered
@@ -42,6 +45,9 @@ struct TexelIrradiance {
   std::vector<float> relativeError;  // per texel, estimated relative standard error (0 uncovered)
   uint64_t rays = 0;                 // closest-hit and occlusion rays traced
   uint64_t totalSamples = 0;
+  // Samples whose estimate was non-finite (bad scene data) and counted as black: each biases
+  // its texel low (PathTracer::irradiance).
+  uint64_t nonFiniteSamples = 0;
   double seconds = 0.0;
 };
 
