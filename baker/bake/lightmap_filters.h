@@ -42,7 +42,7 @@ struct Seam {
 std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
                             const LightmapLayout& layout);
 
-// Adjusts the texels under each seam (least-squares, Gauss–Seidel) so that bilinear lookups at
+// Adjusts the texels under each seam (least change, Kaczmarz sweeps) so that bilinear lookups at
 // matching points on both sides agree: points every half texel along each seam. Returns the
 // largest remaining |difference| relative to the larger of the two lookups' luminance.
 float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations = 64);
