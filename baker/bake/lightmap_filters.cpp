@@ -248,6 +248,9 @@ void denoise(Image& image, const DenoiseGuide& guide) {
         if (guide.label[i] == 0) continue;
         const float li = luminance(image.pixels[i]);
         const float sigmaI = guide.relativeError[i] * li;
+        // A texel no light reaches (every sample exactly 0) is exact: nothing to denoise, and
+        // light from a neighbour across a thin wall must not blur into it.
+        if (li == 0.0f && sigmaI == 0.0f) continue;
         glm::vec3 sum(0.0f);
         float weightSum = 0.0f;
         for (int dy = -2; dy <= 2; ++dy) {

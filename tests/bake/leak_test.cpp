@@ -14,7 +14,8 @@ namespace {
 // Two rooms side by side, x ∈ [0, 2], separated by a wall 2 cm thick at x ∈ [1.02, 1.04]
 // (a fifth of a 10 cm texel, inside the floor's texel row [1.0, 1.1]); floor, ceiling and the
 // long walls run through both rooms. A light hangs in room A (x < 1) only. Room B receives no
-// light at all, so every texel whose centre lies in it must be exactly 0.
+// light at all, so every texel whose centre lies in it must be exactly 0, with the denoiser
+// too (it must not blur room A's light across the wall within the floor's chart).
 TEST(Leaks, NoLightThroughAWallThinnerThanATexel) {
   test::World world;
   const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.8f));
@@ -27,27 +28,32 @@ TEST(Leaks, NoLightThroughAWallThinnerThanATexel) {
                 {0.3f, 0.95f, 0.65f}, lamp);  // faces down
   world.build();
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.1f, 64);
-  const LightmapBake bake = bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout,
-                                         test::testBakeSettings(32));
-  int roomB = 0, litA = 0;
-  for (int y = 0; y < atlas.layout.height; ++y) {
-    for (int x = 0; x < atlas.layout.width; ++x) {
-      const std::size_t t = bake.irradiance.index(x, y);
-      glm::vec3 p;
-      uint32_t instance;
-      if (!bake.covered[t] || !atlas.texelCentre(x, y, p, instance) || instance >= 6) continue;
-      if (p.x > 1.04f) {
-        EXPECT_EQ(bake.irradiance.pixels[t], glm::vec3(0.0f))
-            << "room B texel (" << x << "," << y << ") at " << p.x << "," << p.y << "," << p.z;
-        ++roomB;
-      } else if (p.x < 1.0f && luminance(bake.irradiance.pixels[t]) > 0.0f) {
-        ++litA;
+  for (const bool denoise : {false, true}) {
+    LightmapBakeSettings settings = test::testBakeSettings(32);
+    settings.denoise = denoise;
+    const LightmapBake bake =
+        bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+    int roomB = 0, litA = 0;
+    for (int y = 0; y < atlas.layout.height; ++y) {
+      for (int x = 0; x < atlas.layout.width; ++x) {
+        const std::size_t t = bake.irradiance.index(x, y);
+        glm::vec3 p;
+        uint32_t instance;
+        if (!bake.covered[t] || !atlas.texelCentre(x, y, p, instance) || instance >= 6) continue;
+        if (p.x > 1.04f) {
+          EXPECT_EQ(bake.irradiance.pixels[t], glm::vec3(0.0f))
+              << "denoise " << denoise << ": room B texel (" << x << "," << y << ") at " << p.x
+              << "," << p.y << "," << p.z;
+          ++roomB;
+        } else if (p.x < 1.0f && luminance(bake.irradiance.pixels[t]) > 0.0f) {
+          ++litA;
+        }
       }
     }
+    EXPECT_GT(roomB, 150);  // floor, ceiling, far wall and both long walls' B halves
+    EXPECT_GT(litA, 150);
+    EXPECT_GT(bake.pointsAcross, 0u);
   }
-  EXPECT_GT(roomB, 150);  // floor, ceiling, far wall and both long walls' B halves
-  EXPECT_GT(litA, 150);
-  EXPECT_GT(bake.pointsAcross, 0u);
 }
 
 // A closed room lit from the ceiling, a 30 cm block (five outward faces, no bottom) resting on
