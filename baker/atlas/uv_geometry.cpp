@@ -89,6 +89,37 @@ std::optional<std::pair<uint32_t, uint32_t>> findOverlappingTriangles(
   return std::nullopt;
 }
 
+std::vector<glm::vec2> clipTriangleToBox(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 lo,
+                                         glm::vec2 hi) {
+  std::vector<glm::vec2> polygon = {a, b, c}, clipped;
+  // Keeps the side of the line coordinate[axis] = bound where sign·(p[axis] − bound) ≥ 0.
+  auto clip = [&](int axis, float bound, float sign) {
+    clipped.clear();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const glm::vec2 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+      const float dp = sign * (p[axis] - bound), dq = sign * (q[axis] - bound);
+      if (dp >= 0.0f) clipped.push_back(p);
+      if ((dp >= 0.0f) != (dq >= 0.0f)) clipped.push_back(p + (q - p) * (dp / (dp - dq)));
+    }
+    polygon.swap(clipped);
+  };
+  clip(0, lo.x, 1.0f);
+  if (!polygon.empty()) clip(0, hi.x, -1.0f);
+  if (!polygon.empty()) clip(1, lo.y, 1.0f);
+  if (!polygon.empty()) clip(1, hi.y, -1.0f);
+  if (polygon.size() < 3) polygon.clear();
+  return polygon;
+}
+
+float polygonArea(const std::vector<glm::vec2>& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::dvec2 p(polygon[i]), q(polygon[(i + 1) % polygon.size()]);
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return static_cast<float>(0.5 * std::abs(twice));
+}
+
 std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points) {
   std::sort(points.begin(), points.end(),
             [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });

@@ -48,6 +48,15 @@ void forEachTouchedTexel(glm::vec2 a, glm::vec2 b, glm::vec2 c, int width, int h
     }
 }
 
+// The part of triangle abc inside the square [lo, hi]: a convex polygon of up to 7 corners, in
+// the triangle's winding, empty when they do not overlap (Sutherland–Hodgman clipping). What the
+// baker samples for a texel the triangle touches; its area is the texel's share of the triangle.
+std::vector<glm::vec2> clipTriangleToBox(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 lo,
+                                         glm::vec2 hi);
+
+// Area of a simple polygon (absolute value), in the units of its points squared.
+float polygonArea(const std::vector<glm::vec2>& polygon);
+
 // The first pair of triangles (indices into the list, 3 corners each) whose interiors overlap
 // by more than `tolerance`, or nothing. A uniform grid keeps it near-linear.
 std::optional<std::pair<uint32_t, uint32_t>> findOverlappingTriangles(

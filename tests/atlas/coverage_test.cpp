@@ -75,6 +75,36 @@ TEST(TexelCoverage, EdgeOnATexelBoundaryTouchesOneSide) {
   }
 }
 
+// The texel parts of a triangle tile it: their areas sum to its area, each lies inside its
+// texel and inside the triangle, and a part has area exactly where the texel is touched.
+TEST(TexelCoverage, TexelPartsTileTheTriangle) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coordinate(0.0f, 9.0f);
+  for (int trial = 0; trial < 200; ++trial) {
+    glm::vec2 p[3];
+    for (glm::vec2& c : p) c = {coordinate(rng), coordinate(rng)};
+    const float area = std::abs(signedArea(p[0], p[1], p[2]));
+    double sum = 0.0;
+    for (int y = 0; y < 9; ++y)
+      for (int x = 0; x < 9; ++x) {
+        const glm::vec2 lo(static_cast<float>(x), static_cast<float>(y));
+        const std::vector<glm::vec2> part = clipTriangleToBox(p[0], p[1], p[2], lo, lo + 1.0f);
+        const double partArea = polygonArea(part);
+        const double exact = clippedArea({glm::dvec2(p[0]), glm::dvec2(p[1]), glm::dvec2(p[2])},
+                                         glm::dvec2(lo), glm::dvec2(lo + 1.0f));
+        EXPECT_NEAR(partArea, exact, 1e-4) << trial << " texel " << x << "," << y;
+        for (const glm::vec2 q : part) {
+          EXPECT_GE(q.x, lo.x - 1e-5f);
+          EXPECT_LE(q.x, lo.x + 1.0f + 1e-5f);
+          EXPECT_GE(q.y, lo.y - 1e-5f);
+          EXPECT_LE(q.y, lo.y + 1.0f + 1e-5f);
+        }
+        sum += partArea;
+      }
+    EXPECT_NEAR(sum, area, 1e-4 * std::max(1.0f, area)) << trial;
+  }
+}
+
 TEST(UvOverlap, SharedEdgesAreNotOverlapsCrossingsAre) {
   const std::vector<glm::vec2> fan = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
   EXPECT_FALSE(findOverlappingTriangles(fan, 1e-4f).has_value());
