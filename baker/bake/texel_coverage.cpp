@@ -1,5 +1,7 @@
 #include "bake/texel_coverage.h"
 
+#include "atlas/uv_geometry.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,12 +33,6 @@ struct Fragment {
   std::array<glm::vec2, 8> polygon;
 };
 
-float polygonArea(const glm::vec2* p, int n) {
-  float twice = 0.0f;
-  for (int i = 0; i < n; ++i) twice += cross2(p[i], p[(i + 1) % n]);
-  return 0.5f * std::abs(twice);
-}
-
 }  // namespace
 
 std::vector<InstanceBase> instanceBases(const Scene& scene) {
@@ -49,30 +45,6 @@ std::vector<InstanceBase> instanceBases(const Scene& scene) {
     next.vertex += static_cast<uint32_t>(mesh.positions.size());
   }
   return bases;
-}
-
-std::vector<glm::vec2> clipTexelToTriangle(int x, int y, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-  const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
-  std::vector<glm::vec2> poly = {{fx, fy}, {fx + 1, fy}, {fx + 1, fy + 1}, {fx, fy + 1}};
-  // Keep the inside of each edge: the side the opposite corner lies on.
-  if (cross2(b - a, c - a) < 0.0f) std::swap(b, c);
-  if (!(cross2(b - a, c - a) > 0.0f)) return {};  // degenerate in the atlas
-  const std::array<glm::vec2, 3> corner = {a, b, c};
-  std::vector<glm::vec2> next;
-  for (int e = 0; e < 3 && !poly.empty(); ++e) {
-    const glm::vec2 p = corner[e], q = corner[(e + 1) % 3];
-    auto side = [&](glm::vec2 v) { return cross2(q - p, v - p); };  // ≥ 0 inside
-    next.clear();
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const glm::vec2 u = poly[i], v = poly[(i + 1) % poly.size()];
-      const float su = side(u), sv = side(v);
-      if (su >= 0.0f) next.push_back(u);
-      if ((su >= 0.0f) != (sv >= 0.0f)) next.push_back(u + (v - u) * (su / (su - sv)));
-    }
-    poly.swap(next);
-  }
-  if (poly.size() < 3) return {};
-  return poly;
 }
 
 TexelCoverage buildTexelCoverage(const Scene& scene, const WorldGeometry& geometry,
@@ -114,10 +86,10 @@ TexelCoverage buildTexelCoverage(const Scene& scene, const WorldGeometry& geomet
       const int y1 = std::min(layout.height - 1, static_cast<int>(std::floor(hi.y)));
       for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
+          const glm::vec2 texelMin(static_cast<float>(x), static_cast<float>(y));
           const std::vector<glm::vec2> poly =
-              clipTexelToTriangle(x, y, image.uv[0], image.uv[1], image.uv[2]);
-          if (poly.size() < 3 || polygonArea(poly.data(), static_cast<int>(poly.size())) <= 0.0f)
-            continue;
+              clipTriangleToBox(image.uv[0], image.uv[1], image.uv[2], texelMin, texelMin + 1.0f);
+          if (poly.size() < 3 || !(polygonArea(poly) > 0.0f)) continue;
           Fragment f;
           f.texel = static_cast<uint32_t>(y * layout.width + x);
           f.image = imageIndex;

@@ -2,7 +2,8 @@
 //
 // A texel (x, y) covers [x, x+1] × [y, y+1] in texel space (atlas UV × (width, height), see
 // engine/bake/lightmap_layout.h). Its part of every triangle whose atlas image overlaps it is
-// found exactly by clipping the texel square against the triangle (Sutherland–Hodgman), so a
+// found exactly by clipping the triangle against the texel square (atlas/uv_geometry.h
+// clipTriangleToBox, Sutherland–Hodgman, the same rule the atlas reports coverage by), so a
 // texel touched by any sliver of a triangle is covered (conservative coverage: chart edges are
 // never missed) and a texel straddling several triangles gets each triangle's part. Candidate
 // sample points are drawn uniformly by area over those clipped polygons (a scrambled Sobol
@@ -49,10 +50,6 @@ struct InstanceBase {
   uint32_t vertex = 0;
 };
 std::vector<InstanceBase> instanceBases(const Scene& scene);
-
-// Convex polygon of the texel square [x, x+1] × [y, y+1] clipped to the triangle a b c (texel
-// space, either winding); empty when they do not overlap. Exposed for tests.
-std::vector<glm::vec2> clipTexelToTriangle(int x, int y, glm::vec2 a, glm::vec2 b, glm::vec2 c);
 
 // `pointsPerTexel` candidate points per covered texel, from the Sobol pattern (seed, texel).
 // geometry = flatten(scene); the layout's corner UVs follow each mesh's `indices`.
