@@ -234,10 +234,14 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
 
 void denoise(Image& image, const DenoiseGuide& guide) {
   static constexpr float kStop = 1.5f;
+  static constexpr float kMaxStepMetres = 0.05f;
   static constexpr std::array<float, 5> kB3 = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
   const int w = image.width, h = image.height;
   Image next = image;
   for (const int step : {1, 2, 4}) {
+    // Irradiance gradients have a world-space scale: a pass whose step spans more than
+    // kMaxStepMetres blurs them (measured: 2.2 cm texels, docs/baker.md), so it is skipped.
+    if (step > 1 && static_cast<float>(step) * guide.texelSize > kMaxStepMetres) break;
     // Position tolerance grows with the step so that the kernel's reach is not cut off.
     const float sigmaPosition = static_cast<float>(step) * guide.texelSize;
     const float invTwoSigma2 =

@@ -50,7 +50,8 @@ float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations =
 // Largest |bilinear(side a) − bilinear(side b)| (luminance) over the seams' points, W/m².
 float largestSeamJump(const Image& image, const std::vector<Seam>& seams);
 
-// Edge-aware à-trous denoiser (3 passes of a 5×5 B3-spline kernel, steps 1, 2, 4), guided per
+// Edge-aware à-trous denoiser (up to 3 passes of a 5×5 B3-spline kernel, steps 1, 2, 4; a step
+// longer than 5 cm on the surface is skipped), guided per
 // texel by world position (σ = step × texel size), normal (cos³²) and chart label; never mixes
 // texels of different labels, and weighs luminance differences by a Gaussian of 1.5 combined
 // standard errors (σ = relativeError × value), so differences the noise cannot explain stay.

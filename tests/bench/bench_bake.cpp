@@ -5,6 +5,7 @@
 // sweep of target errors, with and without the denoiser, for two texel budgets (docs/charts).
 //
 //   bench_bake [--scene FILE] [--texels N] [--reference-spp N] [--sweep FILE.csv]
+//              [--coarse-denoised-only 1]   (the sweep's 4096-texel denoised line only)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -164,6 +165,7 @@ int main(int argc, char** argv) {
   std::string scenePath = BOUNCE_SOURCE_DIR "/content/cornell_box/cornell_box.gltf";
   std::string sweep;
   int texels = 400, referenceSpp = 8192;
+  int coarseOnly = 0;  // --coarse-denoised-only 1: the sweep's 4096-texel denoised line only
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--scene")
@@ -174,6 +176,8 @@ int main(int argc, char** argv) {
       texels = std::stoi(argv[i + 1]);
     else if (flag == "--reference-spp")
       referenceSpp = std::stoi(argv[i + 1]);
+    else if (flag == "--coarse-denoised-only")
+      coarseOnly = std::stoi(argv[i + 1]);
     else {
       std::fprintf(stderr, "bench_bake: unknown option %s\n", argv[i]);
       return 2;
@@ -232,11 +236,13 @@ int main(int argc, char** argv) {
                  "texel_budget,texel_size_m,denoise,target_error,wall_s,cpu_s,spp_mean,"
                  "estimated_error,mean_abs_rel_error,rms_rel_error,reference_error\n");
     for (const int budget : {kDefaultTexelBudget, kDefaultTexelBudget / 4}) {
+      if (coarseOnly && budget == kDefaultTexelBudget) continue;
       AtlasSettings s;
       s.texelBudget = budget;
       const Atlas a = buildAtlas(scene, s);
       const Reference r = reference(scene, geometry, *kernel, a.layout, texels, referenceSpp);
       for (const bool denoise : {false, true}) {
+        if (coarseOnly && !denoise) continue;
         for (const float target : {0.4f, 0.2f, 0.1f, 0.05f, 0.03f}) {
           LightmapBakeSettings settings = defaults;
           settings.denoise = denoise;
