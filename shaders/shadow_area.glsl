@@ -37,10 +37,11 @@ float areaShadowDistance(int light, vec3 direction) {
 }
 
 // Distance along the unit direction w from c to the receiver's plane (through p, normal n), or
-// a huge value when w does not reach that plane (everything along w is in front of it).
+// a huge value when w does not reach that plane (everything along w is on c's side of it). c may
+// lie on either side: a light straddling the receiver's plane lights it with its upper part.
 float receiverPlaneDistance(vec3 c, vec3 w, vec3 p, vec3 n) {
   float along = dot(n, w);
-  float t = along < 0.0 ? dot(n, p - c) / along : -1.0;
+  float t = abs(along) > 1e-8 ? dot(n, p - c) / along : -1.0;
   return t > 0.0 ? t : 1e30;
 }
 

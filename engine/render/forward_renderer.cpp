@@ -51,7 +51,7 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   // What the camera can see: its frustum within the scene's bounds.
   const Box visible = intersect(frustumBox(cameraViewProjection), p.scene.bounds());
-  p.shadows.render(p.scene, visible);
+  p.shadows.render(p.scene, visible, cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
   p.forward.draw(p.scene, p.lights, p.shadows, cameraViewProjection, target);
 }
 

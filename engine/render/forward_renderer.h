@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -51,6 +52,10 @@ class ForwardRenderer {
   // empty removes them.
   void setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv);
 
+  // Fits the directional light's cascades to `camera` instead of the one drawn with (none: the
+  // drawn one): the viewer's frozen-shadow view, and how tests compare the maps two cameras get.
+  void setCascadeCamera(std::optional<Camera> camera) { cascadeCamera_ = std::move(camera); }
+
   const RendererSettings& settings() const { return settings_; }
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -59,6 +64,7 @@ class ForwardRenderer {
  private:
   struct Passes;
   RendererSettings settings_;
+  std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;
   std::unique_ptr<Passes> passes_;
 };
