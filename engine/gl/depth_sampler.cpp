@@ -19,6 +19,9 @@ DepthValueSampler::~DepthValueSampler() {
 }
 
 void DepthValueSampler::bind(int unit) const {
+  // Cube maps filter across face edges (core since 3.2; off by default): without it a bilinear
+  // read near an edge clamps to one face and a vertical seam of wrong depths shows on walls.
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glBindSampler(static_cast<GLuint>(unit), id_);
 }
 

@@ -16,7 +16,8 @@ class DepthValueSampler {
   DepthValueSampler(const DepthValueSampler&) = delete;
   DepthValueSampler& operator=(const DepthValueSampler&) = delete;
 
-  // Reads every texture bound to texture unit `unit` through this sampler.
+  // Reads every texture bound to texture unit `unit` through this sampler; also turns on
+  // seamless cube-map filtering for the context.
   void bind(int unit) const;
 
  private:

@@ -101,6 +101,7 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   std::vector<glm::vec3> origins(kMaxAreaShadows, glm::vec3(0.0f));
   std::vector<glm::vec4> params(kMaxAreaShadows, glm::vec4(1.0f));
   std::vector<glm::vec2> rows(kMaxAreaShadows, glm::vec2(0.0f));
+  std::vector<glm::vec4> normals(kMaxAreaShadows, glm::vec4(0.0f));
   std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
                                 glm::vec3(0.0f));
   for (int slot = 0; slot < kMaxAreaShadows; ++slot)
@@ -115,6 +116,7 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
     params[slot] = glm::vec4(cube.far, static_cast<float>(cube.resolution), cube.light.radius,
                              settings_.filterRadius);
     rows[slot] = glm::vec2(cube.rows);
+    normals[slot] = glm::vec4(cube.light.normal, cube.light.doubleSided ? 1.0f : 0.0f);
     std::copy(cube.points.begin(), cube.points.end(),
               points.begin() + static_cast<std::ptrdiff_t>(slot * kAreaShadowSamples));
   }
@@ -122,6 +124,7 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   forward.set("uAreaShadowOrigin", std::span<const glm::vec3>(origins));
   forward.set("uAreaShadowParams", std::span<const glm::vec4>(params));
   forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));
+  forward.set("uAreaShadowNormal", std::span<const glm::vec4>(normals));
   forward.set("uAreaShadowPoints", std::span<const glm::vec3>(points));
 }
 
