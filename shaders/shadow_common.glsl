@@ -2,15 +2,17 @@
 //
 // Bias, in texels of the map. w = the texel's edge in metres at the receiver's distance from
 // the light; θ = angle between the geometric normal ng and the direction to the light; R = the
-// filter radius in texels, R_eff = R + 1 (each tap is a bilinear 2×2 comparison). Within R_eff
-// texels of the lookup, a plane at incidence θ departs from the looked-up depth by up to
-// R_eff·w·tanθ. Two terms cover it:
-//   normal offset  o = R_eff · w · sinθ   along ng: seen from the light, the offset point is
-//                                          o/cosθ = R_eff·w·tanθ in front of its own plane;
-//   depth bias     b = w · (0.5 + 0.5·min(tanθ, 10))   (slope-scaled; the constant half texel
-//                  covers the sphere-vs-plane curvature of distance maps and float rounding).
-// Both vanish with the texel size, so a finer map shifts shadow edges less.
-
+// filter radius in texels (0 for one hardware tap). A lookup compares the receiver against
+// depths stored up to R_eff = R + 1.5 texels away (each tap is a bilinear 2×2 comparison whose
+// texel centres lie within √2 texels), where a plane at incidence θ is R_eff·w·tanθ nearer or
+// further. Two terms cover it:
+//   normal offset  o = R_eff · w · sinθ   along ng: seen from the light, the offset point lies
+//                  o/cosθ = R_eff·w·tanθ in front of its own plane, at any incidence;
+//   depth bias     b = w · (0.25 + 0.1·min(tanθ, 10))   (slope-scaled: curvature of distance
+//                  maps, float rounding, and the texel's own slope where θ is near grazing).
+// A shadow touching its caster (a box on the floor) starts b·sinθ ≤ 0.83 texel late (θ ≤ 80°):
+// the depth bias is what detaches shadows, so it stays small and the normal offset, which does
+// not detach them, carries the slope. Both scale with w: a finer map shifts edges less.
 uniform int uShadowFilter;  // 0: one hardware 2×2 tap; 1: 16 rotated Poisson taps
 
 // 16 points of a Poisson disk in the unit circle (minimum spacing ≈ 0.37).
@@ -36,6 +38,6 @@ vec2 shadowBias(float w, vec3 ng, vec3 l, float radius) {
   float cosTheta = clamp(dot(ng, l), 0.0, 1.0);
   float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
   float tanTheta = min(sinTheta / max(cosTheta, 1e-4), 10.0);
-  float reach = (uShadowFilter == 1 ? radius : 0.0) + 1.0;
-  return vec2(reach * w * sinTheta, w * (0.5 + 0.5 * tanTheta));
+  float reach = (uShadowFilter == 1 ? radius : 0.0) + 1.5;
+  return vec2(reach * w * sinTheta, w * (0.25 + 0.1 * tanTheta));
 }

@@ -70,4 +70,21 @@ ShadowView cubeFaceShadowView(glm::vec3 position, int face, const Box& sceneBox,
   return view;
 }
 
+ShadowView spotShadowViewFor(const Light& spot, const Box& sceneBox,
+                             const ShadowSettings& settings) {
+  const float margin = settings.filterRadius + 2.0f;
+  int resolution = settings.resolution;
+  if (resolution <= 0) {
+    const float span = 2.0f * std::tan(spotMapHalfAngle(spot, 2048, margin));
+    resolution = defaultShadowResolution(spot.position, sceneBox, span, 512, 2048);
+  }
+  return spotShadowView(spot, sceneBox, resolution, margin);
+}
+
+int pointShadowResolutionFor(glm::vec3 position, const Box& sceneBox,
+                             const ShadowSettings& settings) {
+  if (settings.resolution > 0) return settings.resolution;
+  return defaultShadowResolution(position, sceneBox, 2.0f, 256, 1024);
+}
+
 }  // namespace bounce

@@ -37,6 +37,16 @@ int defaultShadowResolution(glm::vec3 position, const Box& sceneBox, float span,
 
 ShadowView spotShadowView(const Light& spot, const Box& sceneBox, int resolution,
                           float marginTexels);
+// The map SpotShadowMaps gives `spot` under `settings` (resolution chosen by
+// defaultShadowResolution in [512, 2048] unless settings.resolution is set; a margin of
+// filterRadius + 2 texels around the cone).
+ShadowView spotShadowViewFor(const Light& spot, const Box& sceneBox,
+                             const ShadowSettings& settings);
+// The cube face size PointShadowMaps gives a point light at `position` (in [256, 1024] unless
+// settings.resolution is set).
+int pointShadowResolutionFor(glm::vec3 position, const Box& sceneBox,
+                             const ShadowSettings& settings);
+
 // Face 0..5 in GL cube-map order (+X, −X, +Y, −Y, +Z, −Z), looking as GL's cube sampling expects.
 ShadowView cubeFaceShadowView(glm::vec3 position, int face, const Box& sceneBox, int resolution);
 

@@ -1,29 +1,14 @@
 #include "render/spot_shadow_maps.h"
 
-#include <cmath>
-
 #include "render/shadow_casters.h"
 #include "render/texture_units.h"
 
 namespace bounce {
-namespace {
-
-// Texels between the cone's rim and the map's edge: the filter radius plus the bilinear tap.
-float marginTexels(const ShadowSettings& settings) {
-  return settings.filterRadius + 2.0f;
-}
-
-}  // namespace
 
 int SpotShadowMaps::add(const Light& light, const Box& sceneBox) {
   if (static_cast<int>(maps_.size()) == kMaxSpotShadows) return -1;
-  int resolution = settings_.resolution;
-  if (resolution <= 0) {
-    const float span = 2.0f * std::tan(spotMapHalfAngle(light, 2048, marginTexels(settings_)));
-    resolution = defaultShadowResolution(light.position, sceneBox, span, 512, 2048);
-  }
-  maps_.push_back({light, gl::DepthTexture2D(resolution, resolution),
-                   spotShadowView(light, sceneBox, resolution, marginTexels(settings_))});
+  const ShadowView view = spotShadowViewFor(light, sceneBox, settings_);
+  maps_.push_back({light, gl::DepthTexture2D(view.resolution, view.resolution), view});
   return static_cast<int>(maps_.size()) - 1;
 }
 
@@ -32,7 +17,8 @@ void SpotShadowMaps::render(const GpuScene& scene, const Box& visibleBox, gl::Pr
   const Box sceneBox = scene.bounds();
   for (Map& map : maps_) {
     // Dynamic instances move: the reach (far) follows the scene's current bounds.
-    map.view = spotShadowView(map.light, sceneBox, map.view.resolution, marginTexels(settings_));
+    map.view =
+        spotShadowView(map.light, sceneBox, map.view.resolution, settings_.filterRadius + 2.0f);
     if (!Frustum(map.view.viewProjection).overlaps(visibleBox)) continue;
     target.bind(map.texture);
     drawShadowCasters(scene, map.view, map.light.position, depthProgram);

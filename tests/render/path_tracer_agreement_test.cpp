@@ -51,9 +51,7 @@ Scene unoccludedScene() {
 // of ~1e-4. The tracer box-filters each pixel while the rasterizer samples its centre: over a
 // block that is the midpoint rule, off by ~(pixel/distance)²/24 ≈ 1e-4 relative here, so 0.5%
 // relative covers it and float rounding.
-TEST(PathTracerAgreement, DirectLightMatchesReferenceOnUnoccludedScene) {
-  const Scene scene = unoccludedScene();
-  const Camera camera = downCamera(1.0f);
+void expectAgreement(const Scene& scene, const Camera& camera) {
   constexpr int kSize = 64, kBlock = 8;
   const Image forward = render(scene, camera, kSize, kSize);
 
@@ -82,6 +80,44 @@ TEST(PathTracerAgreement, DirectLightMatchesReferenceOnUnoccludedScene) {
       }
     }
   }
+}
+
+TEST(PathTracerAgreement, DirectLightMatchesReferenceOnUnoccludedScene) {
+  expectAgreement(unoccludedScene(), downCamera(1.0f));
+}
+
+// The rules of scene/surface_rules.h, read by both: an emitter with a negative channel emits
+// the others; one with a non-finite channel does not emit at all but still reflects; a mesh
+// naming a material that does not exist is a black absorber; a mesh without usable normals is
+// shaded with its geometric normal. Everything lies flat on the floor, so nothing is occluded;
+// the small quads' edges fall on the 8×8 block boundaries (multiples of `u` at their height), so
+// no block mixes two surfaces.
+TEST(PathTracerAgreement, SceneRulesReadAlike) {
+  const float h = 0.001f;                                      // quads' height over the floor
+  const float u = 0.25f * (1.0f - h) * std::tan(0.5f * 0.8f);  // one block, downCamera(1)
+  Scene scene;
+  addFloor(scene, {0.8f, 0.5f, 0.25f});
+  Material emitter;
+  emitter.name = "negative channel";
+  emitter.albedo = glm::vec3(0.0f);
+  emitter.emission = {4.0f, -3.0f, 8.0f};
+  addQuad(scene, {-0.3f, 1.5f, -0.3f}, {0.6f, 0, 0}, {0, 0, 0.6f}, emitter);  // faces down
+  Material broken;
+  broken.name = "non-finite emission";
+  broken.albedo = glm::vec3(0.7f);
+  broken.emission = {1.0f, std::nanf(""), 1.0f};
+  addQuad(scene, {-3 * u, h, u}, {0, 0, 2 * u}, {2 * u, 0, 0}, broken);  // faces up
+  Material missing;
+  missing.name = "bad index";
+  missing.albedo = glm::vec3(0.9f);
+  addQuad(scene, {u, h, u}, {0, 0, 2 * u}, {2 * u, 0, 0}, missing);
+  scene.meshes.back().material = 99;
+  Material plain;
+  plain.name = "no normals";
+  plain.albedo = glm::vec3(0.6f);
+  addQuad(scene, {u, h, -3 * u}, {0, 0, 2 * u}, {2 * u, 0, 0}, plain);
+  scene.meshes.back().normals.assign(4, glm::vec3(0.0f));
+  expectAgreement(scene, downCamera(1.0f));
 }
 
 }  // namespace

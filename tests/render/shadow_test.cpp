@@ -1,0 +1,325 @@
+// Shadow maps (spot and point lights) measured against the truth:
+//   1. visibility agrees with ray-traced visibility (the baker's ray kernel) except in a
+//      one-pixel band along true shadow edges;
+//   2. no acne: an unoccluded plane lit at up to grazing incidence is nowhere darker than the
+//      unshadowed closed form by more than 1%;
+//   3. no peter-panning: a thin box's shadow starts within one shadow texel of its base.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/shadow_map_geometry.h"
+#include "scene/framing.h"
+#include "shadow_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+Camera lookingAt(glm::vec3 eye, glm::vec3 target, float yfov) {
+  Camera camera;
+  camera.name = "look";
+  camera.yfov = yfov;
+  camera.cameraToWorld = glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
+  return camera;
+}
+
+Light spotAt(glm::vec3 position, glm::vec3 target, float inner, float outer, float intensity) {
+  Light spot;
+  spot.name = "spot";
+  spot.type = LightType::Spot;
+  spot.position = position;
+  spot.direction = glm::normalize(target - position);
+  spot.innerConeAngle = inner;
+  spot.outerConeAngle = outer;
+  spot.intensity = glm::vec3(intensity);
+  return spot;
+}
+
+Light pointAt(glm::vec3 position, float intensity) {
+  Light point;
+  point.name = "point";
+  point.type = LightType::Point;
+  point.position = position;
+  point.intensity = glm::vec3(intensity);
+  return point;
+}
+
+float sum(glm::vec3 v) {
+  return v.x + v.y + v.z;
+}
+
+// ---- 1. Visibility against ray-traced visibility --------------------------------------------
+
+// A 3 m floor with a box, a thin post, a thin wall (2 cm) and a tilted plate floating over it.
+Scene occluderScene(const Light& light) {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.5f);
+  addQuad(scene, {-1.5f, 0, 1.5f}, {3, 0, 0}, {0, 0, -3}, floor);
+  Material grey;
+  grey.name = "grey";
+  grey.albedo = glm::vec3(0.6f);
+  addBox(scene, {-0.5f, 0, 0}, {-0.1f, 0.4f, 0.4f}, grey);
+  addBox(scene, {0.3f, 0, -0.5f}, {0.36f, 0.8f, -0.44f}, grey);
+  addBox(scene, {-0.9f, 0, -0.9f}, {0.2f, 0.3f, -0.88f}, grey);
+  Material plate;
+  plate.name = "plate";
+  plate.albedo = glm::vec3(0.4f);
+  plate.doubleSided = true;
+  addQuad(scene, {0.0f, 0.5f, 0.3f}, {0.5f, 0.15f, 0}, {0, 0, 0.4f}, plate);
+  scene.lights = {light};
+  return scene;
+}
+
+struct Agreement {
+  int considered = 0;   // lit-or-shadowed pixels outside the edge band
+  int shadowed = 0;     // of those, occluded by ray tracing
+  int disagreeing = 0;  // |V_map − V_ray| > ½
+  double fraction() const { return considered ? double(disagreeing) / considered : 1.0; }
+};
+
+// V_map = radiance with shadows / radiance without (one light, so exactly its visibility).
+// Pixels the light does not reach unshadowed (outside the cone, facing away) are left out, and
+// so is a one-pixel band along true shadow edges (any 8-neighbour with another V_ray).
+Agreement measureAgreement(const Scene& scene, const Camera& camera, int size) {
+  const Image withShadows = renderWith(scene, camera, size, size, ShadowSettings{});
+  ShadowSettings off;
+  off.enabled = false;
+  const Image without = renderWith(scene, camera, size, size, off);
+  const WorldGeometry geometry = flatten(scene);
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  const std::vector<PixelSight> sights = pixelSights(*kernel, camera, size, size);
+  float brightest = 0.0f;
+  for (const glm::vec3& p : without.pixels) brightest = std::max(brightest, sum(p));
+  std::vector<float> traced(sights.size(), -1.0f);  // −1: not considered
+  for (std::size_t i = 0; i < sights.size(); ++i) {
+    if (!sights[i].hit.valid() || !(sum(without.pixels[i]) > 1e-4f * brightest)) continue;
+    traced[i] = tracedVisibility(*kernel, camera, sights[i], scene.lights[0]);
+  }
+  Agreement agreement;
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const std::size_t i = without.index(x, y);
+      if (traced[i] < 0.0f) continue;
+      bool edge = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= size || ny >= size) continue;
+          const float other = traced[without.index(nx, ny)];
+          if (other >= 0.0f && other != traced[i]) edge = true;
+        }
+      if (edge) continue;
+      const float mapped = sum(withShadows.pixels[i]) / sum(without.pixels[i]);
+      ++agreement.considered;
+      if (traced[i] == 0.0f) ++agreement.shadowed;
+      if (std::abs(mapped - traced[i]) > 0.5f) ++agreement.disagreeing;
+    }
+  }
+  return agreement;
+}
+
+void expectAgreement(const Light& light) {
+  const Scene scene = occluderScene(light);
+  const Camera camera = lookingAt({0.3f, 2.0f, 2.0f}, {0, 0, 0}, 0.8f);
+  const Agreement a = measureAgreement(scene, camera, 128);
+  std::printf("%s: %d of %d pixels disagree (%.3f%%), %d shadowed\n", light.name.c_str(),
+              a.disagreeing, a.considered, 100.0 * a.fraction(), a.shadowed);
+  ASSERT_GT(a.considered, 128 * 128 / 4);    // the light covers much of the frame
+  ASSERT_GT(a.shadowed, a.considered / 20);  // and the occluders cast real shadows
+  EXPECT_LE(a.fraction(), 0.005) << a.disagreeing << " of " << a.considered;
+}
+
+TEST(ShadowVisibility, SpotAgreesWithRayTracedVisibility) {
+  expectAgreement(spotAt({0.7f, 1.6f, 0.6f}, {-0.1f, 0, -0.1f}, 0.5f, 0.6f, 3.0f));
+}
+
+TEST(ShadowVisibility, PointAgreesWithRayTracedVisibility) {
+  expectAgreement(pointAt({0.1f, 1.0f, 0.5f}, 1.0f));
+}
+
+// ---- 2. Acne: an unoccluded plane at up to grazing incidence --------------------------------
+
+// Irradiance (W/m²) of the floor y = 0 (normal +y) at p, unshadowed: the closed forms of
+// docs/renderer.md written out here (spot falloff t², t linear in cosα between the cones).
+glm::vec3 floorIrradiance(const Light& light, glm::vec3 p) {
+  if (light.type == LightType::Directional)
+    return light.irradiance * std::max(-glm::normalize(light.direction).y, 0.0f);
+  const glm::vec3 toLight = light.position - p;
+  const float r2 = glm::dot(toLight, toLight);
+  const float cosTheta = std::max(toLight.y / std::sqrt(r2), 0.0f);
+  float falloff = 1.0f;
+  if (light.type == LightType::Spot) {
+    const float cosAlpha = glm::dot(-toLight / std::sqrt(r2), glm::normalize(light.direction));
+    const float ci = std::cos(light.innerConeAngle), co = std::cos(light.outerConeAngle);
+    const float t = std::clamp((cosAlpha - co) / std::max(ci - co, 1e-4f), 0.0f, 1.0f);
+    falloff = t * t;
+  }
+  return light.intensity * falloff * cosTheta / r2;
+}
+
+struct AcneCase {
+  const char* name;
+  Light light;
+};
+
+// A light whose central ray meets the floor's origin at `incidence` (radians from the normal),
+// from height `h`.
+glm::vec3 lightAtIncidence(float incidence, float h) {
+  return {-h * std::tan(incidence), h, 0.0f};
+}
+
+std::vector<AcneCase> acneCases() {
+  const float h = 1.0f;
+  const auto spot = [&](float degrees) {
+    const glm::vec3 p = lightAtIncidence(glm::radians(degrees), h);
+    return spotAt(p, {0, 0, 0}, 0.2f, 0.3f, 2.0f);
+  };
+  return {
+      {"spot 80 degrees", spot(80.0f)},
+      {"spot 82 to 86 degrees",
+       spotAt(lightAtIncidence(glm::radians(84.5f), 0.1f), {0, 0, 0}, 0.2f, 0.3f, 2.0f)},
+      {"spot 60 degrees", spot(60.0f)},
+      {"spot overhead", spot(0.0f)},
+      {"point 80 degrees", pointAt(lightAtIncidence(glm::radians(80.0f), h), 2.0f)},
+      {"point overhead", pointAt({0.05f, 0.5f, 0.03f}, 1.0f)},
+  };
+}
+
+class ShadowAcne : public testing::TestWithParam<AcneCase> {};
+
+// Every pixel sees the floor (20 m wide) from 1 m; nothing casts a shadow. The central ray's
+// incidence is named per case; across the frame it spans 79°–81° (80°) and 82°–86° (near grazing).
+TEST_P(ShadowAcne, UnoccludedPlaneIsNowhereDarkerThanTheClosedForm) {
+  Scene scene;
+  const glm::vec3 albedo(0.5f);
+  addFloor(scene, albedo);
+  scene.lights = {GetParam().light};
+  const Camera camera = downCamera(1.0f);
+  constexpr int kSize = 96;
+  const Image image = renderWith(scene, camera, kSize, kSize, ShadowSettings{});
+  std::vector<float> closedForm(image.pixels.size());
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      closedForm[image.index(x, y)] = sum(
+          albedo / kPi * floorIrradiance(GetParam().light, floorPoint(camera, kSize, kSize, x, y)));
+  // Where the spot's falloff t² nears its zero (below 1e-3 of the brightest pixel) float
+  // rounding of t alone exceeds 1%: those pixels are left out.
+  const float floor = 1e-3f * *std::max_element(closedForm.begin(), closedForm.end());
+  int lit = 0, dark = 0;
+  float worst = 1.0f;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const float expected = closedForm[image.index(x, y)];
+      if (!(expected > floor)) continue;
+      ++lit;
+      const float ratio = sum(image.at(x, y)) / expected;
+      worst = std::min(worst, ratio);
+      if (ratio < 0.99f) {
+        ++dark;
+        std::printf("  dark pixel (%d, %d): %.5g of %.5g\n", x, y, sum(image.at(x, y)), expected);
+      }
+    }
+  }
+  std::printf("%s: %d lit pixels, %d darker than 99%%, darkest at %.4f\n", GetParam().name, lit,
+              dark, worst);
+  ASSERT_GT(lit, kSize * kSize / 4);
+  EXPECT_EQ(dark, 0) << "darkest pixel at " << worst << " of the closed form";
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, ShadowAcne, testing::ValuesIn(acneCases()),
+                         [](const testing::TestParamInfo<AcneCase>& param) {
+                           std::string name = param.param.name;
+                           std::replace(name.begin(), name.end(), ' ', '_');
+                           return name;
+                         });
+
+// ---- 3. Peter-panning: a thin box on the floor ---------------------------------------------
+
+struct PanningCase {
+  const char* name;
+  float zenith;  // radians: the light's elevation seen from the box's edge, from the normal
+};
+
+class ShadowContact : public testing::TestWithParam<PanningCase> {};
+
+// A 40×40 cm slab 4 mm thick (4 texels of the default map here) on the floor, lit by a spot
+// from the −x side; a camera looks straight down at its +x edge (x = 0.2 m), 0.23 mm per pixel.
+// Along each pixel row the true shadow starts at the edge; the first floor pixel the map
+// shadows (V < ½) must lie within one shadow texel (its edge w at that distance from the light,
+// perpendicular to the light) plus one pixel. Both faces are in the map, so what detaches a
+// shadow is a bias reaching the caster's thickness along the light ray, h/cosθ (depth bias) or
+// h (normal offset): the slab is thin enough for either to show.
+TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.5f);
+  addQuad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, floor);
+  Material slab;
+  slab.name = "slab";
+  slab.albedo = glm::vec3(0.5f);
+  addBox(scene, {-0.2f, 0, -0.2f}, {0.2f, 0.004f, 0.2f}, slab);
+  const glm::vec3 edge(0.2f, 0.0f, 0.0f);
+  const float zenith = GetParam().zenith, distance = 1.2f;
+  const Light spot = spotAt(edge + distance * glm::vec3(-std::sin(zenith), std::cos(zenith), 0.0f),
+                            edge, 0.3f, 0.4f, 3.0f);
+  scene.lights = {spot};
+
+  constexpr int kSize = 128;
+  Camera camera = downCamera(0.25f, 2.0f * std::atan(0.015f / 0.25f));
+  camera.cameraToWorld[3] = glm::vec4(0.21f, 0.25f, 0.0f, 1.0f);
+  const Image withShadows = renderWith(scene, camera, kSize, kSize, ShadowSettings{});
+  ShadowSettings off;
+  off.enabled = false;
+  const Image without = renderWith(scene, camera, kSize, kSize, off);
+  const WorldGeometry geometry = flatten(scene);
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  const std::vector<PixelSight> sights = pixelSights(*kernel, camera, kSize, kSize);
+
+  const Bounds bounds = sceneBounds(scene);
+  Box box;
+  box.add(bounds.lo);
+  box.add(bounds.hi);
+  const ShadowView view = spotShadowViewFor(spot, box, ShadowSettings{});
+  const float texel = view.texelAngle * glm::length(spot.position - edge);
+  const float pixel = 2.0f * 0.015f / kSize;
+
+  float worstGap = 0.0f;
+  int rows = 0;
+  for (int y = kSize / 4; y < 3 * kSize / 4; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t i = without.index(x, y);
+      const PixelSight& s = sights[i];
+      if (!s.hit.valid() || geometry.triangleInstance[s.hit.triangle] != 0 || s.position.x < 0.2f)
+        continue;  // the slab, or the floor under its far side
+      if (sum(withShadows.pixels[i]) / sum(without.pixels[i]) < 0.5f) {
+        worstGap = std::max(worstGap, s.position.x - 0.2f);
+        ++rows;
+        break;
+      }
+    }
+  }
+  std::printf("%s: gap %.3f mm over %d rows; texel %.3f mm (resolution %d), pixel %.3f mm\n",
+              GetParam().name, 1e3 * worstGap, rows, 1e3 * texel, view.resolution, 1e3 * pixel);
+  ASSERT_EQ(rows, kSize / 2);  // every row finds the shadow
+  EXPECT_LE(worstGap, texel + pixel);
+}
+
+INSTANTIATE_TEST_SUITE_P(Incidences, ShadowContact,
+                         testing::Values(PanningCase{"zenith_45", glm::radians(45.0f)},
+                                         PanningCase{"zenith_60", glm::radians(60.0f)},
+                                         PanningCase{"zenith_80", glm::radians(80.0f)}),
+                         [](const testing::TestParamInfo<PanningCase>& param) {
+                           return std::string(param.param.name);
+                         });
+
+}  // namespace
+}  // namespace bounce::test
