@@ -6,8 +6,10 @@
 //       (ray-cast) visibility in every cascade and every blend band, so no border shows a jump.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,6 +24,13 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 const glm::vec3 kGroundAlbedo(0.5f, 0.6f, 0.7f);
 const glm::vec3 kIrradiance(3.0f, 2.5f, 2.0f);  // E⊥, W/m²
+
+// Image sizes are CI-sized; BOUNCE_SHADOW_SIZE_SCALE=N multiplies both sides by N for the
+// full-size figures in docs/shadows.md (e.g. N = 4: 640×384 and 1280×512).
+int sizeScale() {
+  const char* scale = std::getenv("BOUNCE_SHADOW_SIZE_SCALE");
+  return scale ? std::max(1, std::atoi(scale)) : 1;
+}
 
 Camera lookAtCamera(glm::vec3 eye, glm::vec3 target, float yfov) {
   Camera camera;
@@ -80,7 +89,7 @@ TEST(DirectionalAcne, GrazingLightOnAPlaneDarkensNoPixel) {
   const glm::vec3 direction = lightDirection(incidence, 0.52f);
   const Scene scene = groundScene(halfSize, direction);
   const glm::vec3 expected = kGroundAlbedo / kPi * kIrradiance * std::cos(incidence);
-  constexpr int kW = 160, kH = 96;
+  const int kW = 160 * sizeScale(), kH = 96 * sizeScale();
   const Camera cameras[] = {lookAtCamera({0, 1.7f, 0}, {40, 0.2f, -30}, 0.9f),
                             lookAtCamera({5, 30, 5}, {0, 0, -20}, 1.0f)};
   for (const Camera& camera : cameras) {
@@ -173,7 +182,7 @@ PostsScene postsScene() {
   return s;
 }
 
-constexpr int kW = 320, kH = 128;
+const int kW = 320 * sizeScale(), kH = 128 * sizeScale();
 
 // 5a: fitting the cascades to a camera moved by under a texel of the nearest cascade (any
 // direction) changes no pixel: the maps move by whole texels, their contents only shift.
