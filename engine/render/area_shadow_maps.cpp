@@ -69,32 +69,37 @@ void AreaShadowMaps::place(const GpuScene& scene) {
   }
 }
 
-void AreaShadowMaps::render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
-                            gl::DepthTarget& target) {
-  if (cubes_.empty()) return;
+ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+                                       gl::Program& depthProgram, gl::DepthTarget& target) {
+  ShadowDrawCount count;
+  if (cubes_.empty()) return count;
   if (scene.emitterVersion() != emitterVersion_) place(scene);
   const Box sceneBox = scene.bounds();
   for (Cube& cube : cubes_) {
     for (int face = 0; face < 6; ++face) {
-      const ShadowView view = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
-      cube.far = view.far;
-      if (!Frustum(view.viewProjection).overlaps(visibleBox)) continue;
+      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
+      cube.far = faceView.far;
       target.bind(*cube.texture, face);
+      gl::clearDepth();
+      if (!view.mayReach(faceView.viewProjection, sceneBox)) continue;
       // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
       // through the map's origin and would hide everything from a double-sided light.
-      gl::clearDepth();
       gl::setDepthTest(true);
       gl::setBackFaceCulling(false);
-      depthProgram.set("uViewProjection", view.viewProjection);
+      depthProgram.set("uViewProjection", faceView.viewProjection);
       depthProgram.set("uLightPosition", cube.origin);
-      depthProgram.set("uFar", view.far);
-      const Frustum frustum(view.viewProjection);
+      depthProgram.set("uFar", faceView.far);
+      const Frustum frustum(faceView.viewProjection);
       const std::span<const GpuInstance> instances = scene.instances();
-      for (std::size_t i = 0; i < instances.size(); ++i)
-        if (i != cube.light.instance && frustum.overlaps(instances[i].worldBox))
-          scene.draw(instances[i], depthProgram);
+      ++count.views;
+      for (std::size_t i = 0; i < instances.size(); ++i) {
+        if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
+        scene.draw(instances[i], depthProgram);
+        ++count.casters;
+      }
     }
   }
+  return count;
 }
 
 void AreaShadowMaps::bind(gl::Program& forward) const {

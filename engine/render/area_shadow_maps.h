@@ -30,10 +30,11 @@ class AreaShadowMaps {
   // Groups the scene's emitters into lights and gives the most powerful kMaxAreaShadows a cube
   // (a warning names how many stay unshadowed).
   void add(const GpuScene& scene, std::vector<std::string>& warnings);
-  // Renders the faces whose frustum reaches `visibleBox`. Re-reads the lights' geometry first
+  // Renders the faces that may reach the view (the others are cleared to the far plane: soft-
+  // shadow taps may stray into them from a visible receiver). Re-reads the lights' geometry first
   // when an emitting instance moved (the emitter table changed).
-  void render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
-              gl::DepthTarget& target);
+  ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
+                         gl::DepthTarget& target);
   void bind(gl::Program& forward) const;
 
  private:

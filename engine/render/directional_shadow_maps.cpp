@@ -21,9 +21,10 @@ int DirectionalShadowMaps::add(const Light& light) {
   return 0;
 }
 
-void DirectionalShadowMaps::render(const GpuScene& scene, const Camera& camera, float aspect,
-                                   gl::DepthTarget& target) {
-  if (!light_) return;
+ShadowDrawCount DirectionalShadowMaps::render(const GpuScene& scene, const Camera& camera,
+                                              float aspect, gl::DepthTarget& target) {
+  ShadowDrawCount count;
+  if (!light_) return count;
   const Box box = scene.bounds();
   const Bounds bounds{box.lo, box.hi, box.empty()};
   camera_ = camera;
@@ -37,9 +38,14 @@ void DirectionalShadowMaps::render(const GpuScene& scene, const Camera& camera, 
     gl::setViewport(static_cast<int>(i & 1u) * r, static_cast<int>(i >> 1u) * r, r, r);
     depth_->set("uViewProjection", cascades_[i].worldToClip);
     const Frustum frustum(cascades_[i].worldToClip);
-    for (const GpuInstance& instance : scene.instances())
-      if (frustum.overlaps(instance.worldBox)) scene.draw(instance, *depth_);
+    ++count.views;
+    for (const GpuInstance& instance : scene.instances()) {
+      if (!frustum.overlaps(instance.worldBox)) continue;
+      scene.draw(instance, *depth_);
+      ++count.casters;
+    }
   }
+  return count;
 }
 
 void DirectionalShadowMaps::bind(gl::Program& forward) const {

@@ -23,7 +23,8 @@ class DirectionalShadowMaps {
   // Gives `light` (directional) the cascades; returns 0, or −1 when another light has them.
   int add(const Light& light);
   // Fits the cascades to `camera` (image aspect `aspect`) and renders them.
-  void render(const GpuScene& scene, const Camera& camera, float aspect, gl::DepthTarget& target);
+  ShadowDrawCount render(const GpuScene& scene, const Camera& camera, float aspect,
+                         gl::DepthTarget& target);
   // Binds the atlas and sets uCascade*, uView* on the forward program (uCascadeCount 0 when no
   // light has cascades).
   void bind(gl::Program& forward) const;

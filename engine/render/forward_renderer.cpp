@@ -37,6 +37,10 @@ std::size_t ForwardRenderer::emitterTriangleCount() const {
   return static_cast<std::size_t>(passes_->scene.emitterCount());
 }
 
+ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
+  return passes_->shadows.lastFrame();
+}
+
 void ForwardRenderer::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   passes_->scene.setInstanceTransform(index, transform);
 }
@@ -49,9 +53,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
-  // What the camera can see: its frustum within the scene's bounds.
-  const Box visible = intersect(frustumBox(cameraViewProjection), p.scene.bounds());
-  p.shadows.render(p.scene, visible, cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
+  p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
+                   cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
   p.forward.draw(p.scene, p.lights, p.shadows, cameraViewProjection, target);
 }
 

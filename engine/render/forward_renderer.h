@@ -57,6 +57,9 @@ class ForwardRenderer {
   void setCascadeCamera(std::optional<Camera> camera) { cascadeCamera_ = std::move(camera); }
 
   const RendererSettings& settings() const { return settings_; }
+  // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
+  // the view are skipped; casters are culled to each view's frustum).
+  ShadowDrawCount shadowDrawCount() const;
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t emitterTriangleCount() const;

@@ -51,4 +51,12 @@ Box frustumBox(const glm::mat4& viewProjection) {
   return box;
 }
 
+ViewVolume::ViewVolume(const glm::mat4& cameraViewProjection, const Box& sceneBox)
+    : frustum(cameraViewProjection), box(intersect(frustumBox(cameraViewProjection), sceneBox)) {}
+
+bool ViewVolume::mayReach(const glm::mat4& lightViewProjection, const Box& sceneBox) const {
+  if (!Frustum(lightViewProjection).overlaps(box)) return false;
+  return frustum.overlaps(intersect(frustumBox(lightViewProjection), sceneBox));
+}
+
 }  // namespace bounce

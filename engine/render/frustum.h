@@ -33,4 +33,15 @@ struct Frustum {
 // The world box around the frustum's corners (of `viewProjection`'s inverse).
 Box frustumBox(const glm::mat4& viewProjection);
 
+// What the camera can see, for deciding which shadow maps a frame needs: its frustum, and the
+// box of that frustum within the scene's bounds.
+struct ViewVolume {
+  ViewVolume(const glm::mat4& cameraViewProjection, const Box& sceneBox);
+  // False only when nothing the light's map (`lightViewProjection`) covers within `sceneBox`
+  // can be seen: then the map cannot change the image and is not rendered.
+  bool mayReach(const glm::mat4& lightViewProjection, const Box& sceneBox) const;
+  Frustum frustum;
+  Box box;
+};
+
 }  // namespace bounce

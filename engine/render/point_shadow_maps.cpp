@@ -14,19 +14,21 @@ int PointShadowMaps::add(const Light& light, const Box& sceneBox) {
   return static_cast<int>(cubes_.size()) - 1;
 }
 
-void PointShadowMaps::render(const GpuScene& scene, const Box& visibleBox,
-                             gl::Program& depthProgram, gl::DepthTarget& target) {
+ShadowDrawCount PointShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+                                        gl::Program& depthProgram, gl::DepthTarget& target) {
   const Box sceneBox = scene.bounds();
+  ShadowDrawCount count;
   for (Cube& cube : cubes_) {
     for (int face = 0; face < 6; ++face) {
-      const ShadowView view =
+      const ShadowView faceView =
           cubeFaceShadowView(cube.light.position, face, sceneBox, cube.resolution);
-      cube.far = view.far;
-      if (!Frustum(view.viewProjection).overlaps(visibleBox)) continue;
+      cube.far = faceView.far;
+      if (!view.mayReach(faceView.viewProjection, sceneBox)) continue;
       target.bind(cube.texture, face);
-      drawShadowCasters(scene, view, cube.light.position, depthProgram);
+      count += {1, drawShadowCasters(scene, faceView, cube.light.position, depthProgram)};
     }
   }
+  return count;
 }
 
 void PointShadowMaps::bind(gl::Program& forward) const {

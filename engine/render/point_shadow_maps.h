@@ -8,6 +8,7 @@
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
+#include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
 
 namespace bounce {
@@ -19,9 +20,9 @@ class PointShadowMaps {
   // Gives `light` (a point light) a cube; returns its slot, or −1 when all kMaxPointShadows are
   // taken.
   int add(const Light& light, const Box& sceneBox);
-  // Renders the faces whose frustum reaches `visibleBox`.
-  void render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
-              gl::DepthTarget& target);
+  // Renders the faces that may reach `view` (ViewVolume::mayReach).
+  ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
+                         gl::DepthTarget& target);
   void bind(gl::Program& forward) const;
 
  private:

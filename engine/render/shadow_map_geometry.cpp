@@ -39,6 +39,20 @@ glm::vec3 anyUp(glm::vec3 direction) {
   return std::abs(direction.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
 }
 
+// The far clip plane's depth along `axis` (unit): just beyond the scene box's deepest corner,
+// so the frustum (and the box around it that culling uses) ends where the scene does. Depth
+// stored in the map is still distance / `far` (the radial reach).
+float farPlane(glm::vec3 position, glm::vec3 axis, const Box& sceneBox, float far) {
+  float deepest = 0.0f;
+  for (int i = 0; i < 8 && !sceneBox.empty(); ++i) {
+    const glm::vec3 corner((i & 1) ? sceneBox.hi.x : sceneBox.lo.x,
+                           (i & 2) ? sceneBox.hi.y : sceneBox.lo.y,
+                           (i & 4) ? sceneBox.hi.z : sceneBox.lo.z);
+    deepest = std::max(deepest, glm::dot(corner - position, axis));
+  }
+  return std::clamp(deepest * 1.01f, far * 2e-4f, far);
+}
+
 }  // namespace
 
 ShadowView spotShadowView(const Light& spot, const Box& sceneBox, int resolution,
@@ -50,7 +64,8 @@ ShadowView spotShadowView(const Light& spot, const Box& sceneBox, int resolution
   view.resolution = resolution;
   view.texelAngle = 2.0f * std::tan(half) / static_cast<float>(resolution);
   // The near plane only clips: depth is distance/far, written per fragment.
-  view.viewProjection = glm::perspective(2.0f * half, 1.0f, view.far * 1e-4f, view.far) *
+  view.viewProjection = glm::perspective(2.0f * half, 1.0f, view.far * 1e-4f,
+                                         farPlane(spot.position, direction, sceneBox, view.far)) *
                         glm::lookAt(spot.position, spot.position + direction, anyUp(direction));
   return view;
 }
@@ -65,7 +80,8 @@ ShadowView cubeFaceShadowView(glm::vec3 position, int face, const Box& sceneBox,
   view.far = farDistance(position, sceneBox);
   view.resolution = resolution;
   view.texelAngle = 2.0f / static_cast<float>(resolution);
-  view.viewProjection = glm::perspective(glm::radians(90.0f), 1.0f, view.far * 1e-4f, view.far) *
+  view.viewProjection = glm::perspective(glm::radians(90.0f), 1.0f, view.far * 1e-4f,
+                                         farPlane(position, kForward[face], sceneBox, view.far)) *
                         glm::lookAt(position, position + kForward[face], kUp[face]);
   return view;
 }

@@ -33,13 +33,14 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                        " point and 1 directional light cast no shadows");
 }
 
-void ShadowPass::render(const GpuScene& scene, const Box& visibleBox, const Camera& camera,
+void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Camera& camera,
                         float aspect) {
+  lastFrame_ = {};
   if (!settings_.enabled) return;
-  spot_.render(scene, visibleBox, depth_, target_);
-  point_.render(scene, visibleBox, depth_, target_);
-  directional_.render(scene, camera, aspect, target_);
-  area_.render(scene, visibleBox, depth_, target_);
+  lastFrame_ += spot_.render(scene, view, depth_, target_);
+  lastFrame_ += point_.render(scene, view, depth_, target_);
+  lastFrame_ += directional_.render(scene, camera, aspect, target_);
+  lastFrame_ += area_.render(scene, view, depth_, target_);
   gl::checkErrors("shadow pass");
 }
 

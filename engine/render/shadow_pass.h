@@ -25,11 +25,13 @@ class ShadowPass {
   ShadowPass(const GpuScene& scene, const PunctualLights& lights, const ShadowSettings& settings,
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
 
-  // `visibleBox`: world box of what the camera can see (its frustum within the scene bounds);
-  // `camera` and the image's `aspect`: what the directional cascades are fitted to.
-  void render(const GpuScene& scene, const Box& visibleBox, const Camera& camera, float aspect);
+  // `view`: what the camera can see; maps that cannot reach it are not rendered. `camera` and
+  // the image's `aspect`: what the directional cascades are fitted to.
+  void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
+  // What the last render() drew (culling's effect).
+  const ShadowDrawCount& lastFrame() const { return lastFrame_; }
 
  private:
   ShadowSettings settings_;
@@ -40,6 +42,7 @@ class ShadowPass {
   PointShadowMaps point_;
   DirectionalShadowMaps directional_;
   AreaShadowMaps area_;
+  ShadowDrawCount lastFrame_;
 };
 
 }  // namespace bounce

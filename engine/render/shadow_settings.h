@@ -19,4 +19,16 @@ struct ShadowSettings {
   float filterRadius = 1.5f;
 };
 
+// What a shadow pass drew in one frame: map views (a spot map, a cube face) and instances drawn
+// into them, summed over views; what culling saves shows here.
+struct ShadowDrawCount {
+  int views = 0;
+  int casters = 0;
+  ShadowDrawCount& operator+=(const ShadowDrawCount& other) {
+    views += other.views;
+    casters += other.casters;
+    return *this;
+  }
+};
+
 }  // namespace bounce

@@ -12,17 +12,19 @@ int SpotShadowMaps::add(const Light& light, const Box& sceneBox) {
   return static_cast<int>(maps_.size()) - 1;
 }
 
-void SpotShadowMaps::render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
-                            gl::DepthTarget& target) {
+ShadowDrawCount SpotShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+                                       gl::Program& depthProgram, gl::DepthTarget& target) {
   const Box sceneBox = scene.bounds();
+  ShadowDrawCount count;
   for (Map& map : maps_) {
     // Dynamic instances move: the reach (far) follows the scene's current bounds.
     map.view =
         spotShadowView(map.light, sceneBox, map.view.resolution, settings_.filterRadius + 2.0f);
-    if (!Frustum(map.view.viewProjection).overlaps(visibleBox)) continue;
+    if (!view.mayReach(map.view.viewProjection, sceneBox)) continue;
     target.bind(map.texture);
-    drawShadowCasters(scene, map.view, map.light.position, depthProgram);
+    count += {1, drawShadowCasters(scene, map.view, map.light.position, depthProgram)};
   }
+  return count;
 }
 
 void SpotShadowMaps::bind(gl::Program& forward) const {

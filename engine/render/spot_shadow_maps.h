@@ -7,6 +7,7 @@
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
+#include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
 
 namespace bounce {
@@ -17,9 +18,9 @@ class SpotShadowMaps {
 
   // Gives `light` (a spot) a map; returns its slot, or −1 when all kMaxSpotShadows are taken.
   int add(const Light& light, const Box& sceneBox);
-  // Renders the maps whose frustum reaches `visibleBox` (world box of what the camera sees).
-  void render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
-              gl::DepthTarget& target);
+  // Renders the maps that may reach `view` (ViewVolume::mayReach).
+  ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
+                         gl::DepthTarget& target);
   // Binds the maps and sets uSpotShadow* on the forward program.
   void bind(gl::Program& forward) const;
 

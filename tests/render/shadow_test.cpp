@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -21,128 +23,27 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-Camera lookingAt(glm::vec3 eye, glm::vec3 target, float yfov) {
-  Camera camera;
-  camera.name = "look";
-  camera.yfov = yfov;
-  camera.cameraToWorld = glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
-  return camera;
-}
-
-Light spotAt(glm::vec3 position, glm::vec3 target, float inner, float outer, float intensity) {
-  Light spot;
-  spot.name = "spot";
-  spot.type = LightType::Spot;
-  spot.position = position;
-  spot.direction = glm::normalize(target - position);
-  spot.innerConeAngle = inner;
-  spot.outerConeAngle = outer;
-  spot.intensity = glm::vec3(intensity);
-  return spot;
-}
-
-Light pointAt(glm::vec3 position, float intensity) {
-  Light point;
-  point.name = "point";
-  point.type = LightType::Point;
-  point.position = position;
-  point.intensity = glm::vec3(intensity);
-  return point;
-}
-
-float sum(glm::vec3 v) {
-  return v.x + v.y + v.z;
-}
-
 // ---- 1. Visibility against ray-traced visibility --------------------------------------------
 
-// A 3 m floor with a box, a thin post, a thin wall (2 cm) and a tilted plate floating over it.
-Scene occluderScene(const Light& light) {
-  Scene scene;
-  Material floor;
-  floor.name = "floor";
-  floor.albedo = glm::vec3(0.5f);
-  addQuad(scene, {-1.5f, 0, 1.5f}, {3, 0, 0}, {0, 0, -3}, floor);
-  Material grey;
-  grey.name = "grey";
-  grey.albedo = glm::vec3(0.6f);
-  addBox(scene, {-0.5f, 0, 0}, {-0.1f, 0.4f, 0.4f}, grey);
-  addBox(scene, {0.3f, 0, -0.5f}, {0.36f, 0.8f, -0.44f}, grey);
-  addBox(scene, {-0.9f, 0, -0.9f}, {0.2f, 0.3f, -0.88f}, grey);
-  Material plate;
-  plate.name = "plate";
-  plate.albedo = glm::vec3(0.4f);
-  plate.doubleSided = true;
-  addQuad(scene, {0.0f, 0.5f, 0.3f}, {0.5f, 0.15f, 0}, {0, 0, 0.4f}, plate);
-  scene.lights = {light};
-  return scene;
-}
-
-struct Agreement {
-  int considered = 0;   // lit-or-shadowed pixels outside the edge band
-  int shadowed = 0;     // of those, occluded by ray tracing
-  int disagreeing = 0;  // |V_map − V_ray| > ½
-  double fraction() const { return considered ? double(disagreeing) / considered : 1.0; }
-};
-
-// V_map = radiance with shadows / radiance without (one light, so exactly its visibility).
-// Pixels the light does not reach unshadowed (outside the cone, facing away) are left out, and
-// so is a one-pixel band along true shadow edges (any 8-neighbour with another V_ray).
-Agreement measureAgreement(const Scene& scene, const Camera& camera, int size) {
-  const Image withShadows = renderWith(scene, camera, size, size, ShadowSettings{});
-  ShadowSettings off;
-  off.enabled = false;
-  const Image without = renderWith(scene, camera, size, size, off);
-  const WorldGeometry geometry = flatten(scene);
-  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
-  const std::vector<PixelSight> sights = pixelSights(*kernel, camera, size, size);
-  float brightest = 0.0f;
-  for (const glm::vec3& p : without.pixels) brightest = std::max(brightest, sum(p));
-  std::vector<float> traced(sights.size(), -1.0f);  // −1: not considered
-  for (std::size_t i = 0; i < sights.size(); ++i) {
-    if (!sights[i].hit.valid() || !(sum(without.pixels[i]) > 1e-4f * brightest)) continue;
-    traced[i] = tracedVisibility(*kernel, camera, sights[i], scene.lights[0]);
-  }
-  Agreement agreement;
-  for (int y = 0; y < size; ++y) {
-    for (int x = 0; x < size; ++x) {
-      const std::size_t i = without.index(x, y);
-      if (traced[i] < 0.0f) continue;
-      bool edge = false;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= size || ny >= size) continue;
-          const float other = traced[without.index(nx, ny)];
-          if (other >= 0.0f && other != traced[i]) edge = true;
-        }
-      if (edge) continue;
-      const float mapped = sum(withShadows.pixels[i]) / sum(without.pixels[i]);
-      ++agreement.considered;
-      if (traced[i] == 0.0f) ++agreement.shadowed;
-      if (std::abs(mapped - traced[i]) > 0.5f) ++agreement.disagreeing;
-    }
-  }
-  return agreement;
-}
-
 void expectAgreement(const Light& light) {
-  const Scene scene = occluderScene(light);
-  const Camera camera = lookingAt({0.3f, 2.0f, 2.0f}, {0, 0, 0}, 0.8f);
-  const Agreement a = measureAgreement(scene, camera, 128);
+  const Agreement a = measureAgreement(occluderScene(light), occluderCamera(), 128, 128);
   std::printf("%s: %d of %d pixels disagree (%.3f%%), %d shadowed\n", light.name.c_str(),
               a.disagreeing, a.considered, 100.0 * a.fraction(), a.shadowed);
   ASSERT_GT(a.considered, 128 * 128 / 4);    // the light covers much of the frame
   ASSERT_GT(a.shadowed, a.considered / 20);  // and the occluders cast real shadows
-  EXPECT_LE(a.fraction(), 0.005) << a.disagreeing << " of " << a.considered;
+  const auto shown =
+      std::filesystem::temp_directory_path() / ("bounce-shadow-agreement-" + light.name + ".png");
+  if (a.fraction() > 0.005 || std::getenv("BOUNCE_SHADOW_MAPS")) writePng(shown, a.map, 0.0f);
+  EXPECT_LE(a.fraction(), 0.005) << a.disagreeing << " of " << a.considered
+                                 << " (disagreement map: " << shown.string() << ")";
 }
 
 TEST(ShadowVisibility, SpotAgreesWithRayTracedVisibility) {
-  expectAgreement(spotAt({0.7f, 1.6f, 0.6f}, {-0.1f, 0, -0.1f}, 0.5f, 0.6f, 3.0f));
+  expectAgreement(occluderSpot());
 }
 
 TEST(ShadowVisibility, PointAgreesWithRayTracedVisibility) {
-  expectAgreement(pointAt({0.1f, 1.0f, 0.5f}, 1.0f));
+  expectAgreement(occluderPoint());
 }
 
 // ---- 2. Acne: an unoccluded plane at up to grazing incidence --------------------------------
@@ -320,6 +221,46 @@ INSTANTIATE_TEST_SUITE_P(Incidences, ShadowContact,
                          [](const testing::TestParamInfo<PanningCase>& param) {
                            return std::string(param.param.name);
                          });
+
+// ---- Model no more than the view needs -------------------------------------------------------
+
+// A 20 m floor with a box under the camera and one 8 m away; the camera (1 m up, looking down)
+// sees ±0.42 m around the origin.
+Scene cullingScene(std::vector<Light> lights) {
+  Scene scene;
+  addFloor(scene, glm::vec3(0.5f));
+  Material grey;
+  grey.name = "grey";
+  addBox(scene, {-0.1f, 0, -0.1f}, {0.1f, 0.2f, 0.1f}, grey);
+  addBox(scene, {7.9f, 0, 7.9f}, {8.1f, 0.2f, 8.1f}, grey);
+  scene.lights = std::move(lights);
+  return scene;
+}
+
+ShadowDrawCount drawnFor(const Scene& scene) {
+  testContext();
+  ForwardRenderer renderer(scene, gl::shaderDirectory());
+  (void)renderer.renderImage(downCamera(1.0f), 32, 32);
+  return renderer.shadowDrawCount();
+}
+
+TEST(ShadowCulling, MapsThatCannotReachTheViewAreSkippedAndCastersCulled) {
+  const Light near = spotAt({0.3f, 2.0f, 0.2f}, {0, 0, 0}, 0.4f, 0.5f, 1.0f);
+  const Light far = spotAt({8.0f, 2.0f, 8.3f}, {8, 0, 8}, 0.4f, 0.5f, 1.0f);
+  // The near spot's map holds the floor and the near box only.
+  const ShadowDrawCount nearOnly = drawnFor(cullingScene({near}));
+  EXPECT_EQ(nearOnly.views, 1);
+  EXPECT_EQ(nearOnly.casters, 2);
+  // The far spot lights nothing the camera sees: no map is rendered for it.
+  const ShadowDrawCount both = drawnFor(cullingScene({near, far}));
+  EXPECT_EQ(both.views, 1);
+  EXPECT_EQ(both.casters, 2);
+  // A point light 1.5 m over the origin: its +Y face sees no scene at all, and the far box
+  // lies in one face only.
+  const ShadowDrawCount point = drawnFor(cullingScene({pointAt({0.2f, 1.5f, 0.1f}, 1.0f)}));
+  EXPECT_LE(point.views, 5);
+  EXPECT_LE(point.casters, 2 * point.views + 1);
+}
 
 }  // namespace
 }  // namespace bounce::test
