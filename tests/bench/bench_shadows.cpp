@@ -6,24 +6,33 @@
 //
 // Scene: tests/render/shadow_scenes.h's occluderScene (3 m floor, box, post, 2 cm wall, tilted
 // plate) with one light, seen by occluderCamera. Per (light, resolution, filter):
-//   ms_per_frame     median over N frames of render + glFinish (no readback), after 2 warm-ups;
+//   ms_per_frame     median over N frames of render + glFinish (no readback), after 2 warm-ups,
+//                    wall clock;
+//   cpu_ms_per_frame the same frames' process CPU time (all llvmpipe threads) per frame: the
+//                    steadier figure on a shared machine, ≈ wall × threads on an idle one;
 //   disagree_*       pixels where the map's visibility differs from ray-traced visibility by
 //                    more than ½, outside a one-pixel band along true shadow edges (the test
 //                    ShadowVisibility.* measure, at this frame size).
 // CSV columns (one header line; the chart in docs/ reads them by name):
 //   light,resolution,filter,filter_radius_texels,width,height,frames,ms_per_frame,
-//   ms_per_frame_unshadowed,disagreeing_pixels,considered_pixels,disagree_fraction
+//   ms_per_frame_unshadowed,disagreeing_pixels,considered_pixels,disagree_fraction,is_default,
+//   cpu_ms_per_frame,cpu_ms_per_frame_unshadowed
+// is_default = 1 on the row of the renderer's own choice for this scene (resolution chosen per
+// light, Poisson r = 1.5), measured first.
 // filter is "hardware" (one 2×2 comparison tap) or "poisson" (16 rotated taps of that radius).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "gl/draw_state.h"
+#include "render/shadow_map_geometry.h"
+#include "scene/framing.h"
 #include "shadow_scenes.h"
 
 namespace bounce::test {
@@ -73,12 +82,24 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// Median milliseconds of one frame (render + glFinish).
-double frameMilliseconds(ForwardRenderer& renderer, const Camera& camera, gl::RenderTarget& target,
-                         int frames) {
+struct FrameTime {
+  double wallMs = 0.0;  // median
+  double cpuMs = 0.0;   // mean process CPU time
+};
+
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
+// Milliseconds of one frame (render + glFinish).
+FrameTime frameMilliseconds(ForwardRenderer& renderer, const Camera& camera,
+                            gl::RenderTarget& target, int frames) {
   for (int i = 0; i < 2; ++i) renderer.render(camera, target);
   gl::finish();
   std::vector<double> ms;
+  const double cpuStart = processCpuMs();
   for (int i = 0; i < frames; ++i) {
     const auto start = std::chrono::steady_clock::now();
     renderer.render(camera, target);
@@ -86,8 +107,9 @@ double frameMilliseconds(ForwardRenderer& renderer, const Camera& camera, gl::Re
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                      .count());
   }
+  const double cpu = (processCpuMs() - cpuStart) / frames;
   std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
+  return {ms[ms.size() / 2], cpu};
 }
 
 struct FilterCase {
@@ -103,7 +125,8 @@ int run(const Options& o) {
   const std::string temporary = o.out + ".partial";
   std::ofstream csv(temporary);
   csv << "light,resolution,filter,filter_radius_texels,width,height,frames,ms_per_frame,"
-         "ms_per_frame_unshadowed,disagreeing_pixels,considered_pixels,disagree_fraction\n";
+         "ms_per_frame_unshadowed,disagreeing_pixels,considered_pixels,disagree_fraction,"
+         "is_default,cpu_ms_per_frame,cpu_ms_per_frame_unshadowed\n";
   const FilterCase filters[] = {{"hardware", ShadowFilter::Hardware, 0.0f},
                                 {"poisson", ShadowFilter::Poisson, 1.5f},
                                 {"poisson", ShadowFilter::Poisson, 3.0f}};
@@ -112,22 +135,35 @@ int run(const Options& o) {
     RendererSettings unshadowed;
     unshadowed.shadows.enabled = false;
     ForwardRenderer plain(scene, gl::shaderDirectory(), unshadowed);
-    const double plainMs = frameMilliseconds(plain, camera, target, o.frames);
+    const FrameTime plainMs = frameMilliseconds(plain, camera, target, o.frames);
     const Image without = plain.renderImage(camera, o.width, o.height);
-    for (const int resolution : o.resolutions) {
+    const Bounds bounds = sceneBounds(scene);
+    Box sceneBox;
+    sceneBox.add(bounds.lo);
+    sceneBox.add(bounds.hi);
+    const Light& light = scene.lights[0];
+    const int chosen = light.type == LightType::Spot
+                           ? spotShadowViewFor(light, sceneBox, ShadowSettings{}).resolution
+                           : pointShadowResolutionFor(light.position, sceneBox, ShadowSettings{});
+    std::vector<int> resolutions = {0};
+    resolutions.insert(resolutions.end(), o.resolutions.begin(), o.resolutions.end());
+    for (const int resolution : resolutions) {
       for (const FilterCase& f : filters) {
+        if (resolution == 0 && f.radius != ShadowSettings{}.filterRadius) continue;
         RendererSettings settings;
         settings.shadows.resolution = resolution;
         settings.shadows.filter = f.filter;
         settings.shadows.filterRadius = f.radius;
         ForwardRenderer renderer(scene, gl::shaderDirectory(), settings);
-        const double ms = frameMilliseconds(renderer, camera, target, o.frames);
+        const FrameTime ms = frameMilliseconds(renderer, camera, target, o.frames);
         const Agreement a = compareVisibility(
             scene, camera, renderer.renderImage(camera, o.width, o.height), without);
         char line[256];
-        std::snprintf(line, sizeof line, "%s,%d,%s,%.2f,%d,%d,%d,%.3f,%.3f,%d,%d,%.6f\n",
-                      kind.c_str(), resolution, f.name, f.radius, o.width, o.height, o.frames, ms,
-                      plainMs, a.disagreeing, a.considered, a.fraction());
+        std::snprintf(line, sizeof line,
+                      "%s,%d,%s,%.2f,%d,%d,%d,%.3f,%.3f,%d,%d,%.6f,%d,%.3f,%.3f\n", kind.c_str(),
+                      resolution == 0 ? chosen : resolution, f.name, f.radius, o.width, o.height,
+                      o.frames, ms.wallMs, plainMs.wallMs, a.disagreeing, a.considered,
+                      a.fraction(), resolution == 0 ? 1 : 0, ms.cpuMs, plainMs.cpuMs);
         csv << line;
         std::fprintf(stderr, "bench_shadows: %s", line);
       }

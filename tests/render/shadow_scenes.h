@@ -158,6 +158,7 @@ struct Agreement {
   // leaks the other way), blue shadowed only by ray tracing (light leaks, peter-panning),
   // dark green the excluded edge band; black not considered.
   Image map;
+  Image frame;  // the frame with shadows, radiance W/(sr·m²)
   double fraction() const { return considered ? double(disagreeing) / considered : 1.0; }
 };
 
@@ -181,6 +182,7 @@ inline Agreement compareVisibility(const Scene& scene, const Camera& camera,
   }
   Agreement agreement;
   agreement.map = Image(width, height);
+  agreement.frame = withShadows;
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t i = without.index(x, y);

@@ -33,7 +33,10 @@ void expectAgreement(const Light& light) {
   ASSERT_GT(a.shadowed, a.considered / 20);  // and the occluders cast real shadows
   const auto shown =
       std::filesystem::temp_directory_path() / ("bounce-shadow-agreement-" + light.name + ".png");
-  if (a.fraction() > 0.005 || std::getenv("BOUNCE_SHADOW_MAPS")) writePng(shown, a.map, 0.0f);
+  if (a.fraction() > 0.005 || std::getenv("BOUNCE_SHADOW_MAPS")) {
+    writePng(shown, a.map, 0.0f);
+    writePng(std::filesystem::path(shown).replace_extension(".frame.png"), a.frame, 0.0f);
+  }
   EXPECT_LE(a.fraction(), 0.005) << a.disagreeing << " of " << a.considered
                                  << " (disagreement map: " << shown.string() << ")";
 }
@@ -258,6 +261,7 @@ TEST(ShadowCulling, MapsThatCannotReachTheViewAreSkippedAndCastersCulled) {
   // A point light 1.5 m over the origin: its +Y face sees no scene at all, and the far box
   // lies in one face only.
   const ShadowDrawCount point = drawnFor(cullingScene({pointAt({0.2f, 1.5f, 0.1f}, 1.0f)}));
+  std::printf("point light: %d cube faces rendered, %d caster draws\n", point.views, point.casters);
   EXPECT_LE(point.views, 5);
   EXPECT_LE(point.casters, 2 * point.views + 1);
 }
