@@ -27,9 +27,10 @@ using namespace bounce;
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr,
-                 "usage: bench_soft_shadows REFERENCE.exr STD_ERROR.exr [--size N] [--frames F] [--out "
-                 "FILE.csv]\n");
+    std::fprintf(
+        stderr,
+        "usage: bench_soft_shadows REFERENCE.exr STD_ERROR.exr [--size N] [--frames F] [--out "
+        "FILE.csv]\n");
     return 2;
   }
   int size = 256, frames = 5, supersample = 2;
