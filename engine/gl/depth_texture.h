@@ -23,6 +23,7 @@ class DepthTexture2D {
 
  private:
   friend class DepthTarget;
+  friend class RenderTarget;
   uint32_t id_ = 0;
   int width_ = 0, height_ = 0;
 };

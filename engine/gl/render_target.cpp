@@ -9,11 +9,20 @@
 
 namespace bounce::gl {
 
-RenderTarget::RenderTarget(int width, int height) {
+namespace {
+
+// Checked before any member is built, so the message names the render target.
+int checkedSize(int width, int height) {
   if (width <= 0 || height <= 0 || width > Texture2D::maxSize() || height > Texture2D::maxSize())
     throw std::invalid_argument("render target of " + std::to_string(width) + "x" +
                                 std::to_string(height) + " pixels (the driver allows 1 to " +
                                 std::to_string(Texture2D::maxSize()) + ")");
+  return height;
+}
+
+}  // namespace
+
+RenderTarget::RenderTarget(int width, int height) : depth_(width, checkedSize(width, height)) {
   color_.width_ = width;
   color_.height_ = height;
   glGenTextures(1, &color_.id_);
@@ -23,25 +32,20 @@ RenderTarget::RenderTarget(int width, int height) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glGenRenderbuffers(1, &depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
   glGenFramebuffers(1, &framebuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id_, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id_, 0);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteRenderbuffers(1, &depth_);
-    throw std::runtime_error("the driver cannot render to an RGBA32F + depth24 framebuffer");
+    throw std::runtime_error("the driver cannot render to an RGBA32F + depth32F framebuffer");
   }
 }
 
 RenderTarget::~RenderTarget() {
   glDeleteFramebuffers(1, &framebuffer_);
-  glDeleteRenderbuffers(1, &depth_);
 }
 
 void RenderTarget::bind() const {

@@ -150,18 +150,37 @@ INSTANTIATE_TEST_SUITE_P(Lights, ShadowAcne, testing::ValuesIn(acneCases()),
 struct PanningCase {
   const char* name;
   float zenith;  // radians: the light's elevation seen from the box's edge, from the normal
+  LightType type = LightType::Spot;
 };
 
 class ShadowContact : public testing::TestWithParam<PanningCase> {};
 
-// A 40×40 cm slab 4 mm thick (4 texels of the default map here) on the floor, lit by a spot
-// from the −x side; a camera looks straight down at its +x edge (x = 0.2 m), 0.23 mm per pixel.
-// Along each pixel row the true shadow starts at the edge; the first floor pixel the map
-// shadows (V < ½) must lie within one shadow texel (its edge w at that distance from the light,
-// perpendicular to the light) plus one pixel. Both faces are in the map, so what detaches a
-// shadow is a bias reaching the caster's thickness along the light ray, h/cosθ (depth bias) or
-// h (normal offset): the slab is thin enough for either to show.
+// A 40×40 cm slab four shadow texels thick (w at the slab's edge under the default map: 4 mm
+// for the spot, 9.4 mm for the point light's 90° cube faces) on a 2 m floor, lit from the −x
+// side; a camera looks straight down at its +x edge (x = 0.2 m), 0.23 mm per pixel. Along each
+// pixel row the true shadow starts at the edge; the first floor pixel the map shadows (V < ½)
+// must lie within one shadow texel (w, perpendicular to the light) plus one pixel. Both faces
+// are in the map, so what detaches a shadow is a bias reaching the caster's thickness along the
+// light ray, h/cosθ (depth bias) or h (normal offset): a 4-texel slab shows either.
 TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
+  const glm::vec3 edge(0.2f, 0.0f, 0.0f);
+  const float zenith = GetParam().zenith, distance = 1.2f;
+  const glm::vec3 position = edge + distance * glm::vec3(-std::sin(zenith), std::cos(zenith), 0.0f);
+  const Light light = GetParam().type == LightType::Point
+                          ? pointAt(position, 3.0f)
+                          : spotAt(position, edge, 0.3f, 0.4f, 3.0f);
+  // The map's texel at the edge, for the scene's box (the floor decides it; the slab is thin).
+  Box box;
+  box.add({-1.0f, 0.0f, -1.0f});
+  box.add({1.0f, 0.01f, 1.0f});
+  const int resolution = light.type == LightType::Point
+                             ? pointShadowResolutionFor(light.position, box, ShadowSettings{})
+                             : spotShadowViewFor(light, box, ShadowSettings{}).resolution;
+  const float texelAngle = light.type == LightType::Point
+                               ? 2.0f / static_cast<float>(resolution)
+                               : spotShadowViewFor(light, box, ShadowSettings{}).texelAngle;
+  const float texel = texelAngle * glm::length(light.position - edge);
+
   Scene scene;
   Material floor;
   floor.name = "floor";
@@ -170,12 +189,8 @@ TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
   Material slab;
   slab.name = "slab";
   slab.albedo = glm::vec3(0.5f);
-  addBox(scene, {-0.2f, 0, -0.2f}, {0.2f, 0.004f, 0.2f}, slab);
-  const glm::vec3 edge(0.2f, 0.0f, 0.0f);
-  const float zenith = GetParam().zenith, distance = 1.2f;
-  const Light spot = spotAt(edge + distance * glm::vec3(-std::sin(zenith), std::cos(zenith), 0.0f),
-                            edge, 0.3f, 0.4f, 3.0f);
-  scene.lights = {spot};
+  addBox(scene, {-0.2f, 0, -0.2f}, {0.2f, 4.0f * texel, 0.2f}, slab);
+  scene.lights = {light};
 
   constexpr int kSize = 128;
   Camera camera = downCamera(0.25f, 2.0f * std::atan(0.015f / 0.25f));
@@ -188,12 +203,6 @@ TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
   const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
   const std::vector<PixelSight> sights = pixelSights(*kernel, camera, kSize, kSize);
 
-  const Bounds bounds = sceneBounds(scene);
-  Box box;
-  box.add(bounds.lo);
-  box.add(bounds.hi);
-  const ShadowView view = spotShadowViewFor(spot, box, ShadowSettings{});
-  const float texel = view.texelAngle * glm::length(spot.position - edge);
   const float pixel = 2.0f * 0.015f / kSize;
 
   float worstGap = 0.0f;
@@ -212,18 +221,19 @@ TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
     }
   }
   std::printf("%s: gap %.3f mm over %d rows; texel %.3f mm (resolution %d), pixel %.3f mm\n",
-              GetParam().name, 1e3 * worstGap, rows, 1e3 * texel, view.resolution, 1e3 * pixel);
+              GetParam().name, 1e3 * worstGap, rows, 1e3 * texel, resolution, 1e3 * pixel);
   ASSERT_EQ(rows, kSize / 2);  // every row finds the shadow
   EXPECT_LE(worstGap, texel + pixel);
 }
 
-INSTANTIATE_TEST_SUITE_P(Incidences, ShadowContact,
-                         testing::Values(PanningCase{"zenith_45", glm::radians(45.0f)},
-                                         PanningCase{"zenith_60", glm::radians(60.0f)},
-                                         PanningCase{"zenith_80", glm::radians(80.0f)}),
-                         [](const testing::TestParamInfo<PanningCase>& param) {
-                           return std::string(param.param.name);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Incidences, ShadowContact,
+    testing::Values(PanningCase{"zenith_45", glm::radians(45.0f)},
+                    PanningCase{"zenith_60", glm::radians(60.0f)},
+                    PanningCase{"zenith_80", glm::radians(80.0f)},
+                    PanningCase{"point_zenith_60", glm::radians(60.0f), LightType::Point},
+                    PanningCase{"point_zenith_80", glm::radians(80.0f), LightType::Point}),
+    [](const testing::TestParamInfo<PanningCase>& param) { return std::string(param.param.name); });
 
 // ---- Model no more than the view needs -------------------------------------------------------
 
