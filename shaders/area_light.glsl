@@ -1,4 +1,4 @@
-// Area lights: emissive triangles of uniform radiance L (W/(sr·m²)), unshadowed. The
+// Area lights: emissive triangles of uniform radiance L (W/(sr·m²)). The unshadowed
 // irradiance they give a Lambertian receiver at p with unit normal n is exact (Lambert's
 // contour integral for a polygon, the emitter first clipped to the receiver's upper
 // hemisphere n·(x − p) ≥ 0):
@@ -53,8 +53,13 @@ float clippedTriangleIrradiancePerRadiance(vec3 a, vec3 b, vec3 c, vec3 n) {
   return 0.5 * abs(sum);
 }
 
-vec3 areaIrradiance(vec3 p, vec3 n) {
+// Unshadowed E of every emitter triangle, each times the visible fraction V of the area light it
+// belongs to when that light has a shadow map (shadow_area.glsl; ng: the receiver's geometric
+// normal). V is evaluated once per light and fragment, when its first triangle needs it.
+vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng) {
   vec3 irradiance = vec3(0.0);
+  float visibility[MAX_AREA_SHADOWS];
+  for (int s = 0; s < MAX_AREA_SHADOWS; ++s) visibility[s] = -1.0;
   for (int i = 0; i < uEmitterCount; ++i) {
     vec3 v0 = texelFetch(uEmitters, ivec2(0, i), 0).xyz;
     vec3 v1 = texelFetch(uEmitters, ivec2(1, i), 0).xyz;
@@ -65,7 +70,14 @@ vec3 areaIrradiance(vec3 p, vec3 n) {
     vec3 front = normalize(cross(v1 - v0, v2 - v0));
     float height = dot(front, p - v0);
     if (abs(height) < 1e-5 || (height < 0.0 && radiance.w < 0.5)) continue;
-    irradiance += radiance.rgb * clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
+    float e = clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
+    if (e <= 0.0) continue;
+    int slot = areaShadowSlot(i);
+    if (slot >= 0) {
+      if (visibility[slot] < 0.0) visibility[slot] = areaVisibility(slot, p, ng);
+      e *= visibility[slot];
+    }
+    irradiance += radiance.rgb * e;
   }
   return irradiance;
 }

@@ -3,7 +3,8 @@
 //   L_o = ρ/π · (E_punctual + E_area) + L_e,
 // into a linear float target. ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
 // path tracer does; L_e the surface's own emission (front face; both when double-sided).
-// Punctual lights are shadowed by their maps (shadows.glsl); area lights are unshadowed.
+// Punctual lights are shadowed by their maps (shadows.glsl); area lights by theirs
+// (shadow_area.glsl: percentage-closer soft shadows).
 #include "lights.glsl"
 #include "shadows.glsl"
 #include "area_light.glsl"
@@ -31,6 +32,6 @@ void main() {
   vec3 albedo = uAlbedo;
   if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
   vec3 irradiance =
-      punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n);
+      punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n, ng);
   fragRadiance = vec4(albedo / PI * irradiance + uEmission, 1.0);
 }

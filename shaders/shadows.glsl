@@ -4,6 +4,8 @@
 #include "shadow_common.glsl"
 #include "shadow_spot.glsl"
 #include "shadow_point.glsl"
+#include "shadow_directional.glsl"
+#include "shadow_area.glsl"
 
 uniform int uLightShadow[MAX_PUNCTUAL_LIGHTS];
 
@@ -12,5 +14,7 @@ float lightVisibility(int light, vec3 p, vec3 ng) {
   if (slot < 0) return 1.0;
   if (uLightType[light] == LIGHT_SPOT) return spotShadow(slot, p, ng, uLightPosition[light]);
   if (uLightType[light] == LIGHT_POINT) return pointShadow(slot, p, ng, uLightPosition[light]);
+  if (uLightType[light] == LIGHT_DIRECTIONAL)
+    return directionalVisibility(p, ng, -uLightDirection[light]);
   return 1.0;
 }

@@ -147,7 +147,8 @@ int main(int argc, char** argv) {
       "bounce-trace: path-traced reference image of a scene camera, in linear radiance "
       "W/(sr·m²) (EXR), optionally tone-mapped to PNG."};
   Options o;
-  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
+  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
+      ->required();
   app.add_option("--camera", o.camera, "camera name (default: the scene's first camera)");
   app.add_option("--spp", o.spp, "samples per pixel")->check(CLI::Range(1, 1 << 24));
   app.add_option("--max-depth", o.maxDepth, "most diffuse reflections along a path")

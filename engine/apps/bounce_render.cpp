@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
       "linear-radiance "
       "EXR (W/(sr·m²)) and/or tone-mapped sRGB PNG files.",
       "bounce-render"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj)")->required();
+  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
+      ->required();
   app.add_option("--camera", options.camera, "camera name (default: the scene's first camera)");
   app.add_option("--width", options.width, "image width in pixels")->check(CLI::Range(1, 16384));
   app.add_option("--height", options.height, "image height in pixels")->check(CLI::Range(1, 16384));
@@ -131,12 +132,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   app.add_option("--mode", options.mode, "what to draw: direct (direct light only)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
-  app.add_flag("--no-shadows", options.noShadows, "draw punctual lights unshadowed");
+  app.add_flag("--no-shadows", options.noShadows,
+               "draw every light unshadowed (punctual and area lights)");
   app.add_option("--shadow-resolution", options.shadowResolution,
                  "texels per side of every shadow map / cube face (default: chosen per light)")
       ->check(CLI::Range(16, 16384));
-  app.add_option("--shadow-filter", options.shadowFilter,
-                 "hardware (one 2x2 comparison tap) or poisson (16 rotated taps, default)")
+  app.add_option(
+         "--shadow-filter", options.shadowFilter,
+         "hardware (hard: one 2x2 comparison tap; area lights from their centre) or poisson "
+         "(soft, default: 16 rotated taps; area lights: percentage-closer soft shadows)")
       ->check(CLI::IsMember({"hardware", "poisson"}));
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")

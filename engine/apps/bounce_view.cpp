@@ -198,7 +198,8 @@ int main(int argc, char** argv) {
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
       "exposure, Esc quits.",
       "bounce-view"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj)")->required();
+  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
+      ->required();
   app.add_option("--camera", options.camera, "start at this camera (default: the first)");
   app.add_option("--width", options.width, "window width")->check(CLI::Range(16, 16384));
   app.add_option("--height", options.height, "window height")->check(CLI::Range(16, 16384));

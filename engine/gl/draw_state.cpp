@@ -18,6 +18,10 @@ void clearDepth() {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
+void setViewport(int x, int y, int width, int height) {
+  glViewport(x, y, width, height);
+}
+
 void setDepthTest(bool enabled) {
   if (enabled) {
     glEnable(GL_DEPTH_TEST);

@@ -17,6 +17,9 @@ void setBackFaceCulling(bool enabled, bool mirrored = false);
 // Draws one triangle covering the viewport; the vertex shader makes its corners from
 // gl_VertexID (no attributes), see shaders/fullscreen.vert.
 void drawFullscreenTriangle();
+// Draws into the rectangle of the bound framebuffer with lower-left corner (x, y) and size
+// width x height pixels (e.g. one tile of a shadow atlas).
+void setViewport(int x, int y, int width, int height);
 // Blocks until the GPU has finished every command issued so far.
 void finish();
 // Throws std::logic_error "<what>: GL_INVALID_…" if a GL call since the last check failed: a bug

@@ -53,7 +53,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
-  p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()));
+  p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
+                   cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
   p.forward.draw(p.scene, p.lights, p.shadows, cameraViewProjection, target);
 }
 

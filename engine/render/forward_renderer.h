@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -51,6 +52,10 @@ class ForwardRenderer {
   // empty removes them.
   void setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv);
 
+  // Fits the directional light's cascades to `camera` instead of the one drawn with (none: the
+  // drawn one): the viewer's frozen-shadow view, and how tests compare the maps two cameras get.
+  void setCascadeCamera(std::optional<Camera> camera) { cascadeCamera_ = std::move(camera); }
+
   const RendererSettings& settings() const { return settings_; }
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
@@ -62,6 +67,7 @@ class ForwardRenderer {
  private:
   struct Passes;
   RendererSettings settings_;
+  std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;
   std::unique_ptr<Passes> passes_;
 };

@@ -113,6 +113,7 @@ void GpuScene::uploadEmitters() {
   // World-space emitter triangles (winding flipped for mirrored instances, so the front face
   // stays the emitting side), 4 texels each: see shaders/area_light.glsl.
   std::vector<glm::vec4> table;
+  std::vector<uint32_t> owners;
   for (const GpuInstance& instance : instances_) {
     const GpuMaterial& material = materials_[instance.material];
     if (material.emission == glm::vec3(0.0f)) continue;
@@ -131,6 +132,7 @@ void GpuScene::uploadEmitters() {
         continue;
       for (const glm::vec3& corner : p) table.emplace_back(corner, 0.0f);
       table.emplace_back(material.emission, material.doubleSided ? 1.0f : 0.0f);
+      owners.push_back(static_cast<uint32_t>(&instance - instances_.data()));
     }
   }
   const bool first = !emitters_.has_value();
@@ -141,7 +143,11 @@ void GpuScene::uploadEmitters() {
                            std::to_string(gl::Texture2D::maxSize()) + " light the scene");
     emitterCount_ = gl::Texture2D::maxSize();
     table.resize(static_cast<std::size_t>(emitterCount_) * 4);
+    owners.resize(static_cast<std::size_t>(emitterCount_));
   }
+  emitterTable_ = table;
+  emitterInstances_ = owners;
+  ++emitterVersion_;
   if (table.empty()) table.assign(4, glm::vec4(0.0f));  // samplers need a texture
   emitters_.reset();
   emitters_.emplace(4, std::max(emitterCount_, 1), table);

@@ -59,6 +59,12 @@ class GpuScene {
   // World bounds of every instance (metres); empty for an empty scene.
   Box bounds() const;
   int emitterCount() const { return emitterCount_; }
+  // The emitter table as uploaded (4 texels per emissive triangle, shaders/area_light.glsl),
+  // the instance each row belongs to (an instance's rows are contiguous), and a count that
+  // changes whenever the table is rebuilt (an emitting instance moved). For area-light shadows.
+  std::span<const glm::vec4> emitterTable() const { return emitterTable_; }
+  std::span<const uint32_t> emitterInstances() const { return emitterInstances_; }
+  int emitterVersion() const { return emitterVersion_; }
 
   // Sets uModel and uNormalMatrix for `instance`, then draws it.
   void draw(const GpuInstance& instance, gl::Program& program) const;
@@ -80,6 +86,9 @@ class GpuScene {
   std::vector<gl::Texture2D> textures_;
   std::optional<gl::Texture2D> emitters_;
   int emitterCount_ = 0;
+  std::vector<glm::vec4> emitterTable_;
+  std::vector<uint32_t> emitterInstances_;
+  int emitterVersion_ = 0;
   std::vector<std::string>* warnings_ = nullptr;
 };
 

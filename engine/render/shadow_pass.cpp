@@ -12,7 +12,9 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
       depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag"),
       lightSlot_(lights.size(), -1),
       spot_(settings),
-      point_(settings) {
+      point_(settings),
+      directional_(settings, shaderDir),
+      area_(settings) {
   if (!settings.enabled) return;
   const Box sceneBox = scene.bounds();
   int unshadowed = 0;
@@ -20,19 +22,25 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
     const Light& light = lights.light(i);
     if (light.type == LightType::Spot) lightSlot_[i] = spot_.add(light, sceneBox);
     if (light.type == LightType::Point) lightSlot_[i] = point_.add(light, sceneBox);
-    if (light.type != LightType::Directional && lightSlot_[i] < 0) ++unshadowed;
+    if (light.type == LightType::Directional) lightSlot_[i] = directional_.add(light);
+    if (lightSlot_[i] < 0) ++unshadowed;
   }
+  area_.add(scene, warnings);
   if (unshadowed > 0)
-    warnings.push_back(std::to_string(unshadowed) + " point/spot lights beyond the first " +
-                       std::to_string(kMaxSpotShadows) + " spot and " +
-                       std::to_string(kMaxPointShadows) + " point lights cast no shadows");
+    warnings.push_back(std::to_string(unshadowed) + " lights beyond the first " +
+                       std::to_string(kMaxSpotShadows) + " spot, " +
+                       std::to_string(kMaxPointShadows) +
+                       " point and 1 directional light cast no shadows");
 }
 
-void ShadowPass::render(const GpuScene& scene, const ViewVolume& view) {
+void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Camera& camera,
+                        float aspect) {
   lastFrame_ = {};
   if (!settings_.enabled) return;
   lastFrame_ += spot_.render(scene, view, depth_, target_);
   lastFrame_ += point_.render(scene, view, depth_, target_);
+  lastFrame_ += directional_.render(scene, camera, aspect, target_);
+  lastFrame_ += area_.render(scene, view, depth_, target_);
   gl::checkErrors("shadow pass");
 }
 
@@ -41,6 +49,8 @@ void ShadowPass::bind(gl::Program& forward) const {
   forward.set("uShadowFilter", settings_.filter == ShadowFilter::Poisson ? 1 : 0);
   spot_.bind(forward);
   point_.bind(forward);
+  directional_.bind(forward);
+  area_.bind(forward);
 }
 
 }  // namespace bounce

@@ -1,7 +1,8 @@
 // The shadow pass: before the lit pass, renders a depth map for each shadowed light whose
-// light can reach what the camera sees (spot: spot_shadow_maps.h; point: point_shadow_maps.h),
-// then hands the maps to the lit pass. Which light has which map is uLightShadow[i] in
-// shaders/shadows.glsl: the slot among its kind's maps, or −1 (unshadowed).
+// light can reach what the camera sees (spot: spot_shadow_maps.h; point: point_shadow_maps.h;
+// directional: cascades fitted to the camera, directional_shadow_maps.h; area lights: cubes for
+// soft shadows, area_shadow_maps.h), then hands the maps to the lit pass. Which light has which map
+// is uLightShadow[i] in shaders/shadows.glsl: the slot among its kind's maps, or −1 (unshadowed).
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,8 @@
 
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
+#include "render/area_shadow_maps.h"
+#include "render/directional_shadow_maps.h"
 #include "render/gpu_scene.h"
 #include "render/point_shadow_maps.h"
 #include "render/punctual_lights.h"
@@ -22,8 +25,9 @@ class ShadowPass {
   ShadowPass(const GpuScene& scene, const PunctualLights& lights, const ShadowSettings& settings,
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
 
-  // `view`: what the camera can see; maps that cannot reach it are not rendered.
-  void render(const GpuScene& scene, const ViewVolume& view);
+  // `view`: what the camera can see; maps that cannot reach it are not rendered. `camera` and
+  // the image's `aspect`: what the directional cascades are fitted to.
+  void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
   // What the last render() drew (culling's effect).
@@ -36,6 +40,8 @@ class ShadowPass {
   std::vector<int> lightSlot_;  // per punctual light: its map's slot in its kind, −1 for none
   SpotShadowMaps spot_;
   PointShadowMaps point_;
+  DirectionalShadowMaps directional_;
+  AreaShadowMaps area_;
   ShadowDrawCount lastFrame_;
 };
 

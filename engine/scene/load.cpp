@@ -16,13 +16,13 @@ Scene loadScene(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext != ".gltf" && ext != ".glb" && ext != ".obj") {
-    throw LoadError(path,
-                    "unsupported file extension '" + ext + "' (expected .gltf, .glb or .obj)");
+  if (ext != ".gltf" && ext != ".glb" && ext != ".obj" && ext != ".json") {
+    throw LoadError(path, "unsupported file extension '" + ext +
+                              "' (expected .gltf, .glb, .obj or a .json wrapper)");
   }
   Scene scene;
   try {
-    scene = ext == ".obj" ? loadObj(path) : loadGltf(path);
+    scene = ext == ".obj" ? loadObj(path) : ext == ".json" ? loadSceneJson(path) : loadGltf(path);
   } catch (const LoadError&) {
     throw;
   } catch (const std::exception& e) {  // e.g. std::bad_alloc on absurd sizes: still a LoadError

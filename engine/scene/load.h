@@ -1,4 +1,5 @@
-// Scene loading: picks the loader by the file's extension (.gltf, .glb, .obj).
+// Scene loading: picks the loader by the file's extension (.gltf, .glb, .obj, or a .json wrapper
+// that names a model file, its scale to metres, lights and a camera: scene_json_load.cpp).
 // Every bad input throws LoadError naming the file and the reason; nothing crashes.
 #pragma once
 

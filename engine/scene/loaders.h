@@ -11,5 +11,8 @@ namespace bounce {
 Scene loadGltf(const std::filesystem::path& path);
 // Wavefront OBJ with its MTL materials. Throws LoadError.
 Scene loadObj(const std::filesystem::path& path);
+// A wrapper (.json) naming one model file by path, its scale to metres, lights and a camera
+// (format in scene_json_load.cpp). Throws LoadError.
+Scene loadSceneJson(const std::filesystem::path& path);
 
 }  // namespace bounce

@@ -1,0 +1,136 @@
+#include "render/area_shadow_maps.h"
+
+#include <algorithm>
+
+#include "gl/draw_state.h"
+#include "render/texture_units.h"
+
+namespace bounce {
+namespace {
+
+// The emitter table's rows (4 texels each, shaders/area_light.glsl) as triangles.
+std::vector<EmitterTriangle> emitterTriangles(const GpuScene& scene) {
+  const std::span<const glm::vec4> table = scene.emitterTable();
+  const std::span<const uint32_t> owner = scene.emitterInstances();
+  std::vector<EmitterTriangle> triangles;
+  for (std::size_t row = 0; row < owner.size(); ++row) {
+    const glm::vec4* t = &table[row * 4];
+    const uint32_t instance = owner[row];
+    triangles.push_back({glm::vec3(t[0]), glm::vec3(t[1]), glm::vec3(t[2]), glm::vec3(t[3]),
+                         t[3].w > 0.5f, instance, scene.instances()[instance].material});
+  }
+  return triangles;
+}
+
+}  // namespace
+
+void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnings) {
+  if (!settings_.enabled) return;
+  const std::vector<AreaLight> lights = groupAreaLights(emitterTriangles(scene));
+  for (const uint32_t i : pickShadowedAreaLights(lights, kMaxAreaShadows)) {
+    Cube cube;
+    cube.light = lights[i];
+    cubes_.push_back(std::move(cube));
+  }
+  if (lights.size() > cubes_.size())
+    warnings.push_back(std::to_string(lights.size() - cubes_.size()) + " area lights beyond the " +
+                       std::to_string(kMaxAreaShadows) + " most powerful cast no shadows");
+  if (!cubes_.empty()) sampler_.emplace();
+  place(scene);
+}
+
+void AreaShadowMaps::place(const GpuScene& scene) {
+  emitterVersion_ = scene.emitterVersion();
+  const std::vector<EmitterTriangle> triangles = emitterTriangles(scene);
+  const std::vector<AreaLight> lights = groupAreaLights(triangles);
+  const Box sceneBox = scene.bounds();
+  for (Cube& cube : cubes_) {
+    const auto same = std::find_if(lights.begin(), lights.end(), [&](const AreaLight& l) {
+      return l.instance == cube.light.instance && l.material == cube.light.material;
+    });
+    if (same == lights.end()) continue;  // cannot happen: moving keeps an instance's emitters
+    cube.light = *same;
+    // The light's own instance is left out of its map (render), so its centre can see past it.
+    cube.origin = cube.light.centre;
+    cube.points = samplePoints(cube.light, triangles, kAreaShadowSamples);
+    const auto [lo, hi] =
+        std::minmax_element(cube.light.triangles.begin(), cube.light.triangles.end());
+    cube.rows = glm::ivec2(static_cast<int>(*lo), static_cast<int>(*hi) + 1);
+    int resolution = settings_.resolution;
+    // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
+    // scene's diagonal at the distance of its centre.
+    if (resolution <= 0)
+      resolution = defaultShadowResolution(cube.origin, sceneBox, 2.0f, 256, 1024);
+    if (resolution != cube.resolution) {
+      cube.texture.reset();
+      cube.texture.emplace(resolution);
+      cube.resolution = resolution;
+    }
+  }
+}
+
+ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+                                       gl::Program& depthProgram, gl::DepthTarget& target) {
+  ShadowDrawCount count;
+  if (cubes_.empty()) return count;
+  if (scene.emitterVersion() != emitterVersion_) place(scene);
+  const Box sceneBox = scene.bounds();
+  for (Cube& cube : cubes_) {
+    for (int face = 0; face < 6; ++face) {
+      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
+      cube.far = faceView.far;
+      target.bind(*cube.texture, face);
+      gl::clearDepth();
+      if (!view.mayReach(faceView.viewProjection, sceneBox)) continue;
+      // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
+      // through the map's origin and would hide everything from a double-sided light.
+      gl::setDepthTest(true);
+      gl::setBackFaceCulling(false);
+      depthProgram.set("uViewProjection", faceView.viewProjection);
+      depthProgram.set("uLightPosition", cube.origin);
+      depthProgram.set("uFar", faceView.far);
+      const Frustum frustum(faceView.viewProjection);
+      const std::span<const GpuInstance> instances = scene.instances();
+      ++count.views;
+      for (std::size_t i = 0; i < instances.size(); ++i) {
+        if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
+        scene.draw(instances[i], depthProgram);
+        ++count.casters;
+      }
+    }
+  }
+  return count;
+}
+
+void AreaShadowMaps::bind(gl::Program& forward) const {
+  std::vector<glm::vec3> origins(kMaxAreaShadows, glm::vec3(0.0f));
+  std::vector<glm::vec4> params(kMaxAreaShadows, glm::vec4(1.0f));
+  std::vector<glm::vec2> rows(kMaxAreaShadows, glm::vec2(0.0f));
+  std::vector<glm::vec4> normals(kMaxAreaShadows, glm::vec4(0.0f));
+  std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
+                                glm::vec3(0.0f));
+  for (int slot = 0; slot < kMaxAreaShadows; ++slot)
+    forward.set("uAreaShadowMap" + std::to_string(slot), TextureUnit::kAreaShadow0 + slot);
+  for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
+    const Cube& cube = cubes_[slot];
+    const int unit = TextureUnit::kAreaShadow0 + static_cast<int>(slot);
+    cube.texture->bind(unit);
+    sampler_->bind(unit);
+    origins[slot] = cube.origin;
+    // The light's radius bounds the blocker search's reach (shaders/shadow_area.glsl, d_min).
+    params[slot] = glm::vec4(cube.far, static_cast<float>(cube.resolution), cube.light.radius,
+                             settings_.filterRadius);
+    rows[slot] = glm::vec2(cube.rows);
+    normals[slot] = glm::vec4(cube.light.normal, cube.light.doubleSided ? 1.0f : 0.0f);
+    std::copy(cube.points.begin(), cube.points.end(),
+              points.begin() + static_cast<std::ptrdiff_t>(slot * kAreaShadowSamples));
+  }
+  forward.set("uAreaShadowCount", static_cast<int>(cubes_.size()));
+  forward.set("uAreaShadowOrigin", std::span<const glm::vec3>(origins));
+  forward.set("uAreaShadowParams", std::span<const glm::vec4>(params));
+  forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));
+  forward.set("uAreaShadowNormal", std::span<const glm::vec4>(normals));
+  forward.set("uAreaShadowPoints", std::span<const glm::vec3>(points));
+}
+
+}  // namespace bounce

@@ -1,0 +1,139 @@
+// A scene wrapper (.json): one model file by path (never copied), uniformly scaled into metres,
+// plus punctual lights and a camera in metres and radians. Used for models kept outside the
+// repository in their own units (the conference room is modelled in 3 mm units).
+//
+//   {
+//     "model": "relative/or/absolute/path.obj",    (.obj, .gltf or .glb; relative to this file)
+//     "scale": 0.003,                              (metres per model unit, > 0; default 1)
+//     "lights": [{"type": "spot" | "point" | "directional", "name": "...",
+//                 "position": [x, y, z],           (metres; point, spot)
+//                 "direction": [x, y, z],          (the way light travels; spot, directional)
+//                 "intensity": [r, g, b],          (W/sr; point, spot)
+//                 "irradiance": [r, g, b],         (W/m²; directional)
+//                 "inner_cone": a, "outer_cone": b}],  (radians; spot)
+//     "camera": {"position": [..], "target": [..], "yfov": 0.9, "znear": 0.05, "zfar": 100}
+//   }
+// Lights and the camera are added to (the camera before) those of the model.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "scene/load.h"
+#include "scene/loaders.h"
+
+namespace bounce {
+namespace {
+
+using nlohmann::json;
+
+glm::vec3 vec3Of(const std::filesystem::path& path, const json& value, const std::string& what) {
+  if (!value.is_array() || value.size() != 3)
+    throw LoadError(path, "'" + what + "' must be an array of 3 numbers");
+  glm::vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    if (!value[static_cast<std::size_t>(i)].is_number())
+      throw LoadError(path, "'" + what + "' must be an array of 3 numbers");
+    v[i] = value[static_cast<std::size_t>(i)].get<float>();
+    if (!std::isfinite(v[i])) throw LoadError(path, "'" + what + "' is not finite");
+  }
+  return v;
+}
+
+float numberOf(const std::filesystem::path& path, const json& object, const std::string& key,
+               float fallback) {
+  if (!object.contains(key)) return fallback;
+  if (!object[key].is_number()) throw LoadError(path, "'" + key + "' must be a number");
+  const float v = object[key].get<float>();
+  if (!std::isfinite(v)) throw LoadError(path, "'" + key + "' is not finite");
+  return v;
+}
+
+Light lightOf(const std::filesystem::path& path, const json& entry) {
+  if (!entry.is_object() || !entry.contains("type") || !entry["type"].is_string())
+    throw LoadError(path, "each light needs a \"type\" (point, spot or directional)");
+  Light light;
+  const std::string type = entry["type"].get<std::string>();
+  light.name = entry.value("name", type);
+  if (type == "point" || type == "spot") {
+    light.type = type == "point" ? LightType::Point : LightType::Spot;
+    light.position = vec3Of(path, entry.value("position", json()), "position");
+    light.intensity = vec3Of(path, entry.value("intensity", json()), "intensity");
+  } else if (type == "directional") {
+    light.type = LightType::Directional;
+    light.irradiance = vec3Of(path, entry.value("irradiance", json()), "irradiance");
+  } else {
+    throw LoadError(path, "unknown light type '" + type + "'");
+  }
+  if (light.type != LightType::Point) {
+    const glm::vec3 d = vec3Of(path, entry.value("direction", json()), "direction");
+    if (!(glm::length(d) > 0.0f)) throw LoadError(path, "light direction has zero length");
+    light.direction = glm::normalize(d);
+  }
+  light.innerConeAngle = numberOf(path, entry, "inner_cone", light.innerConeAngle);
+  light.outerConeAngle = numberOf(path, entry, "outer_cone", light.outerConeAngle);
+  return light;
+}
+
+}  // namespace
+
+Scene loadSceneJson(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw LoadError(path, "cannot open");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::exception& e) {
+    throw LoadError(path, std::string("invalid JSON: ") + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("model") || !doc["model"].is_string())
+    throw LoadError(path, "a scene wrapper needs \"model\": the path of an .obj, .gltf or .glb");
+  std::filesystem::path model = doc["model"].get<std::string>();
+  if (model.is_relative()) model = path.parent_path() / model;
+  if (model.extension() == ".json") throw LoadError(path, "a wrapper cannot wrap a wrapper");
+  const float scale = numberOf(path, doc, "scale", 1.0f);
+  if (!(scale > 0.0f)) throw LoadError(path, "'scale' must be positive");
+
+  Scene scene = loadScene(model);  // its own errors name the model file
+  // Uniform scale of every instance (lengths only: radiance and intensity do not change).
+  const glm::mat4 toMetres = glm::scale(glm::mat4(1.0f), glm::vec3(scale));
+  for (Instance& instance : scene.instances) instance.transform = toMetres * instance.transform;
+  for (Light& light : scene.lights) light.position *= scale;
+  for (Camera& camera : scene.cameras) {
+    camera.cameraToWorld[3] = glm::vec4(glm::vec3(camera.cameraToWorld[3]) * scale, 1.0f);
+    camera.znear *= scale;
+    camera.zfar *= scale;
+  }
+
+  if (doc.contains("lights")) {
+    if (!doc["lights"].is_array()) throw LoadError(path, "'lights' must be an array");
+    for (const json& entry : doc["lights"]) scene.lights.push_back(lightOf(path, entry));
+  }
+  if (doc.contains("camera")) {
+    const json& c = doc["camera"];
+    if (!c.is_object()) throw LoadError(path, "'camera' must be an object");
+    Camera camera;
+    camera.name = c.value("name", std::string("wrapper"));
+    const glm::vec3 eye = vec3Of(path, c.value("position", json()), "camera position");
+    const glm::vec3 target = vec3Of(path, c.value("target", json()), "camera target");
+    const glm::vec3 forward = target - eye;
+    if (!(glm::length(forward) > 0.0f) ||
+        glm::length(glm::cross(glm::normalize(forward), glm::vec3(0, 1, 0))) < 1e-4f)
+      throw LoadError(path,
+                      "camera target must differ from its position and not be straight up "
+                      "or down");
+    camera.cameraToWorld = glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
+    camera.yfov = numberOf(path, c, "yfov", camera.yfov);
+    camera.znear = numberOf(path, c, "znear", camera.znear);
+    camera.zfar = numberOf(path, c, "zfar", camera.zfar);
+    if (!(camera.yfov > 0.0f && camera.yfov < 3.1f) || !(camera.znear > 0.0f) ||
+        !(camera.zfar > camera.znear))
+      throw LoadError(path, "camera needs 0 < yfov < π and 0 < znear < zfar");
+    scene.cameras.insert(scene.cameras.begin(), camera);
+  }
+  return scene;
+}
+
+}  // namespace bounce

@@ -1,0 +1,82 @@
+// The .json scene wrapper: a model referenced by path, scaled into metres, with lights and a
+// camera added; malformed wrappers are LoadErrors naming the wrapper.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "scene/framing.h"
+#include "scene/load.h"
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path writeWrapper(const std::string& name, const std::string& text) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("bounce_scene_json_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::string kCornell = BOUNCE_SOURCE_DIR "/content/cornell_box/cornell_box.gltf";
+
+TEST(SceneJson, ScalesTheModelAndAddsLightsAndCamera) {
+  const Scene original = loadScene(kCornell);
+  const fs::path path = writeWrapper("half.json", R"({
+    "model": ")" + kCornell + R"(", "scale": 0.5,
+    "lights": [{"type": "spot", "position": [0.1, 0.2, 0.3], "direction": [0, -2, 0],
+                "intensity": [1, 2, 3], "inner_cone": 0.2, "outer_cone": 0.4}],
+    "camera": {"name": "c", "position": [0, 0.1, 1], "target": [0, 0.1, 0], "yfov": 0.5}})");
+  const Scene scene = loadScene(path);
+  const Bounds a = sceneBounds(original), b = sceneBounds(scene);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(b.lo[axis], 0.5f * a.lo[axis], 1e-6f);
+    EXPECT_NEAR(b.hi[axis], 0.5f * a.hi[axis], 1e-6f);
+  }
+  // Radiometry is untouched by the scale: emission is radiance.
+  ASSERT_EQ(scene.materials.size(), original.materials.size());
+  for (std::size_t m = 0; m < scene.materials.size(); ++m)
+    EXPECT_EQ(scene.materials[m].emission, original.materials[m].emission);
+  ASSERT_EQ(scene.lights.size(), original.lights.size() + 1);
+  const Light& spot = scene.lights.back();
+  EXPECT_EQ(spot.type, LightType::Spot);
+  EXPECT_EQ(spot.position, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(spot.direction, glm::vec3(0, -1, 0));
+  EXPECT_EQ(spot.intensity, glm::vec3(1, 2, 3));
+  EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.4f);
+  ASSERT_EQ(scene.cameras.size(), original.cameras.size() + 1);
+  EXPECT_EQ(scene.cameras.front().name, "c");
+  EXPECT_NEAR(scene.cameras.front().position().z, 1.0f, 1e-6f);
+  EXPECT_NEAR(scene.cameras.front().forward().z, -1.0f, 1e-6f);
+  // The model's own camera moved with the model.
+  EXPECT_NEAR(scene.cameras[1].position().z, 0.5f * original.cameras[0].position().z, 1e-5f);
+}
+
+TEST(SceneJson, MalformedWrappersNameTheWrapper) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"{}", "needs \"model\""},
+      {R"({"model": "missing.obj"})", "file not found"},
+      {R"({"model": ")" + kCornell + R"(", "scale": -1})", "'scale' must be positive"},
+      {R"({"model": ")" + kCornell + R"(", "lights": [{"type": "area"}]})", "unknown light type"},
+      {"{not json", "invalid JSON"},
+  };
+  int i = 0;
+  for (const auto& [text, reason] : cases) {
+    const fs::path path = writeWrapper("bad" + std::to_string(i++) + ".json", text);
+    try {
+      loadScene(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bounce
