@@ -38,6 +38,7 @@ struct Options {
   float exposure = 0.0f;
   int frames = 0;  // 0 = until closed
   std::string screenshot;
+  std::string mode = "direct";
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -52,7 +53,8 @@ class Viewer {
       : options_(options),
         scene_(std::move(scene)),
         window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory()),
+        renderer_(scene_, bounce::gl::shaderDirectory(),
+                  bounce::RendererSettings{*bounce::parseRenderMode(options.mode), {}}),
         tonemap_(bounce::gl::shaderDirectory()),
         exposure_(options.exposure) {
     std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
@@ -210,6 +212,8 @@ int main(int argc, char** argv) {
         const auto ext = std::filesystem::path(path).extension();
         return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
       });
+  app.add_option("--mode", options.mode, "what to draw: direct (direct light only)")
+      ->check(CLI::IsMember(bounce::renderModeNames()));
   CLI11_PARSE(app, argc, argv);
   try {
     Viewer viewer(options, bounce::loadScene(options.scene));

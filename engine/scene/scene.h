@@ -33,7 +33,8 @@ struct Material {
   glm::vec3 emission{0.0f};               // emitted radiance, W/(sr·m²)
   bool doubleSided = false;               // emission and shading on both faces
 
-  bool isEmissive() const { return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f; }
+  // True when emittedRadiance(*this) (scene/surface_rules.h) is positive in some channel.
+  bool isEmissive() const;
 };
 
 // An indexed triangle mesh in its own object space. Counter-clockwise triangles face the

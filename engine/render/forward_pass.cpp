@@ -1,0 +1,36 @@
+#include "render/forward_pass.h"
+
+#include "gl/draw_state.h"
+#include "render/texture_units.h"
+
+namespace bounce {
+
+ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
+    : program_(shaderDir / "forward.vert", shaderDir / "forward.frag") {}
+
+void ForwardPass::draw(const GpuScene& scene, const PunctualLights& lights,
+                       const ShadowPass& shadows, const glm::mat4& viewProjection,
+                       gl::RenderTarget& target) {
+  target.bind();
+  gl::clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  gl::setDepthTest(true);
+
+  program_.set("uViewProjection", viewProjection);
+  lights.set(program_);
+  shadows.bind(program_);
+  program_.set("uEmitterCount", scene.emitterCount());
+  program_.set("uEmitters", TextureUnit::kEmitters);
+  program_.set("uAlbedoTexture", TextureUnit::kAlbedo);
+  scene.bindEmitters(TextureUnit::kEmitters);
+
+  for (const GpuInstance& instance : scene.instances()) {
+    const GpuMaterial& material = scene.bindMaterial(instance, program_, TextureUnit::kAlbedo);
+    // glTF: a single-sided surface is invisible from behind (and emits only forwards).
+    gl::setBackFaceCulling(!material.doubleSided, instance.mirrored);
+    scene.draw(instance, program_);
+  }
+  gl::setBackFaceCulling(false);
+  gl::checkErrors("forward pass");
+}
+
+}  // namespace bounce
