@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/render_mode.h"
@@ -34,8 +35,10 @@ class ForwardRenderer {
   // Uploads the scene (per-mesh buffers, per-instance matrices, textures, the emitter table,
   // the punctual lights, shadow maps) and builds the shaders found in `shaderDir`. `scene` must
   // outlive the renderer.
+  // With `bake` (read by readBake for this scene), as setBake; a mode that needs a bake
+  // (renderModeNeedsBake) without one throws std::invalid_argument.
   ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
-                  const RendererSettings& settings = {});
+                  const RendererSettings& settings = {}, const Bake* bake = nullptr);
   ~ForwardRenderer();
   ForwardRenderer(const ForwardRenderer&) = delete;
   ForwardRenderer& operator=(const ForwardRenderer&) = delete;
@@ -50,6 +53,14 @@ class ForwardRenderer {
   // Per-corner lightmap UVs of instance `index` (vertex attribute 3, gl/vertex_attributes.h);
   // empty removes them.
   void setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv);
+
+  // Adds the baked light of `bake` (read by readBake for this scene): uploads the lightmap and
+  // gives its static instances their atlas UVs. Modes other than Direct need one.
+  void setBake(const Bake& bake);
+  bool hasBake() const;
+  // Switches what the lit pass draws; throws std::invalid_argument for a mode that needs a bake
+  // when none is set.
+  void setMode(RenderMode mode);
 
   const RendererSettings& settings() const { return settings_; }
   // Set-ups that make no sense or that the renderer does not support, one sentence each.

@@ -35,16 +35,18 @@ inline PixelSurfaces findPixelSurfaces(const WorldGeometry& geometry, const RayK
   s.triangle.assign(static_cast<std::size_t>(width) * height, kNoHit);
   s.interior.assign(s.triangle.size(), 0);
   constexpr float kInset = 0.02f;
-  const float offsets[5][2] = {
-      {0.5f, 0.5f}, {kInset, kInset}, {1 - kInset, kInset}, {kInset, 1 - kInset},
-      {1 - kInset, 1 - kInset}};
+  const float offsets[5][2] = {{0.5f, 0.5f},
+                               {kInset, kInset},
+                               {1 - kInset, kInset},
+                               {kInset, 1 - kInset},
+                               {1 - kInset, 1 - kInset}};
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;
       Hit hits[5];
       for (int k = 0; k < 5; ++k)
-        hits[k] = kernel.intersect(cameraRay(camera, width, height, x + offsets[k][0],
-                                             y + offsets[k][1]));
+        hits[k] = kernel.intersect(
+            cameraRay(camera, width, height, x + offsets[k][0], y + offsets[k][1]));
       s.triangle[i] = hits[0].triangle;
       bool same = hits[0].valid();
       for (int k = 1; k < 5 && same; ++k)
@@ -74,8 +76,7 @@ inline Mask staticSurfaceMask(const Scene& scene, const WorldGeometry& geometry,
 // The lightmap chart of every pixel's centre hit (kNoChart: no hit or no atlas region).
 // flatten() lays the instances' triangles out one after another, each in its mesh's order.
 inline std::vector<uint32_t> pixelCharts(const Scene& scene, const WorldGeometry& geometry,
-                                         const LightmapLayout& layout,
-                                         const LightmapCharts& charts,
+                                         const LightmapLayout& layout, const LightmapCharts& charts,
                                          const PixelSurfaces& surfaces) {
   std::vector<uint32_t> firstTriangle(scene.instances.size(), 0);
   for (std::size_t t = geometry.triangleCount(); t-- > 0;)
@@ -89,8 +90,9 @@ inline std::vector<uint32_t> pixelCharts(const Scene& scene, const WorldGeometry
     if (t == kNoHit) continue;
     const uint32_t instance = geometry.triangleInstance[t];
     if (region[instance] < 0) continue;
-    chart[i] = charts.triangleChart[static_cast<std::size_t>(region[instance])]
-                                   [t - firstTriangle[instance]];
+    chart[i] =
+        charts
+            .triangleChart[static_cast<std::size_t>(region[instance])][t - firstTriangle[instance]];
   }
   return chart;
 }
