@@ -99,6 +99,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     for (std::size_t t = 0; t < s.world.triangleCount(); ++t) staticArea += s.world.area(t);
     statics.push_back(std::move(s));
   }
+  atlas.staticArea = staticArea;
   if (statics.empty() || !(staticArea > 0.0)) return atlas;
 
   float texelSize = settings.texelSize > 0.0f
@@ -153,6 +154,13 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     layout.height = packing->height;
     layout.texelSize = texelSize;
     layout.chartCount = static_cast<int>(charts.size());
+    for (const Chart& chart : charts) {
+      Atlas::ChartKinds& kinds = atlas.chartKinds;
+      ++(chart.source == ChartSource::Planar      ? kinds.planar
+         : chart.source == ChartSource::Conformal ? kinds.conformal
+         : chart.source == ChartSource::MeshUv1   ? kinds.meshUv1
+                                                  : kinds.degenerate);
+    }
     const glm::vec2 size(static_cast<float>(layout.width), static_cast<float>(layout.height));
     layout.instances.resize(statics.size());
     atlas.triangleChart.resize(statics.size());

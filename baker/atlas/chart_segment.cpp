@@ -45,7 +45,9 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     return v;
   };
   std::vector<uint32_t> faceTriangle;  // OpenMesh face index → mesh triangle
-  std::vector<int> triangleFace(triangles, -1);
+  // OpenMesh reports each refused face on its error stream; refusals are handled below.
+  const bool omerrWasEnabled = omerr().is_enabled();
+  omerr().disable();
   for (std::size_t t = 0; t < triangles; ++t) {
     std::array<HalfEdgeMesh::VertexHandle, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = vertexAt(mesh.corner(t, k));
@@ -62,9 +64,9 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
       }
       face = halfEdges.add_face(own[0], own[1], own[2]);
     }
-    triangleFace[t] = face.idx();
     faceTriangle.push_back(static_cast<uint32_t>(t));
   }
+  if (omerrWasEnabled) omerr().enable();
 
   std::vector<glm::dvec3> normal(faceTriangle.size());
   std::vector<double> area(faceTriangle.size());

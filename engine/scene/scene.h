@@ -77,6 +77,10 @@ struct Light {
   glm::vec3 irradiance{0.0f};     // W/m² at normal incidence (directional)
   float innerConeAngle = 0.0f;    // spot: full intensity inside this half-angle, radians
   float outerConeAngle = 0.7853982f;  // spot: zero outside this half-angle, radians
+  // Baked only (glTF extras.bounce.bake = "all"): its direct light is baked into the lightmap
+  // with its indirect light, and the renderer does not draw it live. Otherwise (the default) the
+  // lightmap holds only its indirect light.
+  bool bakeDirect = false;
   // glTF's `range` is ignored: bounce's lights follow the inverse-square law without cut-off.
 };
 
