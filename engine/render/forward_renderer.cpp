@@ -55,6 +55,7 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 
 void ForwardRenderer::setBake(const Bake& bake) {
   passes_->lightmap.attach(bake, passes_->scene);
+  passes_->lights.setBakedDirectInLightmap(true);
 }
 
 bool ForwardRenderer::hasBake() const {

@@ -163,6 +163,22 @@ TEST(Lightmap, TopRowOfTheLightmapIsAtlasVZero) {
   EXPECT_GT(lightmap.at(2, 0).g, 2.0f * lightmap.at(2, kSize - 1).g);
 }
 
+// A baked-only light (Light::bakeDirect) is in the lightmap: with a bake the renderer draws it
+// nowhere live (full = indirect), without one it is drawn live like any light.
+TEST(Lightmap, BakedOnlyLightIsNotDrawnLiveOnceABakeIsAttached) {
+  PlaneScene p = planeScene();
+  p.scene.lights[0].bakeDirect = true;
+  const Bake bake = planeBake(p.scene, Image(8, 8, glm::vec3(1.0f)));
+  const Image full = renderMode(p.scene, p.camera, bake, RenderMode::Full);
+  const Image indirect = renderMode(p.scene, p.camera, bake, RenderMode::Indirect);
+  for (std::size_t i = 0; i < full.pixels.size(); ++i)
+    EXPECT_EQ(full.pixels[i], indirect.pixels[i]) << i;
+  testContext();
+  ForwardRenderer unbaked(p.scene, gl::shaderDirectory());
+  const Image live = unbaked.renderImage(p.camera, kSize, kSize);
+  EXPECT_GT(live.at(2, 2).g, 0.1f);
+}
+
 TEST(Lightmap, ModesThatNeedABakeRefuseToStartWithoutOne) {
   const PlaneScene p = planeScene();
   testContext();
