@@ -302,4 +302,30 @@ TEST_F(ToolsTest, ModesOfBakedLightNeedABake) {
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
+// The viewer with a bake under a virtual X server: indirect mode shows ρ/π·E, and the chart
+// view draws (non-black) without errors.
+TEST_F(ToolsTest, ViewerWithBakeUnderXvfb) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile =
+      fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf";
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  for (const char* mode : {"indirect", "charts"}) {
+    const fs::path shot = dir_ / (std::string(mode) + ".exr");
+    const ToolRun r = run("xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                          " --bake " + quote(dir_ / "plane.bake") + " --mode " + mode +
+                          " --width 32 --height 32 --frames 2 --screenshot " + quote(shot));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const bounce::Image image = bounce::readExr(shot);
+    const glm::vec3 centre = image.at(16, 16);
+    if (std::string(mode) == "indirect") {
+      const glm::vec3 expected = 0.5f / std::numbers::pi_v<float> * glm::vec3(2, 3, 5);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], expected[c], 1e-3f * expected[c]);
+    } else {
+      EXPECT_GT(centre.r + centre.g + centre.b, 0.1f) << r.output;
+    }
+  }
+}
+
 }  // namespace
