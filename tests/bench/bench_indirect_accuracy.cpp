@@ -1,6 +1,6 @@
-// The full-size measurement of the accuracy goal (docs/lightmaps.md): bake a scene
-// in-process with bounce-bake's settings, draw the renderer's indirect-only frame, and compare
-// it with bounce-trace --indirect-only over the static, non-emissive, edge-free pixels
+// The full-size measurement of the accuracy goal (docs/renderer.md, "Baked light"): bake a
+// scene in-process with bounce-bake's settings, draw the renderer's indirect-only frame, and
+// compare it with bounce-trace --indirect-only over the static, non-emissive, edge-free pixels
 // (tests/render/indirect_accuracy.h). The reference is cached as EXR (radiance + standard
 // error) so a sweep of bake settings traces it once. Prints one CSV line per run:
 //   texel_budget,texel_size_m,atlas_w,atlas_h,spp_cap,target_error,denoise,bake_s,

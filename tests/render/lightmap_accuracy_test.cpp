@@ -19,10 +19,10 @@ namespace {
 
 // The Cornell box with a small bake (4096 texels of 2.2 cm, 10% target error per texel, at most
 // 1024 samples; bounce-bake's defaults otherwise, but not denoised: at this coarse texel size
-// the denoiser biases the frame by +4%, see docs/lightmaps.md) and a 32×32 frame whose
-// reference has 4096 samples per pixel (mean relative standard error ~3%). Goal: mean
-// |ΔY|/Y ≤ 5% over the static, non-emissive, edge-free pixels; the reference's own noise can
-// add up to referenceNoise (≈ 2.4%) to the measured mean, so that is the allowance.
+// the denoiser biases the frame by +4%, see docs/renderer.md, "Baked light") and a 32×32 frame
+// whose reference has 4096 samples per pixel (mean relative standard error ~3%). Goal: mean |ΔY|/Y
+// ≤ 5% over the static, non-emissive, edge-free pixels; the reference's own noise can add up to
+// referenceNoise (≈ 2.4%) to the measured mean, so that is the allowance.
 TEST(LightmapAccuracy, CornellIndirectFrameMatchesThePathTracer) {
   const Scene scene =
       loadScene(std::filesystem::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf");
