@@ -110,12 +110,33 @@ glm::vec3 lookup(const Image& image, const Footprint& f) {
   return v;
 }
 
-// Moves the lookup at f by `delta` with the least change of its texels (Σ w² normalised).
-void nudge(Image& image, const Footprint& f, glm::vec3 delta) {
-  float w2 = 0.0f;
-  for (int k = 0; k < 4; ++k) w2 += f.weight[k] * f.weight[k];
-  if (!(w2 > 0.0f)) return;
-  for (int k = 0; k < 4; ++k) image.pixels[f.texel[k]] += delta * (f.weight[k] / w2);
+// Kaczmarz step for one seam point: with the residual r = lookup(a) − lookup(b) = Σ c_k·x_k
+// (c = +weight under a, −weight under b, merged where a texel is under both), the orthogonal
+// projection onto r = 0: x_k −= r·c_k / Σ c². Cyclic sweeps of it converge to the nearest
+// texel values (least change) at which every pair agrees.
+void project(Image& image, const Footprint& a, const Footprint& b) {
+  std::array<std::size_t, 8> texel;
+  std::array<float, 8> coef;
+  int n = 0;
+  auto add = [&](std::size_t t, float c) {
+    for (int k = 0; k < n; ++k)
+      if (texel[k] == t) {
+        coef[k] += c;
+        return;
+      }
+    texel[n] = t;
+    coef[n++] = c;
+  };
+  for (int k = 0; k < 4; ++k) add(a.texel[k], a.weight[k]);
+  for (int k = 0; k < 4; ++k) add(b.texel[k], -b.weight[k]);
+  float norm2 = 0.0f;
+  glm::vec3 residual(0.0f);
+  for (int k = 0; k < n; ++k) {
+    norm2 += coef[k] * coef[k];
+    residual += coef[k] * image.pixels[texel[k]];
+  }
+  if (!(norm2 > 0.0f)) return;
+  for (int k = 0; k < n; ++k) image.pixels[texel[k]] -= residual * (coef[k] / norm2);
 }
 
 std::vector<std::pair<Footprint, Footprint>> seamPoints(const Image& image,
@@ -151,11 +172,7 @@ struct EdgeSide {
 float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations) {
   const auto points = seamPoints(image, seams);
   for (int it = 0; it < iterations; ++it) {
-    for (const auto& [a, b] : points) {
-      const glm::vec3 d = lookup(image, b) - lookup(image, a);
-      nudge(image, a, 0.5f * d);
-      nudge(image, b, -0.5f * d);
-    }
+    for (const auto& [a, b] : points) project(image, a, b);
   }
   // Irradiance is non-negative: a nudge may not push a texel below zero.
   for (glm::vec3& p : image.pixels) p = glm::max(p, glm::vec3(0.0f));
@@ -216,12 +233,13 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
 }
 
 void denoise(Image& image, const DenoiseGuide& guide) {
+  static constexpr float kStop = 1.5f;
   static constexpr std::array<float, 5> kB3 = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
   const int w = image.width, h = image.height;
   Image next = image;
   for (const int step : {1, 2, 4}) {
     // Position tolerance grows with the step so that the kernel's reach is not cut off.
-    const float sigmaPosition = 1.5f * static_cast<float>(step) * guide.texelSize;
+    const float sigmaPosition = static_cast<float>(step) * guide.texelSize;
     const float invTwoSigma2 =
         sigmaPosition > 0.0f ? 1.0f / (2 * sigmaPosition * sigmaPosition) : 0;
     for (int y = 0; y < h; ++y) {
@@ -243,10 +261,11 @@ void denoise(Image& image, const DenoiseGuide& guide) {
             const glm::vec3 dp = guide.position[i] - guide.position[j];
             float weight = kB3[dx + 2] * kB3[dy + 2] * std::pow(cosine, 32.0f) *
                            std::exp(-glm::dot(dp, dp) * invTwoSigma2);
-            // Luminance edge-stopping at 4 combined standard errors.
+            // Luminance edge-stopping at kStop combined standard errors: a difference the noise
+            // cannot explain is a real gradient (a shadow, a corner) and is kept.
             const float lj = luminance(image.pixels[j]);
             const float sigmaJ = guide.relativeError[j] * lj;
-            const float sigma2 = 16.0f * (sigmaI * sigmaI + sigmaJ * sigmaJ);
+            const float sigma2 = kStop * kStop * (sigmaI * sigmaI + sigmaJ * sigmaJ);
             const float dl = li - lj;
             if (sigma2 > 0.0f)
               weight *= std::exp(-dl * dl / (2.0f * sigma2));
