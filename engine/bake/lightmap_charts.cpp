@@ -103,9 +103,10 @@ glm::vec3 chartColour(uint32_t chart) {
   }
 }
 
-Image chartImage(const LightmapLayout& layout, const LightmapCharts& charts) {
-  Image image(std::max(layout.width, 0), std::max(layout.height, 0));
-  const glm::vec2 size(static_cast<float>(layout.width), static_cast<float>(layout.height));
+std::vector<int32_t> chartIdImage(const LightmapLayout& layout, const LightmapCharts& charts) {
+  const int width = std::max(layout.width, 0), height = std::max(layout.height, 0);
+  std::vector<int32_t> ids(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), -1);
+  const glm::vec2 size(static_cast<float>(width), static_cast<float>(height));
   for (std::size_t r = 0; r < layout.instances.size(); ++r) {
     const std::vector<glm::vec2>& uv = layout.instances[r].cornerUv;
     for (std::size_t t = 0; t < uv.size() / 3; ++t) {
@@ -114,14 +115,24 @@ Image chartImage(const LightmapLayout& layout, const LightmapCharts& charts) {
       const glm::vec2 hi = glm::max(p[0], glm::max(p[1], p[2]));
       const int x0 = std::max(static_cast<int>(std::floor(lo.x)), 0);
       const int y0 = std::max(static_cast<int>(std::floor(lo.y)), 0);
-      const int x1 = std::min(static_cast<int>(std::floor(hi.x)), layout.width - 1);
-      const int y1 = std::min(static_cast<int>(std::floor(hi.y)), layout.height - 1);
-      const glm::vec3 colour = chartColour(charts.triangleChart[r][t]);
+      const int x1 = std::min(static_cast<int>(std::floor(hi.x)), width - 1);
+      const int y1 = std::min(static_cast<int>(std::floor(hi.y)), height - 1);
+      const auto chart = static_cast<int32_t>(charts.triangleChart[r][t]);
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x)
-          if (overlapsTexel(p, x, y)) image.at(x, y) = colour;
+          if (overlapsTexel(p, x, y))
+            ids[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                static_cast<std::size_t>(x)] = chart;
     }
   }
+  return ids;
+}
+
+Image chartImage(const LightmapLayout& layout, const LightmapCharts& charts) {
+  Image image(std::max(layout.width, 0), std::max(layout.height, 0));
+  const std::vector<int32_t> ids = chartIdImage(layout, charts);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] >= 0) image.pixels[i] = chartColour(static_cast<uint32_t>(ids[i]));
   return image;
 }
 

@@ -27,6 +27,10 @@ LightmapCharts findCharts(const LightmapLayout& layout);
 // A distinct, fully saturated-ish colour for chart `chart` (deterministic, never black).
 glm::vec3 chartColour(uint32_t chart);
 
+// layout.width × layout.height, rows top first: the chart of every texel a triangle overlaps
+// (conservatively, as below), −1 where none does.
+std::vector<int32_t> chartIdImage(const LightmapLayout& layout, const LightmapCharts& charts);
+
 // layout.width × layout.height, rows top first: every texel a triangle overlaps (conservatively:
 // any overlap of the texel's square with the triangle's UV triangle) holds its chart's colour,
 // uncovered texels are black.
