@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The two entry points of the README, idempotent on a fresh Debian 12 machine (as root):
-#   ./bounce.sh demo   install what is missing, build (Release), render the Cornell box
+#   ./bounce.sh demo   install what is missing, build (Release; bakes the Cornell box's lightmap),
+#                      render the Cornell box with its baked global illumination
 #   ./bounce.sh test   install what is missing, build (Release), run the whole CTest suite
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -38,13 +39,20 @@ build() {
 case "${1:-}" in
   demo)
     install_missing
-    build
+    build  # also bakes the Cornell box's lightmap (content/CMakeLists.txt: bounce_bake)
     mkdir -p out
-    build/release/bin/bounce-render content/cornell_box/cornell_box.gltf \
+    scene=content/cornell_box/cornell_box.gltf
+    bake=build/release/content/cornell_box/cornell_box.bake
+    build/release/bin/bounce-render "$scene" --bake "$bake" \
       --out out/cornell_box.png --out out/cornell_box.exr
-    echo "bounce: wrote out/cornell_box.png and out/cornell_box.exr"
+    for mode in direct indirect; do
+      build/release/bin/bounce-render "$scene" --bake "$bake" --mode "$mode" \
+        --out "out/cornell_box_$mode.png"
+    done
+    echo "bounce: wrote out/cornell_box.png and .exr (direct + baked indirect light)," \
+      "out/cornell_box_direct.png and out/cornell_box_indirect.png"
     if [ -n "${DISPLAY:-}" ] && [ -z "${CI:-}" ]; then
-      build/release/bin/bounce-view content/cornell_box/cornell_box.gltf
+      build/release/bin/bounce-view "$scene" --bake "$bake"
     fi
     ;;
   test)

@@ -1,13 +1,15 @@
 #version 330 core
-// One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface under direct light,
-//   L_o = ρ/π · (E_punctual + E_area) + L_e,
-// into a linear float target. ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
+// One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface,
+//   L_o = ρ/π · (E_punctual + E_area + E_baked) + L_e,
+// into a linear float target; E_baked is the lightmap's irradiance on static surfaces, and the
+// mode picks the terms (lightmap.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
 // path tracer does; L_e the surface's own emission (front face; both when double-sided).
 // Punctual lights are shadowed by their maps (shadows.glsl); area lights by theirs
 // (shadow_area.glsl: percentage-closer soft shadows).
 #include "lights.glsl"
 #include "shadows.glsl"
 #include "area_light.glsl"
+#include "lightmap.glsl"
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
@@ -31,7 +33,8 @@ void main() {
   if (dot(ng, n) < 0.0) ng = -ng;
   vec3 albedo = uAlbedo;
   if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
-  vec3 irradiance =
-      punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n, ng);
-  fragRadiance = vec4(albedo / PI * irradiance + uEmission, 1.0);
+  vec3 direct = vec3(0.0);
+  if (modeUsesDirectLight())
+    direct = punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n, ng);
+  fragRadiance = vec4(shadeForMode(albedo, direct, uEmission, vLightmapUv), 1.0);
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
@@ -27,7 +28,8 @@ struct Options {
   std::string context;
   float exposure = 0.0f;
   int frames = 1;
-  std::string mode = "direct";
+  std::string mode;  // default: full with a bake, direct without
+  std::string bake;
   bool noShadows = false;
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
@@ -36,7 +38,9 @@ struct Options {
 
 bounce::RendererSettings rendererSettings(const Options& options) {
   bounce::RendererSettings settings;
-  settings.mode = *bounce::parseRenderMode(options.mode);  // CLI11 checked the name
+  settings.mode = options.mode.empty() ? (options.bake.empty() ? bounce::RenderMode::Direct
+                                                               : bounce::RenderMode::Full)
+                                       : *bounce::parseRenderMode(options.mode);  // CLI11 checked
   settings.shadows.enabled = !options.noShadows;
   settings.shadows.resolution = options.shadowResolution;
   settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
@@ -72,7 +76,23 @@ int run(const Options& options) {
     return std::chrono::duration<double, std::milli>(b - a).count();
   };
   const auto start = Clock::now();
-  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), rendererSettings(options));
+  const bounce::RendererSettings settings = rendererSettings(options);
+  if (bounce::renderModeNeedsBake(settings.mode) && options.bake.empty())
+    throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
+                             " draws baked light: give --bake DIR");
+  std::optional<bounce::Bake> bake;
+  if (!options.bake.empty()) {
+    bake = bounce::readBake(options.bake, scene);
+    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
+                 options.bake.c_str(), bake->layout.width, bake->layout.height,
+                 bake->layout.instances.size());
+  }
+  if (settings.mode == bounce::RenderMode::Lightmap)
+    std::fprintf(stderr,
+                 "bounce-render: mode lightmap: pixels are E/pi W/(sr·m²), the radiance of a "
+                 "white (rho = 1) Lambertian surface under the baked irradiance E (W/m²)\n");
+  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
+                                   bake ? &*bake : nullptr);
   for (const std::string& warning : renderer.warnings())
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
   const auto uploaded = Clock::now();
@@ -82,7 +102,8 @@ int run(const Options& options) {
                "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
                "%.1f ms (render + readback, includes the driver's shader JIT), mode %s\n",
                options.width, options.height, camera.name.c_str(), scene.triangleCount(),
-               ms(start, uploaded), ms(uploaded, rendered), options.mode.c_str());
+               ms(start, uploaded), ms(uploaded, rendered),
+               std::string(bounce::renderModeName(settings.mode)).c_str());
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time.
     bounce::gl::RenderTarget target(options.width, options.height);
@@ -130,7 +151,13 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames,
                  "render the frame this many times and report the mean time (benchmark)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--mode", options.mode, "what to draw: direct (direct light only)")
+  app.add_option("--bake", options.bake,
+                 "bake folder (bounce-bake's output) for this scene: adds its baked light");
+  app.add_option("--mode", options.mode,
+                 "what to draw: full (direct + baked indirect; the default with --bake), direct "
+                 "(real-time direct light only; the default without), indirect (only the baked "
+                 "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
+                 "(lightmap charts and texels)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_flag("--no-shadows", options.noShadows,
                "draw every light unshadowed (punctual and area lights)");

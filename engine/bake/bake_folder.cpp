@@ -323,6 +323,7 @@ std::string sceneContentHash(const Scene& scene) {
     h.vec(light.irradiance);
     h.f32(light.innerConeAngle);
     h.f32(light.outerConeAngle);
+    h.u64(light.bakeDirect ? 1 : 0);
   }
   return h.hex();
 }
@@ -394,11 +395,12 @@ void writeBake(const fs::path& dir, const Bake& bake) {
   fs::create_directories(tmp, ec);
   if (ec) fail("cannot create " + tmp.string() + ": " + ec.message());
   try {
+    // bake.json last: its time stamp is the folder's (the build step's output, BounceBake.cmake).
+    writeFileAtomically(tmp / kLayoutName, encodeLayout(bake.layout));
+    writeExr(tmp / kLightmapName, bake.irradiance);
     const std::string& json = bake.manifestJson;
     writeFileAtomically(tmp / kManifestName,
                         {reinterpret_cast<const unsigned char*>(json.data()), json.size()});
-    writeFileAtomically(tmp / kLayoutName, encodeLayout(bake.layout));
-    writeExr(tmp / kLightmapName, bake.irradiance);
     replaceFolder(tmp, dir);
   } catch (...) {
     fs::remove_all(tmp, ec);

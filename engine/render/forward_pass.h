@@ -8,6 +8,7 @@
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
+#include "render/lightmap_pass.h"
 #include "render/punctual_lights.h"
 #include "render/shadow_pass.h"
 
@@ -19,7 +20,8 @@ class ForwardPass {
 
   // Clears `target` to black and draws the scene seen through `viewProjection`.
   void draw(const GpuScene& scene, const PunctualLights& lights, const ShadowPass& shadows,
-            const glm::mat4& viewProjection, gl::RenderTarget& target);
+            const LightmapPass& lightmap, RenderMode mode, const glm::mat4& viewProjection,
+            gl::RenderTarget& target);
 
  private:
   gl::Program program_;

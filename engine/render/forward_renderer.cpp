@@ -1,5 +1,8 @@
 #include "render/forward_renderer.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
@@ -13,6 +16,7 @@ struct ForwardRenderer::Passes {
   GpuScene scene;
   PunctualLights lights;
   ShadowPass shadows;
+  LightmapPass lightmap;
   ForwardPass forward;
 
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
@@ -24,9 +28,13 @@ struct ForwardRenderer::Passes {
 };
 
 ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
-                                 const RendererSettings& settings)
+                                 const RendererSettings& settings, const Bake* bake)
     : settings_(settings) {
+  if (renderModeNeedsBake(settings.mode) && !bake)
+    throw std::invalid_argument("mode '" + std::string(renderModeName(settings.mode)) +
+                                "' needs a bake (--bake DIR)");
   passes_ = std::make_unique<Passes>(scene, shaderDir, settings, warnings_);
+  if (bake) setBake(*bake);
   if (scene.lights.empty() && passes_->scene.emitterCount() == 0)
     warnings_.push_back("the scene has no lights and no emissive surfaces: the image is black");
 }
@@ -49,13 +57,30 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
   passes_->scene.setLightmapUv(index, cornerUv);
 }
 
+void ForwardRenderer::setBake(const Bake& bake) {
+  passes_->lightmap.attach(bake, passes_->scene);
+  passes_->lights.setBakedDirectInLightmap(true);
+}
+
+bool ForwardRenderer::hasBake() const {
+  return passes_->lightmap.attached();
+}
+
+void ForwardRenderer::setMode(RenderMode mode) {
+  if (renderModeNeedsBake(mode) && !hasBake())
+    throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
+                                "' needs a bake (--bake DIR)");
+  settings_.mode = mode;
+}
+
 void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
                    cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
-  p.forward.draw(p.scene, p.lights, p.shadows, cameraViewProjection, target);
+  p.forward.draw(p.scene, p.lights, p.shadows, p.lightmap, settings_.mode, cameraViewProjection,
+                 target);
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height) {

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/render_mode.h"
@@ -35,8 +36,10 @@ class ForwardRenderer {
   // Uploads the scene (per-mesh buffers, per-instance matrices, textures, the emitter table,
   // the punctual lights, shadow maps) and builds the shaders found in `shaderDir`. `scene` must
   // outlive the renderer.
+  // With `bake` (read by readBake for this scene), as setBake; a mode that needs a bake
+  // (renderModeNeedsBake) without one throws std::invalid_argument.
   ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
-                  const RendererSettings& settings = {});
+                  const RendererSettings& settings = {}, const Bake* bake = nullptr);
   ~ForwardRenderer();
   ForwardRenderer(const ForwardRenderer&) = delete;
   ForwardRenderer& operator=(const ForwardRenderer&) = delete;
@@ -55,6 +58,14 @@ class ForwardRenderer {
   // Fits the directional light's cascades to `camera` instead of the one drawn with (none: the
   // drawn one): the viewer's frozen-shadow view, and how tests compare the maps two cameras get.
   void setCascadeCamera(std::optional<Camera> camera) { cascadeCamera_ = std::move(camera); }
+
+  // Adds the baked light of `bake` (read by readBake for this scene): uploads the lightmap and
+  // gives its static instances their atlas UVs. Modes other than Direct need one.
+  void setBake(const Bake& bake);
+  bool hasBake() const;
+  // Switches what the lit pass draws; throws std::invalid_argument for a mode that needs a bake
+  // when none is set.
+  void setMode(RenderMode mode);
 
   const RendererSettings& settings() const { return settings_; }
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach

@@ -43,7 +43,14 @@ void PunctualLights::set(gl::Program& program) const {
   program.set("uLightType", std::span<const int>(type_));
   program.set("uLightPosition", std::span<const glm::vec3>(position_));
   program.set("uLightDirection", std::span<const glm::vec3>(direction_));
-  program.set("uLightPower", std::span<const glm::vec3>(power_));
+  if (bakedDirectInLightmap_) {
+    std::vector<glm::vec3> live = power_;
+    for (std::size_t i = 0; i < live.size(); ++i)
+      if (lights_[i].bakeDirect) live[i] = glm::vec3(0.0f);
+    program.set("uLightPower", std::span<const glm::vec3>(live));
+  } else {
+    program.set("uLightPower", std::span<const glm::vec3>(power_));
+  }
   program.set("uLightCosCone", std::span<const glm::vec2>(cosCone_));
 }
 

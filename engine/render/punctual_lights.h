@@ -23,8 +23,13 @@ class PunctualLights {
   // The scene light that uniform slot `i` holds (slot i = Scene::lights[i]).
   const Light& light(std::size_t i) const { return lights_[i]; }
   void set(gl::Program& program) const;
+  // Lights marked Light::bakeDirect have their direct light in the lightmap once a bake is
+  // attached: then they are drawn with zero power (they still occupy their slots). Without a
+  // bake they are drawn live like the others.
+  void setBakedDirectInLightmap(bool inLightmap) { bakedDirectInLightmap_ = inLightmap; }
 
  private:
+  bool bakedDirectInLightmap_ = false;
   std::vector<Light> lights_;
   std::vector<int> type_;
   std::vector<glm::vec3> position_, direction_, power_;

@@ -5,7 +5,8 @@
 namespace bounce {
 namespace {
 
-constexpr std::array kModes = {RenderMode::Direct};
+constexpr std::array kModes = {RenderMode::Full, RenderMode::Direct, RenderMode::Indirect,
+                               RenderMode::Lightmap, RenderMode::Charts};
 
 }  // namespace
 
@@ -13,8 +14,20 @@ std::string_view renderModeName(RenderMode mode) {
   switch (mode) {
     case RenderMode::Direct:
       return "direct";
+    case RenderMode::Full:
+      return "full";
+    case RenderMode::Indirect:
+      return "indirect";
+    case RenderMode::Lightmap:
+      return "lightmap";
+    case RenderMode::Charts:
+      return "charts";
   }
   return "direct";
+}
+
+bool renderModeNeedsBake(RenderMode mode) {
+  return mode != RenderMode::Direct;
 }
 
 std::optional<RenderMode> parseRenderMode(std::string_view name) {

@@ -12,7 +12,8 @@ struct TextureUnit {
   static constexpr int kPointShadow0 = 6;       // samplerCubeShadow × kMaxPointShadows (6..7)
   static constexpr int kDirectionalShadow = 8;  // reserved: cascades (shadow_directional.glsl)
   static constexpr int kAreaShadow0 = 9;        // reserved: area-light maps (shadow_area.glsl)
-  static constexpr int kLightmap = 12;          // reserved: baked indirect irradiance
+  static constexpr int kLightmap = 12;          // sampler2D: baked irradiance (lightmap.glsl)
+  static constexpr int kLightmapCharts = 13;    // sampler2D: chart colours (lightmap.glsl)
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

@@ -1,0 +1,92 @@
+// The full-size measurement of the accuracy goal (docs/renderer.md, "Baked light"): bake a
+// scene in-process with bounce-bake's settings, draw the renderer's indirect-only frame, and
+// compare it with bounce-trace --indirect-only over the static, non-emissive, edge-free pixels
+// (tests/render/indirect_accuracy.h). The reference is cached as EXR (radiance + standard
+// error) so a sweep of bake settings traces it once. Prints one CSV line per run:
+//   texel_budget,texel_size_m,atlas_w,atlas_h,spp_cap,target_error,denoise,bake_s,
+//   est_error_mean,mean_abs_rel_error,bias,ref_rel_std_error,ref_noise_allowance,pixels
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "gl/context.h"
+#include "image/image_io.h"
+#include "indirect_accuracy.h"
+#include "scene/load.h"
+
+namespace fs = std::filesystem;
+using namespace bounce;
+
+int main(int argc, char** argv) {
+  std::string scenePath = std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box/cornell_box.gltf";
+  AtlasSettings atlas;
+  atlas.texelBudget = 16384;
+  LightmapBakeSettings bake;
+  bake.irradiance.maxSpp = 4096;
+  bake.irradiance.targetError = 0.1f;
+  std::string denoise = "on";
+  int size = 128, refSpp = 4096;
+  std::string refFile, outDir;
+  bool header = false;
+  CLI::App app{"Renderer's indirect frame (with a fresh bake) against the path tracer."};
+  app.add_option("scene", scenePath, "scene (default: the Cornell box)");
+  app.add_option("--texel-budget", atlas.texelBudget, "atlas texel budget (bounce-bake default)");
+  app.add_option("--texel-size", atlas.texelSize, "texel edge in metres (overrides the budget)");
+  app.add_option("--spp", bake.irradiance.maxSpp, "most samples per texel");
+  app.add_option("--target-error", bake.irradiance.targetError, "per-texel relative error target");
+  app.add_option("--denoise", denoise, "on|off")->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--size", size, "frame width = height, pixels");
+  app.add_option("--ref-spp", refSpp, "reference samples per pixel");
+  app.add_option("--ref", refFile,
+                 "reference EXR: read if present (with <name>.se.exr), else written");
+  app.add_option("--out-dir", outDir, "write indirect.exr/.png, reference.png and mask.png here");
+  app.add_flag("--header", header, "print the CSV header first");
+  CLI11_PARSE(app, argc, argv);
+  bake.denoise = denoise == "on";
+  try {
+    const Scene scene = loadScene(scenePath);
+    const Camera& camera = scene.cameras.at(0);
+    test::Reference reference;
+    const fs::path seFile = fs::path(refFile).replace_extension(".se.exr");
+    if (!refFile.empty() && fs::exists(refFile) && fs::exists(seFile)) {
+      reference = {readExr(refFile), readExr(seFile)};
+      if (reference.radiance.width != size)
+        throw std::runtime_error(refFile + " is not " + std::to_string(size) + " wide");
+    } else {
+      reference = test::traceIndirectReference(scene, camera, size, size, refSpp);
+      if (!refFile.empty()) {
+        writeExr(refFile, reference.radiance);
+        writeExr(seFile, reference.stdError);
+      }
+    }
+    const test::BakeRun baked = test::bakeScene(scene, atlas, bake);
+    const auto context = gl::createOSMesaContext();
+    const Image rendered = test::renderIndirect(scene, baked.bake, camera, size, size);
+    const test::IndirectComparison c = test::compareIndirect(scene, camera, rendered, reference);
+    if (!outDir.empty()) {
+      writeExr(fs::path(outDir) / "indirect.exr", rendered);
+      writePng(fs::path(outDir) / "indirect.png", rendered, 0.0f);
+      writePng(fs::path(outDir) / "reference.png", reference.radiance, 0.0f);
+      Image mask(size, size);
+      for (std::size_t i = 0; i < mask.pixels.size(); ++i)
+        mask.pixels[i] = glm::vec3(c.mask.keep[i] ? 1.0f : 0.0f);
+      writeDisplayPng(fs::path(outDir) / "mask.png", mask);
+    }
+    if (header)
+      std::printf(
+          "texel_budget,texel_size_m,atlas_w,atlas_h,spp_cap,target_error,denoise,bake_s,"
+          "est_error_mean,mean_abs_rel_error,bias,ref_rel_std_error,ref_noise_allowance,"
+          "pixels\n");
+    std::printf("%d,%.5f,%d,%d,%d,%.3f,%s,%.3f,%.4f,%.4f,%+.4f,%.4f,%.4f,%zu\n", atlas.texelBudget,
+                baked.bake.layout.texelSize, baked.bake.layout.width, baked.bake.layout.height,
+                bake.irradiance.maxSpp, bake.irradiance.targetError, denoise.c_str(), baked.seconds,
+                baked.stats.meanRelativeError, c.meanAbsRelError, c.bias, c.meanRelStdError,
+                c.referenceNoise, c.pixels);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_indirect_accuracy: error: %s\n", e.what());
+    return 1;
+  }
+}
