@@ -1,14 +1,19 @@
 #version 330 core
-// One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface under direct light,
-//   L_o = ρ/π · (E_punctual + E_area) + L_e,
-// into a linear float target. ρ = albedo × base-colour texel (linear), L_e the surface's own
-// emission (front face; both when double-sided). Unshadowed.
+// One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface,
+//   L_o = ρ/π · (E_punctual + E_area + E_baked) + L_e,
+// into a linear float target; E_baked is the lightmap's irradiance on static surfaces, and the
+// mode picks the terms (lightmap.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
+// path tracer does; L_e the surface's own emission (front face; both when double-sided).
+// Punctual lights are shadowed by their maps (shadows.glsl); area lights are unshadowed.
 #include "lights.glsl"
+#include "shadows.glsl"
 #include "area_light.glsl"
+#include "lightmap.glsl"
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
 in vec2 vUv;
+in vec2 vLightmapUv;
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)
@@ -21,8 +26,14 @@ void main() {
   // Single-sided back faces are culled, so a back face here is double-sided: shade its side.
   vec3 n = normalize(vNormal);
   if (!gl_FrontFacing) n = -n;
+  // The triangle's own (geometric) normal on the shaded side, for the shadow bias.
+  vec3 ng = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
+  ng = dot(ng, ng) > 0.0 ? normalize(ng) : n;
+  if (dot(ng, n) < 0.0) ng = -ng;
   vec3 albedo = uAlbedo;
-  if (uHasAlbedoTexture) albedo *= texture(uAlbedoTexture, vUv).rgb;
-  vec3 irradiance = punctualIrradiance(vWorldPosition, n) + areaIrradiance(vWorldPosition, n);
-  fragRadiance = vec4(albedo / PI * irradiance + uEmission, 1.0);
+  if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
+  vec3 direct = vec3(0.0);
+  if (modeUsesDirectLight())
+    direct = punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n);
+  fragRadiance = vec4(shadeForMode(albedo, direct, uEmission, vLightmapUv), 1.0);
 }

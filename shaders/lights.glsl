@@ -1,9 +1,13 @@
 // Punctual lights (point, spot, directional): the irradiance E (W/m²) they give a surface at
-// world point p with unit normal n, unshadowed:
+// world point p with unit shading normal n and geometric normal ng, times the light's
+// visibility V ∈ [0,1] from its shadow map (lightVisibility, shaders/shadows.glsl):
 //   point:       E = I · cosθ / r²            (I in W/sr, r in m)
 //   spot:        E = I · spotFalloff · cosθ / r²
 //   directional: E = E⊥ · cosθ                (E⊥ in W/m² on a surface facing the light)
 // with cosθ = max(n·l, 0), l the unit direction towards the light.
+
+// Visibility of light i from p (1 = lit); defined in shadows.glsl.
+float lightVisibility(int light, vec3 p, vec3 ng);
 
 const float PI = 3.14159265358979;
 const int MAX_PUNCTUAL_LIGHTS = 32;
@@ -25,11 +29,12 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
   return t * t;
 }
 
-vec3 punctualIrradiance(vec3 p, vec3 n) {
+vec3 punctualIrradiance(vec3 p, vec3 n, vec3 ng) {
   vec3 irradiance = vec3(0.0);
   for (int i = 0; i < uLightCount; ++i) {
     if (uLightType[i] == LIGHT_DIRECTIONAL) {
-      irradiance += uLightPower[i] * max(dot(n, -uLightDirection[i]), 0.0);
+      float cosTheta = max(dot(n, -uLightDirection[i]), 0.0);
+      if (cosTheta > 0.0) irradiance += uLightPower[i] * cosTheta * lightVisibility(i, p, ng);
       continue;
     }
     vec3 toLight = uLightPosition[i] - p;
@@ -37,7 +42,9 @@ vec3 punctualIrradiance(vec3 p, vec3 n) {
     vec3 l = toLight * inversesqrt(r2);
     vec3 intensity = uLightPower[i];
     if (uLightType[i] == LIGHT_SPOT) intensity *= spotFalloff(uLightCosCone[i], dot(-l, uLightDirection[i]));
-    irradiance += intensity * max(dot(n, l), 0.0) / r2;
+    float cosTheta = max(dot(n, l), 0.0);
+    if (cosTheta > 0.0 && intensity != vec3(0.0))
+      irradiance += intensity * cosTheta / r2 * lightVisibility(i, p, ng);
   }
   return irradiance;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/surface_rules.h"
 #include "trace/sampling.h"
 
 namespace bounce {
@@ -10,13 +11,10 @@ EmitterTable::EmitterTable(const Scene& scene, const WorldGeometry& geometry)
     : geometry_(geometry), emitterOfTriangle_(geometry.triangleCount(), kNone) {
   std::vector<double> weights;
   for (uint32_t t = 0; t < geometry.triangleCount(); ++t) {
-    const uint32_t m = geometry.triangleMaterial[t];
-    if (m >= scene.materials.size()) continue;
-    const Material& material = scene.materials[m];
-    if (!material.isEmissive() || !isFinite(material.emission)) continue;
+    const Material& material = materialOf(scene, geometry.triangleMaterial[t]);
+    if (!isEmitterTriangle(material, geometry.triangleCross(t))) continue;
     const float area = 0.5f * glm::length(geometry.triangleCross(t));
-    if (!(area > 0.0f) || !std::isfinite(area)) continue;
-    const glm::vec3 le = glm::max(material.emission, glm::vec3(0.0f));
+    const glm::vec3 le = emittedRadiance(material);
     const float sides = material.doubleSided ? 2.0f : 1.0f;
     // Sampling weight ∝ flux π·A·luminance(Le) (×2 double-sided); the π cancels.
     const double weight = static_cast<double>(area) * sides * static_cast<double>(luminance(le));

@@ -1,7 +1,8 @@
 // Area emitters: the triangles whose material emits. One is chosen with probability
 // proportional to its power Φ ∝ area × luminance(Le) (× 2 when double-sided), then a point
 // uniformly on it, so the area density of a sampled point is pmf(triangle) / area.
-// Triangles with zero or non-finite area, or non-finite emission, are left out.
+// Which triangles emit, and their Le, is scene/surface_rules.h's rule (isEmitterTriangle,
+// emittedRadiance), shared with the renderer.
 #pragma once
 
 #include <cstdint>

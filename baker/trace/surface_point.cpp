@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/surface_rules.h"
 #include "trace/sampling.h"
 
 namespace bounce {
@@ -60,37 +61,29 @@ bool makeSurfacePoint(const Scene& scene, const WorldGeometry& geometry, const R
   point.triangle = hit.triangle;
   point.geometricNormal = frontFace ? front : -front;
 
-  // Interpolated shading normal, turned to the geometric normal's side; a missing or
-  // non-finite one falls back to the geometric normal.
-  glm::vec3 ns = b0 * geometry.normals[tri.x] + hit.u * geometry.normals[tri.y] +
-                 hit.v * geometry.normals[tri.z];
-  const float nsLength = glm::length(ns);
-  if (nsLength > 1e-6f && std::isfinite(nsLength)) {
-    ns /= nsLength;
-    if (glm::dot(ns, point.geometricNormal) < 0.0f) ns = -ns;
-    if (glm::dot(ns, point.geometricNormal) < 1e-3f) ns = point.geometricNormal;
-  } else {
-    ns = point.geometricNormal;
-  }
+  // Interpolated shading normal: each corner's normal, or the geometric normal where the
+  // corner's is unusable (the rule the renderer's corners follow), turned to the geometric
+  // normal's side; a degenerate result falls back to the geometric normal.
+  glm::vec3 ns = b0 * shadingNormalOr(geometry.normals[tri.x], front) +
+                 hit.u * shadingNormalOr(geometry.normals[tri.y], front) +
+                 hit.v * shadingNormalOr(geometry.normals[tri.z], front);
+  ns = shadingNormalOr(ns, point.geometricNormal);
+  if (glm::dot(ns, point.geometricNormal) < 0.0f) ns = -ns;
+  if (glm::dot(ns, point.geometricNormal) < 1e-3f) ns = point.geometricNormal;
   point.shadingNormal = ns;
 
-  const uint32_t materialIndex = geometry.triangleMaterial[hit.triangle];
-  if (materialIndex >= scene.materials.size()) {
-    point.albedo = glm::vec3(0.0f);
-    point.emitted = glm::vec3(0.0f);
-    return true;
-  }
-  const Material& material = scene.materials[materialIndex];
-  glm::vec3 albedo = material.albedo;
+  const Material& material = materialOf(scene, geometry.triangleMaterial[hit.triangle]);
+  glm::vec3 albedo = reflectance(material);
   if (material.albedoTexture && *material.albedoTexture < scene.textures.size()) {
     const glm::vec2 uv =
         b0 * geometry.uv0[tri.x] + hit.u * geometry.uv0[tri.y] + hit.v * geometry.uv0[tri.z];
     albedo *= sampleTexture(scene.textures[*material.albedoTexture], uv);
   }
-  // ρ ≤ 1 keeps every path weight bounded; non-finite inputs absorb.
+  // ρ ≤ 1 keeps every path weight bounded; non-finite texels absorb (the renderer clamps the
+  // same product).
   point.albedo = isFinite(albedo) ? glm::clamp(albedo, 0.0f, 1.0f) : glm::vec3(0.0f);
-  const bool emits = (frontFace || material.doubleSided) && isFinite(material.emission);
-  point.emitted = emits ? glm::max(material.emission, glm::vec3(0.0f)) : glm::vec3(0.0f);
+  const bool emits = frontFace || material.doubleSided;
+  point.emitted = emits ? emittedRadiance(material) : glm::vec3(0.0f);
   return true;
 }
 

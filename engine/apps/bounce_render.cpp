@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
@@ -27,7 +28,26 @@ struct Options {
   std::string context;
   float exposure = 0.0f;
   int frames = 1;
+  std::string mode;  // default: full with a bake, direct without
+  std::string bake;
+  bool noShadows = false;
+  int shadowResolution = 0;
+  std::string shadowFilter = "poisson";
+  float shadowFilterRadius = 1.5f;
 };
+
+bounce::RendererSettings rendererSettings(const Options& options) {
+  bounce::RendererSettings settings;
+  settings.mode = options.mode.empty() ? (options.bake.empty() ? bounce::RenderMode::Direct
+                                                               : bounce::RenderMode::Full)
+                                       : *bounce::parseRenderMode(options.mode);  // CLI11 checked
+  settings.shadows.enabled = !options.noShadows;
+  settings.shadows.resolution = options.shadowResolution;
+  settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
+                                                               : bounce::ShadowFilter::Poisson;
+  settings.shadows.filterRadius = options.shadowFilterRadius;
+  return settings;
+}
 
 int run(const Options& options) {
   const bounce::Scene scene = bounce::loadScene(options.scene);
@@ -56,7 +76,23 @@ int run(const Options& options) {
     return std::chrono::duration<double, std::milli>(b - a).count();
   };
   const auto start = Clock::now();
-  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory());
+  const bounce::RendererSettings settings = rendererSettings(options);
+  if (bounce::renderModeNeedsBake(settings.mode) && options.bake.empty())
+    throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
+                             " draws baked light: give --bake DIR");
+  std::optional<bounce::Bake> bake;
+  if (!options.bake.empty()) {
+    bake = bounce::readBake(options.bake, scene);
+    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
+                 options.bake.c_str(), bake->layout.width, bake->layout.height,
+                 bake->layout.instances.size());
+  }
+  if (settings.mode == bounce::RenderMode::Lightmap)
+    std::fprintf(stderr,
+                 "bounce-render: mode lightmap: pixels are E/pi W/(sr·m²), the radiance of a "
+                 "white (rho = 1) Lambertian surface under the baked irradiance E (W/m²)\n");
+  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
+                                   bake ? &*bake : nullptr);
   for (const std::string& warning : renderer.warnings())
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
   const auto uploaded = Clock::now();
@@ -64,9 +100,10 @@ int run(const Options& options) {
   const auto rendered = Clock::now();
   std::fprintf(stderr,
                "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
-               "%.1f ms (render + readback, includes the driver's shader JIT)\n",
+               "%.1f ms (render + readback, includes the driver's shader JIT), mode %s\n",
                options.width, options.height, camera.name.c_str(), scene.triangleCount(),
-               ms(start, uploaded), ms(uploaded, rendered));
+               ms(start, uploaded), ms(uploaded, rendered),
+               std::string(bounce::renderModeName(settings.mode)).c_str());
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time.
     bounce::gl::RenderTarget target(options.width, options.height);
@@ -91,7 +128,8 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
   Options options;
   CLI::App app{
-      "Render a scene with the forward renderer (direct light, unshadowed) into linear-radiance "
+      "Render a scene with the forward renderer (direct light with shadow maps) into "
+      "linear-radiance "
       "EXR (W/(sr·m²)) and/or tone-mapped sRGB PNG files.",
       "bounce-render"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj)")->required();
@@ -112,6 +150,24 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames,
                  "render the frame this many times and report the mean time (benchmark)")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--bake", options.bake,
+                 "bake folder (bounce-bake's output) for this scene: adds its baked light");
+  app.add_option("--mode", options.mode,
+                 "what to draw: full (direct + baked indirect; the default with --bake), direct "
+                 "(real-time direct light only; the default without), indirect (only the baked "
+                 "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
+                 "(lightmap charts and texels)")
+      ->check(CLI::IsMember(bounce::renderModeNames()));
+  app.add_flag("--no-shadows", options.noShadows, "draw punctual lights unshadowed");
+  app.add_option("--shadow-resolution", options.shadowResolution,
+                 "texels per side of every shadow map / cube face (default: chosen per light)")
+      ->check(CLI::Range(16, 16384));
+  app.add_option("--shadow-filter", options.shadowFilter,
+                 "hardware (one 2x2 comparison tap) or poisson (16 rotated taps, default)")
+      ->check(CLI::IsMember({"hardware", "poisson"}));
+  app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
+                 "Poisson kernel radius in shadow-map texels (default 1.5)")
+      ->check(CLI::Range(0.0f, 64.0f));
   CLI11_PARSE(app, argc, argv);
   try {
     return run(options);

@@ -1,8 +1,9 @@
 // bounce-view: the scene in a window (GLFW, OpenGL 3.3 core) with a fly camera. Controls:
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
-//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. The title shows the camera,
-//   the frame time, the speed and the exposure.
+//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With --bake: M cycles the
+//   modes (full, direct, indirect, lightmap, charts), C toggles the chart/texel-density view.
+//   The title shows the camera, the mode, the frame time, the speed and the exposure.
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "gl/window.h"
@@ -38,6 +40,8 @@ struct Options {
   float exposure = 0.0f;
   int frames = 0;  // 0 = until closed
   std::string screenshot;
+  std::string mode;  // default: full with a bake, direct without
+  std::string bake;
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -48,11 +52,14 @@ void save(const bounce::Image& radiance, const std::string& path, float exposure
 
 class Viewer {
  public:
-  Viewer(const Options& options, bounce::Scene scene)
+  Viewer(const Options& options, bounce::Scene scene, std::optional<bounce::Bake> bake,
+         bounce::RenderMode mode)
       : options_(options),
         scene_(std::move(scene)),
+        bake_(std::move(bake)),
         window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory()),
+        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}},
+                  bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
         exposure_(options.exposure) {
     std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
@@ -100,9 +107,10 @@ class Viewer {
         titleShown = now;
         char title[256];
         std::snprintf(title, sizeof title,
-                      "bounce-view — %s — camera '%s' — %.1f ms — %.2f m/s — %+.1f EV",
-                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(), frameMs, speed_,
-                      exposure_);
+                      "bounce-view — %s — camera '%s' — %s — %.1f ms — %.2f m/s — %+.1f EV",
+                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(),
+                      std::string(bounce::renderModeName(renderer_.settings().mode)).c_str(),
+                      frameMs, speed_, exposure_);
         window_.setTitle(title);
       }
     }
@@ -113,6 +121,32 @@ class Viewer {
   void select(std::size_t index) {
     cameraIndex_ = index;
     fly_.emplace(cameras_[index]);
+  }
+
+  // The modes in the order M steps through them; without a bake only direct.
+  void nextMode() {
+    if (!renderer_.hasBake()) return;
+    const std::vector<std::string> names = bounce::renderModeNames();
+    const std::string current(bounce::renderModeName(renderer_.settings().mode));
+    std::size_t i = 0;
+    while (i < names.size() && names[i] != current) ++i;
+    setMode(*bounce::parseRenderMode(names[(i + 1) % names.size()]));
+  }
+
+  void toggleCharts() {
+    if (!renderer_.hasBake()) return;
+    const bounce::RenderMode mode = renderer_.settings().mode;
+    if (mode != bounce::RenderMode::Charts) modeBeforeCharts_ = mode;
+    setMode(mode == bounce::RenderMode::Charts ? modeBeforeCharts_ : bounce::RenderMode::Charts);
+  }
+
+  void setMode(bounce::RenderMode mode) {
+    renderer_.setMode(mode);
+    std::fprintf(stderr, "bounce-view: mode %s%s\n",
+                 std::string(bounce::renderModeName(mode)).c_str(),
+                 mode == bounce::RenderMode::Lightmap
+                     ? " (pixels are E/pi: the baked irradiance on a white surface)"
+                     : "");
   }
 
   void handleInput(float dt) {
@@ -129,6 +163,8 @@ class Viewer {
       if (key == Key::F12) saveRequested_ = true;
       if (key == Key::LeftBracket) exposure_ -= 0.5f;
       if (key == Key::RightBracket) exposure_ += 0.5f;
+      if (key == Key::M) nextMode();
+      if (key == Key::C) toggleCharts();
     }
     speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
     const auto axis = [&](Key plus, Key minus) {
@@ -172,6 +208,7 @@ class Viewer {
 
   Options options_;
   bounce::Scene scene_;
+  std::optional<bounce::Bake> bake_;  // before renderer_, which reads it on construction
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;
@@ -184,6 +221,7 @@ class Viewer {
   float exposure_ = 0.0f;
   bool saveRequested_ = false;
   int screenshots_ = 0;
+  bounce::RenderMode modeBeforeCharts_ = bounce::RenderMode::Full;
 };
 
 }  // namespace
@@ -194,7 +232,7 @@ int main(int argc, char** argv) {
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits.",
+      "exposure, Esc quits. With --bake: M cycles the modes, C toggles the chart view.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj)")->required();
   app.add_option("--camera", options.camera, "start at this camera (default: the first)");
@@ -210,9 +248,23 @@ int main(int argc, char** argv) {
         const auto ext = std::filesystem::path(path).extension();
         return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
       });
+  app.add_option("--bake", options.bake,
+                 "bake folder (bounce-bake's output) for this scene: adds its baked light");
+  app.add_option("--mode", options.mode,
+                 "start in this mode: full (direct + baked indirect; the default with --bake), "
+                 "direct (the default without), indirect, lightmap (E/pi), charts")
+      ->check(CLI::IsMember(bounce::renderModeNames()));
   CLI11_PARSE(app, argc, argv);
   try {
-    Viewer viewer(options, bounce::loadScene(options.scene));
+    bounce::Scene scene = bounce::loadScene(options.scene);
+    std::optional<bounce::Bake> bake;
+    if (!options.bake.empty()) bake = bounce::readBake(options.bake, scene);
+    const bounce::RenderMode mode =
+        options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
+                             : *bounce::parseRenderMode(options.mode);
+    if (bounce::renderModeNeedsBake(mode) && !bake)
+      throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR");
+    Viewer viewer(options, std::move(scene), std::move(bake), mode);
     return viewer.run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bounce-view: error: %s\n", e.what());

@@ -13,6 +13,11 @@ void clear(glm::vec4 color) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
+void clearDepth() {
+  glDepthMask(GL_TRUE);
+  glClear(GL_DEPTH_BUFFER_BIT);
+}
+
 void setDepthTest(bool enabled) {
   if (enabled) {
     glEnable(GL_DEPTH_TEST);
@@ -23,11 +28,12 @@ void setDepthTest(bool enabled) {
   glDepthMask(enabled ? GL_TRUE : GL_FALSE);
 }
 
-void setBackFaceCulling(bool enabled) {
+void setBackFaceCulling(bool enabled, bool mirrored) {
+  // The winding also decides gl_FrontFacing, so it is set even without culling.
+  glFrontFace(mirrored ? GL_CW : GL_CCW);
   if (enabled) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
   } else {
     glDisable(GL_CULL_FACE);
   }

@@ -128,6 +128,12 @@ void Program::set(const std::string& name, glm::vec2 v) {
 void Program::set(const std::string& name, glm::vec3 v) {
   glUniform3f(location(name), v.x, v.y, v.z);
 }
+void Program::set(const std::string& name, glm::vec4 v) {
+  glUniform4f(location(name), v.x, v.y, v.z, v.w);
+}
+void Program::set(const std::string& name, const glm::mat3& m) {
+  glUniformMatrix3fv(location(name), 1, GL_FALSE, &m[0][0]);
+}
 void Program::set(const std::string& name, const glm::mat4& m) {
   glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]);
 }
@@ -142,6 +148,20 @@ void Program::set(const std::string& name, std::span<const glm::vec2> values) {
 void Program::set(const std::string& name, std::span<const glm::vec3> values) {
   if (!values.empty())
     glUniform3fv(location(name + "[0]"), static_cast<GLsizei>(values.size()), &values[0].x);
+}
+
+void Program::set(const std::string& name, std::span<const float> values) {
+  if (!values.empty())
+    glUniform1fv(location(name + "[0]"), static_cast<GLsizei>(values.size()), values.data());
+}
+void Program::set(const std::string& name, std::span<const glm::vec4> values) {
+  if (!values.empty())
+    glUniform4fv(location(name + "[0]"), static_cast<GLsizei>(values.size()), &values[0].x);
+}
+void Program::set(const std::string& name, std::span<const glm::mat4> values) {
+  if (!values.empty())
+    glUniformMatrix4fv(location(name + "[0]"), static_cast<GLsizei>(values.size()), GL_FALSE,
+                       &values[0][0][0]);
 }
 
 }  // namespace bounce::gl

@@ -36,11 +36,16 @@ class Program {
   void set(const std::string& name, float value);
   void set(const std::string& name, glm::vec2 value);
   void set(const std::string& name, glm::vec3 value);
+  void set(const std::string& name, glm::vec4 value);
+  void set(const std::string& name, const glm::mat3& value);
   void set(const std::string& name, const glm::mat4& value);
   // Arrays: `name` is the array's name without [0].
   void set(const std::string& name, std::span<const int> values);
   void set(const std::string& name, std::span<const glm::vec2> values);
   void set(const std::string& name, std::span<const glm::vec3> values);
+  void set(const std::string& name, std::span<const float> values);
+  void set(const std::string& name, std::span<const glm::vec4> values);
+  void set(const std::string& name, std::span<const glm::mat4> values);
 
  private:
   int location(const std::string& name);

@@ -26,14 +26,16 @@ void setSampling(GLint filter, GLint wrap) {
 
 }  // namespace
 
-Texture2D::Texture2D(int width, int height, std::span<const glm::vec3> texels, Filter filter)
+Texture2D::Texture2D(int width, int height, std::span<const glm::vec3> texels, Filter filter,
+                     Wrap wrap)
     : width_(width), height_(height) {
   requireSize(width, height, texels.size());
   glGenTextures(1, &id_);
   glBindTexture(GL_TEXTURE_2D, id_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width, height, 0, GL_RGB, GL_FLOAT, texels.data());
-  setSampling(filter == Filter::Linear ? GL_LINEAR : GL_NEAREST, GL_REPEAT);
+  setSampling(filter == Filter::Linear ? GL_LINEAR : GL_NEAREST,
+              wrap == Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);
 }
 
 Texture2D::Texture2D(int width, int height, std::span<const glm::vec4> texels)

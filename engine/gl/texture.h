@@ -11,11 +11,15 @@
 namespace bounce::gl {
 
 enum class Filter { Nearest, Linear };
+// Repeat for material textures (UVs may leave [0,1]); ClampToEdge for atlases (a lightmap's
+// bilinear lookups must not wrap to the opposite border).
+enum class Wrap { Repeat, ClampToEdge };
 
 class Texture2D {
  public:
-  // Linear-RGB texels, width*height, repeating (material textures).
-  Texture2D(int width, int height, std::span<const glm::vec3> texels, Filter filter);
+  // RGB32F texels, width*height, rows as given (material textures, lightmaps).
+  Texture2D(int width, int height, std::span<const glm::vec3> texels, Filter filter,
+            Wrap wrap = Wrap::Repeat);
   // RGBA32F table, width*height, nearest and clamped (data for texelFetch).
   Texture2D(int width, int height, std::span<const glm::vec4> texels);
   ~Texture2D();

@@ -37,6 +37,8 @@ enum class Key {
   Digit7,
   Digit8,
   Digit9,
+  M,  // bounce-view: next render mode
+  C,  // bounce-view: chart view on/off
 };
 
 enum class MouseButton { Left, Right };

@@ -23,7 +23,7 @@ GLADapiproc glfwProc(const char* name) {
   return glfwGetProcAddress(name);
 }
 
-constexpr std::array<std::pair<Key, int>, 23> kKeyCodes = {{
+constexpr std::array<std::pair<Key, int>, 25> kKeyCodes = {{
     {Key::W, GLFW_KEY_W},
     {Key::A, GLFW_KEY_A},
     {Key::S, GLFW_KEY_S},
@@ -47,6 +47,8 @@ constexpr std::array<std::pair<Key, int>, 23> kKeyCodes = {{
     {Key::Digit7, GLFW_KEY_7},
     {Key::Digit8, GLFW_KEY_8},
     {Key::Digit9, GLFW_KEY_9},
+    {Key::M, GLFW_KEY_M},
+    {Key::C, GLFW_KEY_C},
 }};
 
 int glfwKey(Key key) {

@@ -357,6 +357,14 @@ class GltfBuilder {
     } else {
       fail(what + ": unknown light type '" + gl.type + "'");
     }
+    // extras.bounce.bake: "all" bakes the light's direct light too (scene.h, Light::bakeDirect).
+    if (gl.extras.Has("bounce") && gl.extras.Get("bounce").Has("bake")) {
+      const tinygltf::Value& bake = gl.extras.Get("bounce").Get("bake");
+      const std::string mode = bake.IsString() ? bake.Get<std::string>() : "";
+      if (mode != "all" && mode != "indirect")
+        fail(what + ": light extras.bounce.bake must be \"all\" or \"indirect\"");
+      light.bakeDirect = mode == "all";
+    }
     scene_.lights.push_back(light);
   }
 

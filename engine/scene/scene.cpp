@@ -2,7 +2,14 @@
 
 #include <stdexcept>
 
+#include "scene/surface_rules.h"
+
 namespace bounce {
+
+bool Material::isEmissive() const {
+  const glm::vec3 le = emittedRadiance(*this);
+  return le.r > 0.0f || le.g > 0.0f || le.b > 0.0f;
+}
 
 std::size_t Scene::triangleCount() const {
   std::size_t n = 0;

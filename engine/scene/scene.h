@@ -33,7 +33,8 @@ struct Material {
   glm::vec3 emission{0.0f};               // emitted radiance, W/(sr·m²)
   bool doubleSided = false;               // emission and shading on both faces
 
-  bool isEmissive() const { return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f; }
+  // True when emittedRadiance(*this) (scene/surface_rules.h) is positive in some channel.
+  bool isEmissive() const;
 };
 
 // An indexed triangle mesh in its own object space. Counter-clockwise triangles face the
@@ -76,6 +77,10 @@ struct Light {
   glm::vec3 irradiance{0.0f};     // W/m² at normal incidence (directional)
   float innerConeAngle = 0.0f;    // spot: full intensity inside this half-angle, radians
   float outerConeAngle = 0.7853982f;  // spot: zero outside this half-angle, radians
+  // Baked only (glTF extras.bounce.bake = "all"): its direct light is baked into the lightmap
+  // with its indirect light, and the renderer does not draw it live. Otherwise (the default) the
+  // lightmap holds only its indirect light.
+  bool bakeDirect = false;
   // glTF's `range` is ignored: bounce's lights follow the inverse-square law without cut-off.
 };
 

@@ -12,7 +12,11 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
 #include "image/image_io.h"
+#include "scene/load.h"
 
 namespace {
 
@@ -220,6 +224,82 @@ TEST_F(ToolsTest, ViewerRendersUnderXvfb) {
   double sum = 0.0;
   for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
   EXPECT_GT(sum / static_cast<double>(image.pixels.size()), 0.01) << r.output;
+}
+
+// A synthetic bake for content/point_over_plane: every static instance's corners at the atlas
+// centre of a constant lightmap E = (2, 3, 5) W/m², so the plane (ρ = 0.5) shows ρ/π·E.
+// `hashOf` names the scene the manifest claims.
+void writeConstantBake(const fs::path& dir, const bounce::Scene& scene, const bounce::Scene& hashOf,
+                       int formatVersion = bounce::kBakeFormatVersion) {
+  bounce::Bake bake;
+  bake.layout.width = bake.layout.height = 4;
+  bake.layout.texelSize = 0.5f;
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].mobility == bounce::Mobility::Static)
+      bake.layout.instances.push_back(
+          {i, std::vector<glm::vec2>(scene.meshes[scene.instances[i].mesh].indices.size(),
+                                     glm::vec2(0.5f))});
+  bake.irradiance = bounce::Image(4, 4, {2.0f, 3.0f, 5.0f});
+  bake.manifestJson = nlohmann::json{{"formatVersion", bounce::kBakeFormatVersion},
+                                     {"sceneHash", bounce::sceneContentHash(hashOf)}}
+                          .dump();
+  bounce::writeBake(dir, bake);
+  if (formatVersion != bounce::kBakeFormatVersion)
+    std::ofstream(dir / "bake.json") << nlohmann::json{
+        {"formatVersion", formatVersion}, {"sceneHash", bounce::sceneContentHash(hashOf)}};
+}
+
+TEST_F(ToolsTest, RenderWithBakeAddsReflectanceOverPiTimesE) {
+  const fs::path sceneFile =
+      fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf";
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const fs::path exr = dir_ / "indirect.exr";
+  const ToolRun r =
+      run(tool("bounce-render") + " " + quote(sceneFile) + " --bake " + quote(dir_ / "plane.bake") +
+          " --mode indirect --width 16 --height 16 --context osmesa --out " + quote(exr));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image image = bounce::readExr(exr);
+  const glm::vec3 expected = 0.5f / std::numbers::pi_v<float> * glm::vec3(2, 3, 5);
+  for (const glm::vec3& p : image.pixels)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], expected[c], 1e-3f * expected[c]);
+}
+
+TEST_F(ToolsTest, BakeForAnotherSceneOrFormatIsRefusedNamingTheFolder) {
+  const fs::path sceneFile =
+      fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf";
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  bounce::Scene other = scene;
+  other.materials.at(0).albedo *= 0.5f;
+  const fs::path out = dir_ / "x.png";
+  for (const char* program : {"bounce-render", "bounce-view"}) {
+    writeConstantBake(dir_ / "other.bake", scene, other);
+    ToolRun r =
+        run(tool(program) + " " + quote(sceneFile) + " --bake " + quote(dir_ / "other.bake") +
+            (std::string(program) == "bounce-render" ? " --out " + quote(out) : " --frames 1"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find((dir_ / "other.bake" / "bake.json").string() +
+                            ": bake made for another scene: rebake"),
+              std::string::npos)
+        << r.output;
+    writeConstantBake(dir_ / "old.bake", scene, scene, bounce::kBakeFormatVersion + 1);
+    r = run(tool(program) + " " + quote(sceneFile) + " --bake " + quote(dir_ / "old.bake") +
+            (std::string(program) == "bounce-render" ? " --out " + quote(out) : " --frames 1"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find((dir_ / "old.bake" / "bake.json").string() + ": format version"),
+              std::string::npos)
+        << r.output;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(ToolsTest, ModesOfBakedLightNeedABake) {
+  const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                        " --mode indirect --out " + quote(dir_ / "x.png"));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("--mode indirect draws baked light: give --bake DIR"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
 }  // namespace

@@ -1,0 +1,246 @@
+// bounce-bake: bakes a scene's lightmap (irradiance E in W/m² per texel of the atlas) and writes
+// the bake folder (engine/bake/bake_folder.h): lightmap.exr, layout.bin, bake.json.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "atlas/atlas.h"
+#include "bake/bake_folder.h"
+#include "bake/lightmap_bake.h"
+#include "ray/ray_kernel.h"
+#include "scene/load.h"
+#include "scene/world_geometry.h"
+#include "trace/progress_line.h"
+#include "trace/sampling.h"
+
+namespace {
+
+struct Options {
+  std::filesystem::path scene;
+  std::filesystem::path out;
+  float texelSize = 0.0f;
+  int texelBudget = 16384;
+  int spp = 4096;
+  float targetError = 0.1f;
+  int maxDepth = 64;
+  uint32_t seed = 0;
+  int threads = 0;
+  std::string backend = "embree";
+  std::string denoise = "on";
+  bool progress = false;
+  bool quiet = false;
+};
+
+double since(std::chrono::steady_clock::time_point& last) {
+  const auto now = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(now - last).count();
+  last = now;
+  return s;
+}
+
+// FNV-1a (64 bit) of the settings that change the lightmap, hex.
+std::string settingsHash(const nlohmann::json& settings) {
+  uint64_t h = 14695981039346656037ull;
+  for (const unsigned char c : settings.dump()) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+int run(const Options& o) {
+  auto clock = std::chrono::steady_clock::now();
+  const auto start = clock;
+  const bounce::Scene scene = bounce::loadScene(o.scene);
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-bake: warning: %s\n", warning.c_str());
+  const double loadSeconds = since(clock);
+
+  bounce::AtlasSettings atlasSettings;
+  atlasSettings.texelSize = o.texelSize;
+  atlasSettings.texelBudget = o.texelBudget;
+  const bounce::Atlas atlas = bounce::buildAtlas(scene, atlasSettings);
+  for (const std::string& note : atlas.notes)
+    std::fprintf(stderr, "bounce-bake: note: %s\n", note.c_str());
+  if (atlas.layout.instances.empty())
+    throw std::runtime_error(o.scene.string() + " has no static surfaces to bake");
+  const double atlasSeconds = since(clock);
+
+  const bounce::RayBackend backend = bounce::parseRayBackend(o.backend);
+  const bounce::WorldGeometry geometry = bounce::flatten(scene);
+  const auto kernel = bounce::makeRayKernel(geometry, backend);
+  const double kernelSeconds = since(clock);
+
+  bounce::LightmapBakeSettings settings;
+  settings.irradiance.maxSpp = o.spp;
+  settings.irradiance.targetError = o.targetError;
+  settings.irradiance.maxDepth = o.maxDepth;
+  settings.irradiance.seed = o.seed;
+  settings.irradiance.threads = o.threads;
+  settings.irradiance.progress = !o.quiet && (o.progress || bounce::stderrIsTerminal());
+  settings.denoise = o.denoise == "on";
+  const bounce::LightmapBake bake =
+      bounce::bakeLightmap(scene, geometry, *kernel, atlas.layout, settings);
+  const double bakeSeconds = since(clock);
+  if (!bake.irradiance.allFinite())
+    throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
+
+  // What the map holds: every light's indirect light; direct light only of baked-only lights.
+  nlohmann::json bakedDirect = nlohmann::json::array();
+  for (const bounce::Light& light : scene.lights)
+    if (light.bakeDirect) bakedDirect.push_back(light.name);
+  uint32_t fewest = 0xffffffffu, most = 0;
+  for (std::size_t t = 0; t < bake.samples.size(); ++t) {
+    if (!bake.covered[t] || bake.invalid[t]) continue;
+    fewest = std::min(fewest, bake.samples[t]);
+    most = std::max(most, bake.samples[t]);
+  }
+  const uint64_t valid = bake.coveredTexels - bake.invalidTexels;
+  const nlohmann::json settingsJson = {{"texelSize", atlas.layout.texelSize},
+                                       {"texelBudget", o.texelSize > 0 ? 0 : o.texelBudget},
+                                       {"maxSpp", o.spp},
+                                       {"targetError", o.targetError},
+                                       {"maxDepth", o.maxDepth},
+                                       {"seed", o.seed},
+                                       {"denoise", settings.denoise},
+                                       {"pointsPerTexel", settings.pointsPerTexel}};
+  const double totalSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::json manifest = {
+      {"formatVersion", bounce::kBakeFormatVersion},
+      {"sceneHash", bounce::sceneContentHash(scene)},
+      {"settingsHash", settingsHash(settingsJson)},
+      {"scene", o.scene.filename().string()},
+      {"settings", settingsJson},
+      {"lightmap",
+       {{"quantity", "irradiance"},
+        {"unit", "W/m^2"},
+        {"holds",
+         "indirect light (two or more reflections counted at the viewer, i.e. light that "
+         "reflected at least once before reaching the texel) of every light and emitter, plus "
+         "the direct light of the baked-only lights listed in directBaked"},
+        {"indirect", "all"},
+        {"directBaked", bakedDirect}}},
+      {"atlas",
+       {{"width", atlas.layout.width},
+        {"height", atlas.layout.height},
+        {"texelSize", atlas.layout.texelSize},
+        {"padding", atlas.layout.padding},
+        {"charts", atlas.layout.chartCount},
+        {"utilisation", atlas.layout.utilisation},
+        {"coveredTexels", bake.coveredTexels},
+        {"invalidTexels", bake.invalidTexels},
+        {"notes", atlas.notes}}},
+      {"samples",
+       {{"total", bake.totalSamples},
+        {"perTexelMean",
+         valid > 0 ? static_cast<double>(bake.totalSamples) / static_cast<double>(valid) : 0.0},
+        {"perTexelMin", valid > 0 ? fewest : 0},
+        {"perTexelMax", most},
+        {"nonFinite", bake.nonFiniteSamples}}},
+      {"estimatedError",
+       {{"what",
+         "relative standard error of each texel's irradiance (luminance), from its "
+         "sample variance; before denoising"},
+        {"mean", bake.meanRelativeError},
+        {"p95", bake.p95RelativeError},
+        {"target", o.targetError}}},
+      {"leaks",
+       {{"pointsInsideGeometry", bake.pointsInside},
+        {"pointsAcrossWalls", bake.pointsAcross},
+        {"invalidTexelsFilled", bake.invalidTexels}}},
+      {"seams", {{"count", bake.seams}, {"relativeMismatchAfterStitching", bake.seamMismatch}}},
+      {"rays",
+       {{"traced", bake.rays},
+        {"perSecond",
+         bake.seconds.leakGuard + bake.seconds.irradiance > 0
+             ? static_cast<double>(bake.rays) / (bake.seconds.leakGuard + bake.seconds.irradiance)
+             : 0.0},
+        {"backend", kernel->name()}}},
+      {"seconds",
+       {{"load", loadSeconds},
+        {"atlas", atlasSeconds},
+        {"rayKernel", kernelSeconds},
+        {"coverage", bake.seconds.coverage},
+        {"leakGuard", bake.seconds.leakGuard},
+        {"irradiance", bake.seconds.irradiance},
+        {"denoise", bake.seconds.denoise},
+        {"dilate", bake.seconds.dilate},
+        {"stitch", bake.seconds.stitch},
+        {"total", totalSeconds}}}};
+
+  const std::filesystem::path out =
+      o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;
+  bounce::Bake folder;
+  folder.layout = atlas.layout;
+  folder.irradiance = bake.irradiance;
+  folder.manifestJson = manifest.dump(1) + "\n";
+  bounce::writeBake(out, folder);
+  std::fprintf(
+      stderr,
+      "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
+      "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
+      "%.2f s (irradiance %.2f s) -> %s\n",
+      o.scene.filename().string().c_str(), atlas.layout.width, atlas.layout.height,
+      atlas.layout.chartCount, 100.0 * atlas.layout.utilisation,
+      static_cast<double>(atlas.layout.texelSize),
+      static_cast<unsigned long long>(bake.coveredTexels),
+      valid > 0 ? static_cast<double>(bake.totalSamples) / static_cast<double>(valid) : 0.0,
+      100.0 * bake.meanRelativeError, 100.0 * bake.p95RelativeError,
+      manifest["rays"]["perSecond"].get<double>() * 1e-6, bakeSeconds + since(clock),
+      bake.seconds.irradiance, out.string().c_str());
+  if (bake.nonFiniteSamples > 0)
+    std::fprintf(stderr,
+                 "bounce-bake: warning: %llu samples were non-finite (NaN or infinite scene data "
+                 "in %s?) and counted as black: the affected texels are biased low\n",
+                 static_cast<unsigned long long>(bake.nonFiniteSamples), o.scene.string().c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "bounce-bake: bakes a scene's lightmap, irradiance E in W/m² per texel (by default the "
+      "indirect light; lights marked extras.bounce.bake = \"all\" also their direct light), "
+      "into a bake folder (lightmap.exr, layout.bin, bake.json)."};
+  Options o;
+  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
+  app.add_option("-o,--out", o.out, "bake folder (default: <scene without extension>.bake)");
+  app.add_option("--texel-size", o.texelSize,
+                 "texel edge on the surface, metres (default: from --texel-budget)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--texel-budget", o.texelBudget,
+                 "texels the static surface area should cover when --texel-size is not given")
+      ->check(CLI::Range(16, 1 << 26));
+  app.add_option("--spp", o.spp, "most samples per texel")->check(CLI::Range(16, 1 << 24));
+  app.add_option("--target-error", o.targetError,
+                 "sample a texel until its relative standard error is below this (0: always "
+                 "--spp)")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--max-depth", o.maxDepth, "most diffuse reflections along a path")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--seed", o.seed, "sampler seed (the same seed gives the same lightmap)");
+  app.add_option("--threads", o.threads, "worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024));
+  app.add_option("--backend", o.backend, "ray kernel")->check(CLI::IsMember({"embree", "bvh"}));
+  app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
+  app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bounce-bake: error: %s\n", e.what());
+    return 1;
+  }
+}

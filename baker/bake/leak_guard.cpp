@@ -1,0 +1,137 @@
+#include "bake/leak_guard.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "trace/denormals_flushed.h"
+#include "trace/sampling.h"
+#include "trace/sobol_sampler.h"
+
+namespace bounce {
+
+namespace {
+
+// Hammersley point i of n: (i + ½)/n and the base-2 radical inverse of i.
+glm::vec2 hammersley(int i, int n) {
+  return {(static_cast<float>(i) + 0.5f) / static_cast<float>(n),
+          static_cast<float>(reverseBits(static_cast<uint32_t>(i))) * 0x1p-32f};
+}
+
+bool finite(glm::vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
+
+LeakGuardResult guardAgainstLeaks(const Scene& scene, const WorldGeometry& geometry,
+                                  const RayKernel& kernel, float texelSizeMetres,
+                                  const LeakGuardSettings& settings, TexelCoverage& coverage) {
+  const std::size_t texels = coverage.texelCount();
+  std::vector<uint8_t> keep(coverage.points.size(), 1);
+  std::vector<uint32_t> insideCount(texels, 0), acrossCount(texels, 0), rayCount(texels, 0);
+  const float lift = std::max(settings.liftTexels * texelSizeMetres, 0.0f);
+  const int probes = std::max(settings.probeRays, 1);
+
+  auto isBackFace = [&](const Ray& ray, const Hit& hit) {
+    if (!hit.valid()) return false;
+    const uint32_t material = geometry.triangleMaterial[hit.triangle];
+    if (material < scene.materials.size() && scene.materials[material].doubleSided) return false;
+    return glm::dot(ray.direction, hit.geometricNormal) > 0.0f;
+  };
+
+  auto guardTexel = [&](std::size_t texel) {
+    const uint32_t begin = coverage.first[texel], end = coverage.first[texel + 1];
+    if (begin == end) return;
+    // Inside geometry: most probe rays meet back faces first.
+    for (uint32_t p = begin; p < end; ++p) {
+      const TexelPoint& point = coverage.points[p];
+      const Frame frame(point.shadingNormal);
+      int back = 0;
+      for (int i = 0; i < probes; ++i) {
+        Ray ray;
+        ray.direction = frame.toWorld(sampleCosineHemisphere(hammersley(i, probes)));
+        if (glm::dot(ray.direction, point.geometricNormal) <= 0.0f) continue;
+        ray.origin = offsetRayOrigin(point.position, point.geometricNormal, ray.direction);
+        if (!finite(ray.origin) || !finite(ray.direction)) continue;
+        ++rayCount[texel];
+        if (isBackFace(ray, kernel.intersect(ray))) ++back;
+      }
+      if (static_cast<float>(back) >= settings.insideFraction * static_cast<float>(probes)) {
+        keep[p] = 0;
+        ++insideCount[texel];
+      }
+    }
+    if (!settings.dropAcrossWalls) return;
+    // Across a wall: keep the representative's side.
+    const glm::vec2 centre(
+        static_cast<float>(texel % static_cast<std::size_t>(coverage.width)) + 0.5f,
+        static_cast<float>(texel / static_cast<std::size_t>(coverage.width)) + 0.5f);
+    uint32_t representative = end;
+    float best = std::numeric_limits<float>::infinity();
+    for (uint32_t p = begin; p < end; ++p) {
+      if (!keep[p]) continue;
+      const glm::vec2 d = coverage.points[p].texelPosition - centre;
+      if (glm::dot(d, d) < best) best = glm::dot(d, d), representative = p;
+    }
+    if (representative == end) return;
+    const TexelPoint& rep = coverage.points[representative];
+    const glm::vec3 from = offsetRayOrigin(rep.position, rep.geometricNormal, rep.shadingNormal) +
+                           lift * rep.shadingNormal;
+    for (uint32_t p = begin; p < end; ++p) {
+      if (!keep[p] || p == representative) continue;
+      const TexelPoint& point = coverage.points[p];
+      const glm::vec3 to =
+          offsetRayOrigin(point.position, point.geometricNormal, point.shadingNormal) +
+          lift * point.shadingNormal;
+      Ray ray;
+      ray.origin = from;
+      ray.direction = to - from;
+      ray.tmin = 0.0f;
+      ray.tmax = 1.0f;
+      if (!finite(ray.direction) || !(glm::dot(ray.direction, ray.direction) > 0.0f)) continue;
+      ++rayCount[texel];
+      if (kernel.occluded(ray)) {
+        keep[p] = 0;
+        ++acrossCount[texel];
+      }
+    }
+  };
+
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, texels, 256),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        const DenormalsFlushed flushed;
+                        for (std::size_t t = range.begin(); t != range.end(); ++t) guardTexel(t);
+                      });
+  });
+
+  // Compact the point lists (serial, in texel order: the result does not depend on threads).
+  LeakGuardResult result;
+  result.invalid.assign(texels, 0);
+  std::vector<TexelPoint> points;
+  points.reserve(coverage.points.size());
+  std::vector<uint32_t> first(texels + 1, 0);
+  for (std::size_t texel = 0; texel < texels; ++texel) {
+    first[texel] = static_cast<uint32_t>(points.size());
+    for (uint32_t p = coverage.first[texel]; p < coverage.first[texel + 1]; ++p)
+      if (keep[p]) points.push_back(coverage.points[p]);
+    if (coverage.first[texel + 1] > coverage.first[texel] && first[texel] == points.size())
+      result.invalid[texel] = 1;
+    result.pointsInside += insideCount[texel];
+    result.pointsAcross += acrossCount[texel];
+    result.rays += rayCount[texel];
+  }
+  first[texels] = static_cast<uint32_t>(points.size());
+  coverage.points = std::move(points);
+  coverage.first = std::move(first);
+  return result;
+}
+
+}  // namespace bounce

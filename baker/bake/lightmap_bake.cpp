@@ -1,0 +1,128 @@
+#include "bake/lightmap_bake.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bake/lightmap_filters.h"
+#include "bake/texel_coverage.h"
+#include "trace/sampling.h"
+
+namespace bounce {
+
+namespace {
+
+// Candidate points use a pattern of their own, apart from the irradiance samples'.
+constexpr uint32_t kPointSeedSalt = 0x9e3779b9u;
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
+                          const RayKernel& kernel, const LightmapLayout& layout,
+                          const LightmapBakeSettings& settings) {
+  LightmapBake bake;
+  Stopwatch clock;
+  TexelCoverage coverage = buildTexelCoverage(scene, geometry, layout, settings.pointsPerTexel,
+                                              settings.irradiance.seed ^ kPointSeedSalt);
+  const std::size_t texels = coverage.texelCount();
+  bake.covered.assign(texels, 0);
+  for (std::size_t t = 0; t < texels; ++t) bake.covered[t] = coverage.covered(t) ? 1 : 0;
+  bake.seconds.coverage = clock.lap();
+
+  LeakGuardSettings leak = settings.leak;
+  if (leak.threads == 0) leak.threads = settings.irradiance.threads;
+  const LeakGuardResult guard =
+      guardAgainstLeaks(scene, geometry, kernel, layout.texelSize, leak, coverage);
+  bake.invalid = guard.invalid;
+  bake.pointsInside = guard.pointsInside;
+  bake.pointsAcross = guard.pointsAcross;
+  bake.seconds.leakGuard = clock.lap();
+
+  TexelIrradiance gathered =
+      gatherIrradiance(scene, geometry, kernel, coverage, settings.irradiance);
+  bake.irradiance = std::move(gathered.irradiance);
+  bake.samples = std::move(gathered.samples);
+  bake.relativeError = std::move(gathered.relativeError);
+  bake.rays = guard.rays + gathered.rays;
+  bake.totalSamples = gathered.totalSamples;
+  bake.nonFiniteSamples = gathered.nonFiniteSamples;
+  bake.seconds.irradiance = clock.lap();
+
+  std::vector<uint8_t> valid(texels, 0);
+  std::vector<float> errors;
+  for (std::size_t t = 0; t < texels; ++t) {
+    bake.coveredTexels += bake.covered[t];
+    bake.invalidTexels += bake.invalid[t];
+    valid[t] = coverage.covered(t) ? 1 : 0;
+    if (valid[t] && luminance(bake.irradiance.pixels[t]) > 0.0f)
+      errors.push_back(bake.relativeError[t]);
+  }
+  if (!errors.empty()) {
+    double sum = 0;
+    for (const float e : errors) sum += e;
+    bake.meanRelativeError = static_cast<float>(sum / static_cast<double>(errors.size()));
+    const std::size_t k = std::min(errors.size() - 1, errors.size() * 95 / 100);
+    std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
+    bake.p95RelativeError = errors[k];
+  }
+
+  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
+  if (settings.denoise) {
+    DenoiseGuide guide;
+    guide.position.assign(texels, glm::vec3(0.0f));
+    guide.normal.assign(texels, glm::vec3(0.0f));
+    guide.label.assign(texels, 0);
+    guide.relativeError = bake.relativeError;
+    guide.texelSize = layout.texelSize;
+    for (std::size_t t = 0; t < texels; ++t) {
+      const uint32_t n = coverage.pointCount(t);
+      if (n == 0) continue;
+      glm::vec3 p(0.0f), nrm(0.0f);
+      for (uint32_t k = coverage.first[t]; k < coverage.first[t + 1]; ++k) {
+        p += coverage.points[k].position;
+        nrm += coverage.points[k].shadingNormal;
+      }
+      guide.position[t] = p / static_cast<float>(n);
+      guide.normal[t] = glm::length(nrm) > 0.0f ? glm::normalize(nrm) : nrm;
+      guide.label[t] = labels[t];
+    }
+    denoise(bake.irradiance, guide);
+  }
+  bake.seconds.denoise = clock.lap();
+
+  if (settings.dilate) {
+    // Invalid texels take their chart's valid neighbours' values, then everything grows into
+    // the padding.
+    std::vector<uint8_t> filled = valid;
+    for (std::size_t t = 0; t < texels; ++t) filled[t] |= static_cast<uint8_t>(!bake.covered[t]);
+    while (dilateOnce(bake.irradiance, filled, &labels) > 0) {
+    }
+    filled = valid;
+    for (std::size_t t = 0; t < texels; ++t) filled[t] |= bake.invalid[t];
+    for (int ring = 0; ring < std::max(layout.padding, 2); ++ring)
+      dilateOnce(bake.irradiance, filled);
+  }
+  bake.seconds.dilate = clock.lap();
+
+  if (settings.stitch) {
+    const std::vector<Seam> seams = findSeams(scene, geometry, layout);
+    bake.seams = seams.size();
+    bake.seamMismatch = stitchSeams(bake.irradiance, seams);
+  }
+  bake.seconds.stitch = clock.lap();
+  return bake;
+}
+
+}  // namespace bounce

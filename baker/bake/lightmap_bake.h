@@ -1,0 +1,58 @@
+// The bake, one plain function running its steps in order: texel coverage → leak guard →
+// irradiance → denoise (optional) → fill invalid texels and dilate into the padding → seam
+// stitching. GL-free; bounce-bake and the tests call it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bake/leak_guard.h"
+#include "bake/lightmap_layout.h"
+#include "bake/texel_irradiance.h"
+#include "image/image.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
+
+namespace bounce {
+
+struct LightmapBakeSettings {
+  IrradianceSettings irradiance;
+  LeakGuardSettings leak;
+  int pointsPerTexel = 8;  // candidate sample points per texel
+  bool denoise = false;
+  bool stitch = true;
+  bool dilate = true;
+};
+
+struct BakePhaseSeconds {
+  double coverage = 0, leakGuard = 0, irradiance = 0, denoise = 0, dilate = 0, stitch = 0;
+  double total() const { return coverage + leakGuard + irradiance + denoise + dilate + stitch; }
+};
+
+struct LightmapBake {
+  Image irradiance;                  // W/m², layout.width × layout.height
+  std::vector<uint32_t> samples;     // per texel
+  std::vector<float> relativeError;  // per texel, estimated relative standard error
+  std::vector<uint8_t> covered;      // per texel: some triangle overlaps it
+  std::vector<uint8_t> invalid;      // per texel: covered, every point dropped, filled
+  uint64_t coveredTexels = 0;
+  uint64_t invalidTexels = 0;
+  uint64_t pointsInside = 0, pointsAcross = 0;
+  uint64_t rays = 0;  // leak guard + irradiance
+  uint64_t totalSamples = 0;
+  uint64_t nonFiniteSamples = 0;  // counted as black (texel_irradiance.h)
+  // Estimated error over valid covered texels with E > 0: mean and 95th percentile of the
+  // per-texel relative standard error.
+  float meanRelativeError = 0.0f;
+  float p95RelativeError = 0.0f;
+  std::size_t seams = 0;
+  float seamMismatch = 0.0f;  // after stitching, relative (stitchSeams)
+  BakePhaseSeconds seconds;
+};
+
+LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
+                          const RayKernel& kernel, const LightmapLayout& layout,
+                          const LightmapBakeSettings& settings);
+
+}  // namespace bounce

@@ -1,0 +1,66 @@
+// Image passes on a baked lightmap (texel values E in W/m²; texel space as in
+// engine/bake/lightmap_layout.h, texel (x, y) centred at (x + ½, y + ½)). Pure functions of
+// their inputs, easy to test on small images.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/lightmap_layout.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
+
+namespace bounce {
+
+// Connected components (8-neighbourhood) of the texels with mask ≠ 0, labelled 1, 2, … in
+// scan order; 0 elsewhere. Charts are packed with ≥ 2 texels between them, so each label lies
+// inside one chart.
+std::vector<uint32_t> labelCharts(int width, int height, const std::vector<uint8_t>& mask);
+
+// One round of dilation: every texel with filled == 0 and at least one filled 8-neighbour
+// (of the same label when `labels` is given) takes their mean and becomes filled. Returns how
+// many texels it filled.
+std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
+                       const std::vector<uint32_t>* labels = nullptr);
+
+// Bilinear lookup at texel-space point p (clamped at the borders), the renderer's filter.
+glm::vec3 bilinear(const Image& image, glm::vec2 p);
+
+// A chart border that is one edge in 3D: the same two world points (and normals) at different
+// atlas positions. a0/b0 are the texel-space images of the first world point, a1/b1 of the
+// second.
+struct Seam {
+  glm::vec2 a0, a1;
+  glm::vec2 b0, b1;
+};
+
+// Edges of lightmapped triangles whose endpoints share world positions (to 1e-5 m) and shading
+// normals (cos ≥ 0.99) with another triangle's edge but whose atlas UVs differ.
+std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
+                            const LightmapLayout& layout);
+
+// Adjusts the texels under each seam (least-squares, Gauss–Seidel) so that bilinear lookups at
+// matching points on both sides agree: points every half texel along each seam. Returns the
+// largest remaining |difference| relative to the larger of the two lookups' luminance.
+float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations = 64);
+
+// Largest |bilinear(side a) − bilinear(side b)| (luminance) over the seams' points, W/m².
+float largestSeamJump(const Image& image, const std::vector<Seam>& seams);
+
+// Edge-aware à-trous denoiser (3 passes of a 5×5 B3-spline kernel, steps 1, 2, 4), guided per
+// texel by world position, normal and chart label; never mixes texels of different labels or
+// texels whose luminances differ by more than 4 standard errors (σ = relativeError × value).
+// Texels with label 0 are left alone and never used.
+struct DenoiseGuide {
+  std::vector<glm::vec3> position;  // world, metres (mean of the texel's points)
+  std::vector<glm::vec3> normal;    // unit
+  std::vector<uint32_t> label;      // chart label, 0 = skip
+  std::vector<float> relativeError;
+  float texelSize = 0.0f;  // metres
+};
+void denoise(Image& image, const DenoiseGuide& guide);
+
+}  // namespace bounce

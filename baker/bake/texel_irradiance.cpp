@@ -1,0 +1,156 @@
+#include "bake/texel_irradiance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "trace/denormals_flushed.h"
+#include "trace/path_tracer.h"
+#include "trace/progress_line.h"
+#include "trace/sampling.h"
+#include "trace/sobol_sampler.h"
+
+namespace bounce {
+
+namespace {
+
+constexpr uint32_t kDimPoint = 0;
+constexpr uint32_t kDimBakedDirect = 1;
+constexpr uint32_t kDimIndirect = 5;
+
+// Forwards every query to `inner` and counts it on the calling thread.
+class CountingRayKernel final : public RayKernel {
+ public:
+  explicit CountingRayKernel(const RayKernel& inner) : inner_(inner) {}
+  using RayKernel::intersect;  // the batched forms (one count per ray via the single forms)
+  using RayKernel::occluded;
+  Hit intersect(const Ray& ray) const override {
+    ++count_.local();
+    return inner_.intersect(ray);
+  }
+  bool occluded(const Ray& ray) const override {
+    ++count_.local();
+    return inner_.occluded(ray);
+  }
+  const char* name() const override { return inner_.name(); }
+  uint64_t count() const {
+    uint64_t sum = 0;
+    for (const uint64_t c : count_) sum += c;
+    return sum;
+  }
+
+ private:
+  const RayKernel& inner_;
+  mutable tbb::enumerable_thread_specific<uint64_t> count_{0};
+};
+
+// The scene seen by the baked direct light: only the lights marked bakeDirect, no emission.
+Scene bakedDirectScene(const Scene& scene) {
+  Scene copy = scene;
+  copy.lights.clear();
+  for (const Light& light : scene.lights)
+    if (light.bakeDirect) copy.lights.push_back(light);
+  for (Material& m : copy.materials) m.emission = glm::vec3(0.0f);
+  return copy;
+}
+
+}  // namespace
+
+TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geometry,
+                                 const RayKernel& kernel, const TexelCoverage& coverage,
+                                 const IrradianceSettings& settings) {
+  const CountingRayKernel counting(kernel);
+  TraceSettings trace;
+  trace.maxDepth = settings.maxDepth;
+  trace.seed = settings.seed;
+  trace.paths = PathSet::IndirectOnly;
+  const PathTracer indirect(scene, geometry, counting, trace);
+  const Scene directScene = bakedDirectScene(scene);
+  const bool anyBakedDirect = !directScene.lights.empty();
+  TraceSettings directTrace = trace;
+  directTrace.paths = PathSet::DirectOnly;
+  const PathTracer bakedDirect(directScene, geometry, counting, directTrace);
+
+  const std::size_t texels = coverage.texelCount();
+  TexelIrradiance out;
+  out.irradiance = Image(coverage.width, coverage.height);
+  out.samples.assign(texels, 0);
+  out.relativeError.assign(texels, 0.0f);
+  std::vector<uint32_t> nonFinite(texels, 0);
+  const int maxSpp = std::max(settings.maxSpp, 1);
+  const auto rows = static_cast<uint64_t>(coverage.height);
+  ProgressLine progress("bounce-bake: irradiance", rows, settings.progress);
+
+  auto bakeTexel = [&](std::size_t texel) {
+    const uint32_t begin = coverage.first[texel];
+    const uint32_t points = coverage.first[texel + 1] - begin;
+    if (points == 0) return;
+    SobolSampler sampler(settings.seed, static_cast<uint32_t>(texel));
+    glm::dvec3 sum(0.0);
+    double mean = 0.0, m2 = 0.0;  // Welford on luminance
+    uint32_t n = 0;
+    while (n < static_cast<uint32_t>(maxSpp)) {
+      const uint32_t batchEnd = std::min<uint32_t>(n + kIrradianceBatch, maxSpp);
+      for (; n < batchEnd; ++n) {
+        sampler.startSample(n);
+        sampler.setDimension(kDimPoint);
+        const uint32_t pick = std::min(
+            points - 1, static_cast<uint32_t>(sampler.get1D() * static_cast<float>(points)));
+        const TexelPoint& point = coverage.points[begin + pick];
+        glm::vec3 e(0.0f);
+        if (anyBakedDirect) {
+          sampler.setDimension(kDimBakedDirect);
+          bool bad = false;
+          e += bakedDirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
+          nonFinite[texel] += bad ? 1 : 0;
+        }
+        sampler.setDimension(kDimIndirect);
+        bool bad = false;
+        e += indirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
+        nonFinite[texel] += bad ? 1 : 0;
+        sum += glm::dvec3(e);
+        const double y = luminance(e);
+        const double delta = y - mean;
+        mean += delta / static_cast<double>(n + 1);
+        m2 += delta * (y - mean);
+      }
+      const double variance = n > 1 ? m2 / static_cast<double>(n - 1) : 0.0;
+      const double standardError = std::sqrt(variance / static_cast<double>(n));
+      const float relative = mean > 0.0 ? static_cast<float>(standardError / mean) : 0.0f;
+      out.relativeError[texel] = relative;
+      if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && relative < settings.targetError)
+        break;
+      if (mean <= 0.0 && variance <= 0.0) break;  // nothing reaches this texel
+    }
+    out.samples[texel] = n;
+    out.irradiance.pixels[texel] = glm::vec3(sum / static_cast<double>(n));
+  };
+
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, coverage.height, 1), [&](const tbb::blocked_range<int>& range) {
+          const DenormalsFlushed flushed;
+          for (int y = range.begin(); y != range.end(); ++y) {
+            uint64_t rowSamples = 0;
+            for (int x = 0; x < coverage.width; ++x) {
+              const std::size_t texel = static_cast<std::size_t>(y) * coverage.width + x;
+              bakeTexel(texel);
+              rowSamples += out.samples[texel];
+            }
+            progress.advance(1, rowSamples);
+          }
+        });
+  });
+  for (const uint32_t s : out.samples) out.totalSamples += s;
+  for (const uint32_t n : nonFinite) out.nonFiniteSamples += n;
+  out.rays = counting.count();
+  out.seconds = progress.elapsedSeconds();
+  return out;
+}
+
+}  // namespace bounce

@@ -1,0 +1,58 @@
+// Monte Carlo irradiance E (W/m², per linear-RGB channel) at every covered texel, with an
+// error estimate per texel.
+//
+// What is gathered: E from light that reflected at least once before arriving (PathSet::
+// IndirectOnly: the renderer adds direct light live), plus the direct light of the lights the
+// scene marks as baked (Light::bakeDirect), which the renderer does not draw.
+//
+// Sample s of texel i uses the sampler pattern (seed, i): dimension 0 picks one of the texel's
+// points uniformly, the baked direct light uses dimensions 1–4 and the indirect path 5 on.
+// The texel value is the mean over its samples, so it estimates the mean of E over the texel's
+// covered area. Samples are taken in batches of 16 until, from 32 samples on, the relative standard
+// error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is reached; a
+// texel whose samples are all zero stops after the first batch (error 0). Every texel is computed
+// by one task from its own pattern: the result does not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bake/texel_coverage.h"
+#include "image/image.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
+
+namespace bounce {
+
+struct IrradianceSettings {
+  int maxSpp = 1024;         // samples per texel at most
+  float targetError = 0.0f;  // relative standard error to stop at; 0: always maxSpp
+  int maxDepth = 64;         // most diffuse reflections along a path
+  uint32_t seed = 0;
+  int threads = 0;  // 0: all cores
+  bool progress = false;
+};
+
+inline constexpr int kIrradianceBatch = 16;
+// The error estimate is trusted from two batches on (at 16 samples its own relative
+// uncertainty, 1/√(2(n−1)) ≈ 18%, stops too many texels early on a lucky estimate).
+inline constexpr uint32_t kMinAdaptiveSpp = 32;
+
+struct TexelIrradiance {
+  Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered
+  std::vector<uint32_t> samples;     // per texel
+  std::vector<float> relativeError;  // per texel, estimated relative standard error (0 uncovered)
+  uint64_t rays = 0;                 // closest-hit and occlusion rays traced
+  uint64_t totalSamples = 0;
+  // Samples whose estimate was non-finite (bad scene data) and counted as black: each biases
+  // its texel low (PathTracer::irradiance).
+  uint64_t nonFiniteSamples = 0;
+  double seconds = 0.0;
+};
+
+TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geometry,
+                                 const RayKernel& kernel, const TexelCoverage& coverage,
+                                 const IrradianceSettings& settings);
+
+}  // namespace bounce

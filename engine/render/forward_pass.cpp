@@ -1,0 +1,40 @@
+#include "render/forward_pass.h"
+
+#include "gl/draw_state.h"
+#include "render/texture_units.h"
+
+namespace bounce {
+
+ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
+    : program_(shaderDir / "forward.vert", shaderDir / "forward.frag") {}
+
+void ForwardPass::draw(const GpuScene& scene, const PunctualLights& lights,
+                       const ShadowPass& shadows, const LightmapPass& lightmap, RenderMode mode,
+                       const glm::mat4& viewProjection, gl::RenderTarget& target) {
+  target.bind();
+  gl::clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  gl::setDepthTest(true);
+
+  program_.set("uViewProjection", viewProjection);
+  lights.set(program_);
+  shadows.bind(program_);
+  program_.set("uEmitterCount", scene.emitterCount());
+  program_.set("uEmitters", TextureUnit::kEmitters);
+  program_.set("uAlbedoTexture", TextureUnit::kAlbedo);
+  scene.bindEmitters(TextureUnit::kEmitters);
+  lightmap.bind(program_, mode);
+
+  const std::span<const GpuInstance> instances = scene.instances();
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const GpuInstance& instance = instances[i];
+    lightmap.setInstance(program_, i);
+    const GpuMaterial& material = scene.bindMaterial(instance, program_, TextureUnit::kAlbedo);
+    // glTF: a single-sided surface is invisible from behind (and emits only forwards).
+    gl::setBackFaceCulling(!material.doubleSided, instance.mirrored);
+    scene.draw(instance, program_);
+  }
+  gl::setBackFaceCulling(false);
+  gl::checkErrors("forward pass");
+}
+
+}  // namespace bounce

@@ -1,0 +1,30 @@
+// The lit forward pass: every instance with its own model matrix, shaded by shaders/forward.frag
+// (emission + punctual lights with their shadow maps + area lights) into a linear float target:
+// outgoing radiance, W/(sr·m²).
+#pragma once
+
+#include <filesystem>
+
+#include "gl/render_target.h"
+#include "gl/shader.h"
+#include "render/gpu_scene.h"
+#include "render/lightmap_pass.h"
+#include "render/punctual_lights.h"
+#include "render/shadow_pass.h"
+
+namespace bounce {
+
+class ForwardPass {
+ public:
+  explicit ForwardPass(const std::filesystem::path& shaderDir);
+
+  // Clears `target` to black and draws the scene seen through `viewProjection`.
+  void draw(const GpuScene& scene, const PunctualLights& lights, const ShadowPass& shadows,
+            const LightmapPass& lightmap, RenderMode mode, const glm::mat4& viewProjection,
+            gl::RenderTarget& target);
+
+ private:
+  gl::Program program_;
+};
+
+}  // namespace bounce

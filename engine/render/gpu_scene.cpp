@@ -1,0 +1,194 @@
+#include "render/gpu_scene.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "scene/surface_rules.h"
+
+namespace bounce {
+namespace {
+
+// A mesh's corners in `indices` order; each corner's normal is the mesh's, or the triangle's
+// geometric normal where that one is unusable (surface_rules.h: shadingNormalOr, the rule the
+// path tracer applies per corner too).
+std::vector<gl::Vertex> meshCorners(const Mesh& mesh) {
+  std::vector<gl::Vertex> corners;
+  corners.reserve(mesh.indices.size() / 3 * 3);
+  const auto position = [&](uint32_t v) {
+    return v < mesh.positions.size() ? mesh.positions[v] : glm::vec3(0.0f);
+  };
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 cross = glm::cross(position(mesh.indices[t + 1]) - position(mesh.indices[t]),
+                                       position(mesh.indices[t + 2]) - position(mesh.indices[t]));
+    const float length = glm::length(cross);
+    const glm::vec3 flat = length > 0.0f ? cross / length : glm::vec3(0.0f);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const uint32_t v = mesh.indices[t + c];
+      const glm::vec3 n = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0.0f);
+      const glm::vec2 uv = v < mesh.uv0.size() ? mesh.uv0[v] : glm::vec2(0.0f);
+      corners.push_back({position(v), shadingNormalOr(n, flat), uv});
+    }
+  }
+  return corners;
+}
+
+Box meshBox(const Mesh& mesh) {
+  Box box;
+  for (const glm::vec3& p : mesh.positions) box.add(p);
+  return box;
+}
+
+// The material index a draw uses: the scene's, or the absorber appended after them.
+uint32_t drawnMaterial(const Scene& scene, uint32_t index) {
+  return index < scene.materials.size() ? index : static_cast<uint32_t>(scene.materials.size());
+}
+
+GpuMaterial gpuMaterial(const Material& m, std::size_t textureCount) {
+  GpuMaterial g;
+  g.reflectance = reflectance(m);
+  g.emission = emittedRadiance(m);
+  g.doubleSided = m.doubleSided;
+  if (m.albedoTexture && *m.albedoTexture < textureCount)
+    g.texture = static_cast<int>(*m.albedoTexture);
+  return g;
+}
+
+void placeInstance(GpuInstance& instance, const glm::mat4& transform, const Box& meshBox) {
+  instance.model = transform;
+  const glm::mat3 linear(transform);
+  instance.normalMatrix = glm::transpose(glm::inverse(linear));
+  instance.mirrored = glm::determinant(linear) < 0.0f;
+  instance.worldBox = transformBox(meshBox, transform);
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
+    : scene_(scene), warnings_(&warnings) {
+  for (const Mesh& mesh : scene.meshes) {
+    meshes_.push_back(std::make_unique<gl::MeshBuffer>(meshCorners(mesh)));
+    meshBoxes_.push_back(meshBox(mesh));
+  }
+  for (const Material& m : scene.materials)
+    materials_.push_back(gpuMaterial(m, scene.textures.size()));
+  materials_.push_back(gpuMaterial(materialOf(scene, ~0u), 0));  // the absorber
+
+  instances_.reserve(scene.instances.size());
+  lightmapUv_.resize(scene.instances.size());
+  for (const Instance& instance : scene.instances) {
+    const Mesh& mesh = scene.meshes.at(instance.mesh);
+    GpuInstance gpu{instance.mesh,
+                    drawnMaterial(scene, mesh.material),
+                    instance.mobility,
+                    {},
+                    {},
+                    false,
+                    {},
+                    gl::VertexArray(*meshes_[instance.mesh])};
+    placeInstance(gpu, instance.transform, meshBoxes_[instance.mesh]);
+    instances_.push_back(std::move(gpu));
+  }
+
+  textures_.reserve(scene.textures.size());
+  for (const Texture& texture : scene.textures) {
+    if (texture.width > 0 && texture.height > 0 &&
+        texture.texels.size() ==
+            static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height)) {
+      textures_.emplace_back(texture.width, texture.height, texture.texels, gl::Filter::Linear);
+    } else {
+      warnings.push_back("texture '" + texture.name + "' has no texels; it is drawn white");
+      const glm::vec3 white(1.0f);
+      textures_.emplace_back(1, 1, std::span(&white, 1), gl::Filter::Nearest);
+    }
+  }
+  uploadEmitters();
+  if (emitterCount_ > 256)
+    warnings.push_back(std::to_string(emitterCount_) +
+                       " emissive triangles: each fragment loops over all of them (slow)");
+}
+
+GpuScene::~GpuScene() = default;
+
+void GpuScene::uploadEmitters() {
+  // World-space emitter triangles (winding flipped for mirrored instances, so the front face
+  // stays the emitting side), 4 texels each: see shaders/area_light.glsl.
+  std::vector<glm::vec4> table;
+  for (const GpuInstance& instance : instances_) {
+    const GpuMaterial& material = materials_[instance.material];
+    if (material.emission == glm::vec3(0.0f)) continue;
+    const Mesh& mesh = scene_.meshes[instance.mesh];
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      glm::vec3 p[3];
+      for (int c = 0; c < 3; ++c) {
+        const uint32_t v = mesh.indices[t + static_cast<std::size_t>(c)];
+        p[c] = v < mesh.positions.size()
+                   ? glm::vec3(instance.model * glm::vec4(mesh.positions[v], 1.0f))
+                   : glm::vec3(0.0f);
+      }
+      if (instance.mirrored) std::swap(p[1], p[2]);
+      if (!isEmitterTriangle(materialOf(scene_, mesh.material),
+                             glm::cross(p[1] - p[0], p[2] - p[0])))
+        continue;
+      for (const glm::vec3& corner : p) table.emplace_back(corner, 0.0f);
+      table.emplace_back(material.emission, material.doubleSided ? 1.0f : 0.0f);
+    }
+  }
+  const bool first = !emitters_.has_value();
+  emitterCount_ = static_cast<int>(table.size() / 4);
+  if (emitterCount_ > gl::Texture2D::maxSize()) {
+    if (first)
+      warnings_->push_back(std::to_string(emitterCount_) + " emissive triangles; only the first " +
+                           std::to_string(gl::Texture2D::maxSize()) + " light the scene");
+    emitterCount_ = gl::Texture2D::maxSize();
+    table.resize(static_cast<std::size_t>(emitterCount_) * 4);
+  }
+  if (table.empty()) table.assign(4, glm::vec4(0.0f));  // samplers need a texture
+  emitters_.reset();
+  emitters_.emplace(4, std::max(emitterCount_, 1), table);
+}
+
+void GpuScene::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
+  GpuInstance& instance = instances_.at(index);
+  placeInstance(instance, transform, meshBoxes_[instance.mesh]);
+  if (materials_[instance.material].emission != glm::vec3(0.0f)) uploadEmitters();
+}
+
+void GpuScene::setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv) {
+  GpuInstance& instance = instances_.at(index);
+  if (cornerUv.empty()) {
+    instance.vertexArray.setLightmapUv(nullptr);
+    lightmapUv_[index].reset();
+    return;
+  }
+  auto attribute = std::make_unique<gl::CornerAttribute>(cornerUv);
+  instance.vertexArray.setLightmapUv(attribute.get());
+  lightmapUv_[index] = std::move(attribute);
+}
+
+Box GpuScene::bounds() const {
+  Box box;
+  for (const GpuInstance& instance : instances_) {
+    if (instance.worldBox.empty()) continue;
+    box.add(instance.worldBox.lo);
+    box.add(instance.worldBox.hi);
+  }
+  return box;
+}
+
+void GpuScene::draw(const GpuInstance& instance, gl::Program& program) const {
+  program.set("uModel", instance.model);
+  program.set("uNormalMatrix", instance.normalMatrix);
+  instance.vertexArray.draw();
+}
+
+const GpuMaterial& GpuScene::bindMaterial(const GpuInstance& instance, gl::Program& program,
+                                          int albedoUnit) const {
+  const GpuMaterial& m = materials_[instance.material];
+  program.set("uAlbedo", m.reflectance);
+  program.set("uEmission", m.emission);
+  program.set("uHasAlbedoTexture", m.texture >= 0 ? 1 : 0);
+  if (m.texture >= 0) textures_[static_cast<std::size_t>(m.texture)].bind(albedoUnit);
+  return m;
+}
+
+}  // namespace bounce

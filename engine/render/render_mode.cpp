@@ -1,0 +1,45 @@
+#include "render/render_mode.h"
+
+#include <array>
+
+namespace bounce {
+namespace {
+
+constexpr std::array kModes = {RenderMode::Full, RenderMode::Direct, RenderMode::Indirect,
+                               RenderMode::Lightmap, RenderMode::Charts};
+
+}  // namespace
+
+std::string_view renderModeName(RenderMode mode) {
+  switch (mode) {
+    case RenderMode::Direct:
+      return "direct";
+    case RenderMode::Full:
+      return "full";
+    case RenderMode::Indirect:
+      return "indirect";
+    case RenderMode::Lightmap:
+      return "lightmap";
+    case RenderMode::Charts:
+      return "charts";
+  }
+  return "direct";
+}
+
+bool renderModeNeedsBake(RenderMode mode) {
+  return mode != RenderMode::Direct;
+}
+
+std::optional<RenderMode> parseRenderMode(std::string_view name) {
+  for (const RenderMode mode : kModes)
+    if (renderModeName(mode) == name) return mode;
+  return std::nullopt;
+}
+
+std::vector<std::string> renderModeNames() {
+  std::vector<std::string> names;
+  for (const RenderMode mode : kModes) names.emplace_back(renderModeName(mode));
+  return names;
+}
+
+}  // namespace bounce

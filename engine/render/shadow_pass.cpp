@@ -1,0 +1,45 @@
+#include "render/shadow_pass.h"
+
+#include "gl/draw_state.h"
+#include "render/texture_units.h"
+
+namespace bounce {
+
+ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
+                       const ShadowSettings& settings, const std::filesystem::path& shaderDir,
+                       std::vector<std::string>& warnings)
+    : settings_(settings),
+      depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag"),
+      lightSlot_(lights.size(), -1),
+      spot_(settings),
+      point_(settings) {
+  if (!settings.enabled) return;
+  const Box sceneBox = scene.bounds();
+  int unshadowed = 0;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const Light& light = lights.light(i);
+    if (light.type == LightType::Spot) lightSlot_[i] = spot_.add(light, sceneBox);
+    if (light.type == LightType::Point) lightSlot_[i] = point_.add(light, sceneBox);
+    if (light.type != LightType::Directional && lightSlot_[i] < 0) ++unshadowed;
+  }
+  if (unshadowed > 0)
+    warnings.push_back(std::to_string(unshadowed) + " point/spot lights beyond the first " +
+                       std::to_string(kMaxSpotShadows) + " spot and " +
+                       std::to_string(kMaxPointShadows) + " point lights cast no shadows");
+}
+
+void ShadowPass::render(const GpuScene& scene, const Box& visibleBox) {
+  if (!settings_.enabled) return;
+  spot_.render(scene, visibleBox, depth_, target_);
+  point_.render(scene, visibleBox, depth_, target_);
+  gl::checkErrors("shadow pass");
+}
+
+void ShadowPass::bind(gl::Program& forward) const {
+  forward.set("uLightShadow", std::span<const int>(lightSlot_));
+  forward.set("uShadowFilter", settings_.filter == ShadowFilter::Poisson ? 1 : 0);
+  spot_.bind(forward);
+  point_.bind(forward);
+}
+
+}  // namespace bounce

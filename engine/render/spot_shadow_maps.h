@@ -1,0 +1,36 @@
+// Spot-light shadows: one perspective map per spot light along its axis, covering its outer
+// cone, storing the distance to the light (shaders/shadow_spot.glsl reads them).
+#pragma once
+
+#include <vector>
+
+#include "gl/depth_texture.h"
+#include "gl/shader.h"
+#include "render/gpu_scene.h"
+#include "render/shadow_map_geometry.h"
+
+namespace bounce {
+
+class SpotShadowMaps {
+ public:
+  explicit SpotShadowMaps(const ShadowSettings& settings) : settings_(settings) {}
+
+  // Gives `light` (a spot) a map; returns its slot, or −1 when all kMaxSpotShadows are taken.
+  int add(const Light& light, const Box& sceneBox);
+  // Renders the maps whose frustum reaches `visibleBox` (world box of what the camera sees).
+  void render(const GpuScene& scene, const Box& visibleBox, gl::Program& depthProgram,
+              gl::DepthTarget& target);
+  // Binds the maps and sets uSpotShadow* on the forward program.
+  void bind(gl::Program& forward) const;
+
+ private:
+  struct Map {
+    Light light;
+    gl::DepthTexture2D texture;
+    ShadowView view;
+  };
+  ShadowSettings settings_;
+  std::vector<Map> maps_;
+};
+
+}  // namespace bounce

@@ -1,0 +1,23 @@
+// Texture units of the lit forward pass, one table (GL 3.3 guarantees 16 in a fragment shader).
+// Every sampler uniform is pointed at its own unit on every draw: two samplers of different
+// types on one unit are a GL error even when neither is read.
+#pragma once
+
+namespace bounce {
+
+struct TextureUnit {
+  static constexpr int kAlbedo = 0;             // sampler2D: material base colour
+  static constexpr int kEmitters = 1;           // sampler2D: area-light table (area_light.glsl)
+  static constexpr int kSpotShadow0 = 2;        // sampler2DShadow × kMaxSpotShadows (2..5)
+  static constexpr int kPointShadow0 = 6;       // samplerCubeShadow × kMaxPointShadows (6..7)
+  static constexpr int kDirectionalShadow = 8;  // reserved: cascades (shadow_directional.glsl)
+  static constexpr int kAreaShadow0 = 9;        // reserved: area-light maps (shadow_area.glsl)
+  static constexpr int kLightmap = 12;          // sampler2D: baked irradiance (lightmap.glsl)
+  static constexpr int kLightmapCharts = 13;    // sampler2D: chart colours (lightmap.glsl)
+};
+
+// Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.
+constexpr int kMaxSpotShadows = 4;
+constexpr int kMaxPointShadows = 2;
+
+}  // namespace bounce

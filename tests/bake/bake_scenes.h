@@ -1,0 +1,40 @@
+// Scenes and lightmap layouts for the baker's tests, built in code apart from the atlas: every
+// instance is one rectangle (tests/trace/test_scenes.h addQuad) laid out by hand, so a texel's
+// world position is known exactly.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/lightmap_bake.h"
+#include "bake/lightmap_layout.h"
+#include "test_scenes.h"
+
+namespace bounce::test {
+
+// Where a rectangle instance lies in the atlas: texel-space point t maps to the world point
+// corner + (t − origin).x · texelSize · uAxis + (t − origin).y · texelSize · vAxis.
+struct QuadChart {
+  uint32_t instance = 0;
+  glm::vec2 origin{0.0f};  // texel space
+  glm::vec3 corner{0.0f}, uAxis{0.0f}, vAxis{0.0f};
+  glm::vec2 extent{0.0f};  // texels
+};
+
+struct QuadAtlas {
+  LightmapLayout layout;
+  std::vector<QuadChart> charts;
+  // World point of texel (x, y)'s centre, or false when no chart's rectangle holds it.
+  bool texelCentre(int x, int y, glm::vec3& world, uint32_t& instance) const;
+};
+
+// Shelf-packs every rectangle instance (p0 p1 p2 p3 with indices 0 1 2 0 2 3; u along p1 − p0,
+// v along p3 − p0) at `texelSize` metres per texel, `padding` texels apart, charts starting
+// on whole texels, in an atlas `width` texels wide.
+QuadAtlas quadAtlas(const Scene& scene, float texelSize, int width = 64, int padding = 2);
+
+// A default bake with `threads`, fixed spp, no denoiser.
+LightmapBakeSettings testBakeSettings(int spp, uint32_t seed = 7, int threads = 0);
+
+}  // namespace bounce::test

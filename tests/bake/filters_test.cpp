@@ -1,0 +1,111 @@
+// Dilation, chart labels, seam stitching and the denoiser on small images.
+#include <gtest/gtest.h>
+
+#include "bake/lightmap_filters.h"
+#include "trace/sampling.h"
+
+namespace bounce {
+namespace {
+
+TEST(Dilation, FillsOneRingWithTheMeanOfFilledNeighbours) {
+  Image image(5, 5);
+  std::vector<uint8_t> filled(25, 0);
+  image.at(1, 2) = glm::vec3(2.0f);
+  image.at(3, 2) = glm::vec3(4.0f);
+  filled[image.index(1, 2)] = filled[image.index(3, 2)] = 1;
+  EXPECT_EQ(dilateOnce(image, filled), 13u);  // two 3×3 rings sharing column 2's three texels
+  EXPECT_FLOAT_EQ(image.at(2, 2).x, 3.0f);    // both neighbours
+  EXPECT_FLOAT_EQ(image.at(0, 2).x, 2.0f);
+  EXPECT_FLOAT_EQ(image.at(4, 1).x, 4.0f);
+  EXPECT_FALSE(filled[image.index(0, 0)]);  // two steps away: next round
+  dilateOnce(image, filled);
+  EXPECT_TRUE(filled[image.index(0, 0)]);
+}
+
+TEST(Dilation, LabelsKeepChartsApart) {
+  // Texel 1 touches a filled texel of its own chart (1) and one of another chart (5).
+  Image image(3, 1);
+  std::vector<uint8_t> filled = {1, 0, 1};
+  image.at(0, 0) = glm::vec3(1.0f);
+  image.at(2, 0) = glm::vec3(5.0f);
+  const std::vector<uint32_t> labels = {1, 1, 2};
+  dilateOnce(image, filled, &labels);
+  EXPECT_FLOAT_EQ(image.at(1, 0).x, 1.0f);  // not (1 + 5)/2
+}
+
+TEST(ChartLabels, ComponentsSeparatedByPadding) {
+  const std::vector<uint8_t> mask = {1, 1, 0, 0, 1,  //
+                                     0, 1, 0, 0, 1,  //
+                                     0, 0, 0, 1, 0};
+  const auto labels = labelCharts(5, 3, mask);
+  EXPECT_EQ(labels[0], labels[6]);
+  EXPECT_EQ(labels[4], labels[13]);  // diagonal neighbours join
+  EXPECT_NE(labels[0], labels[4]);
+  EXPECT_EQ(labels[2], 0u);
+}
+
+// Two charts of one flat strip, cut along a 3D edge: chart A fills columns 0–2 (value 1),
+// chart B columns 6–8 (value 3). The cut is A's right border x = 3 and B's left border x = 6.
+TEST(SeamStitching, BilinearLookupsAgreeAcrossTheSeam) {
+  Image image(9, 4);
+  std::vector<uint8_t> filled(36, 0);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 3; ++x) image.at(x, y) = glm::vec3(1.0f), filled[image.index(x, y)] = 1;
+    for (int x = 6; x < 9; ++x) image.at(x, y) = glm::vec3(3.0f), filled[image.index(x, y)] = 1;
+  }
+  std::vector<uint32_t> labels(36);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 9; ++x) labels[image.index(x, y)] = x < 5 ? 1 : 2;
+  dilateOnce(image, filled, &labels);
+  const std::vector<Seam> seams = {{{3, 0}, {3, 4}, {6, 0}, {6, 4}}};
+  const float before = largestSeamJump(image, seams);
+  EXPECT_NEAR(before, luminance(glm::vec3(2.0f)), 1e-5f);
+  const float mismatch = stitchSeams(image, seams);
+  EXPECT_LT(mismatch, 1e-3f);
+  EXPECT_LT(largestSeamJump(image, seams), 1e-3f * luminance(glm::vec3(3.0f)));
+  // The two sides meet in between, and texels away from the seam are untouched.
+  const float met = bilinear(image, {3.0f, 2.0f}).x;
+  EXPECT_GT(met, 1.5f);
+  EXPECT_LT(met, 2.5f);
+  EXPECT_FLOAT_EQ(image.at(0, 1).x, 1.0f);
+  EXPECT_FLOAT_EQ(image.at(8, 1).x, 3.0f);
+}
+
+TEST(Denoiser, SmoothsNoiseWithinAChartButNeverAcrossCharts) {
+  // Two 8×8 charts side by side (no padding, to provoke mixing): noisy 1 ± 0.2 and exact 10.
+  const int w = 16, h = 8;
+  Image image(w, h);
+  DenoiseGuide guide;
+  guide.texelSize = 0.1f;
+  guide.position.resize(w * h);
+  guide.normal.assign(w * h, glm::vec3(0, 0, 1));
+  guide.label.resize(w * h);
+  guide.relativeError.resize(w * h);
+  double noisy = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = image.index(x, y);
+      guide.position[i] = glm::vec3(0.1f * x, 0.1f * y, 0);
+      guide.label[i] = x < 8 ? 1 : 2;
+      const float v = x < 8 ? 1.0f + 0.2f * (((x * 7 + y * 3) % 5) - 2) / 2.0f : 10.0f;
+      image.pixels[i] = glm::vec3(v);
+      guide.relativeError[i] = x < 8 ? 0.2f : 0.5f;  // loose enough to mix without labels
+      if (x < 8) noisy += (v - 1.0) * (v - 1.0);
+    }
+  }
+  denoise(image, guide);
+  double after = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const float v = image.at(x, y).x;
+      if (x < 8)
+        after += (v - 1.0) * (v - 1.0);
+      else
+        EXPECT_FLOAT_EQ(v, 10.0f) << x << "," << y;  // no light from the other chart
+    }
+  }
+  EXPECT_LT(after, 0.25 * noisy);
+}
+
+}  // namespace
+}  // namespace bounce

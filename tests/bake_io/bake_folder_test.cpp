@@ -1,0 +1,416 @@
+// The bake folder: round trip, the scene hash, every rejection of readBake, and the atomic
+// replace of writeBake.
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+
+#include <bit>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
+#include "image/image_io.h"
+#include "scene/load_error.h"
+
+namespace fs = std::filesystem;
+using namespace bounce;
+
+namespace {
+
+// Two meshes (a quad of 2 triangles, a single triangle), three instances: the quad static, the
+// triangle dynamic, the triangle again static at another scale.
+Scene testScene() {
+  Scene s;
+  s.source = "test-scene.gltf";
+  Mesh quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+  quad.normals.assign(4, {0, 1, 0});
+  quad.indices = {0, 2, 1, 0, 3, 2};
+  Mesh tri;
+  tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  tri.normals.assign(3, {0, 0, 1});
+  tri.indices = {0, 1, 2};
+  tri.material = 1;
+  s.meshes = {quad, tri};
+  Material white;
+  white.albedo = glm::vec3(0.8f);
+  Material red;
+  red.albedo = {0.7f, 0.1f, 0.1f};
+  red.albedoTexture = 0;
+  s.materials = {white, red};
+  Texture t;
+  t.width = 2;
+  t.height = 1;
+  t.texels = {{1, 1, 1}, {0.5f, 0.5f, 0.5f}};
+  s.textures = {t};
+  s.instances = {{"floor", 0, glm::mat4(1.0f), Mobility::Static},
+                 {"mover", 1, glm::mat4(1.0f), Mobility::Dynamic},
+                 {"big", 1, glm::mat4(2.0f), Mobility::Static}};
+  s.instances[2].transform[3] = {0, 0, 0, 1};
+  Light l;
+  l.position = {0, 2, 0};
+  l.intensity = {10, 10, 10};
+  s.lights = {l};
+  return s;
+}
+
+Bake testBake(const Scene& scene) {
+  Bake b;
+  b.layout.width = 16;
+  b.layout.height = 8;
+  b.layout.texelSize = 0.125f;
+  b.layout.padding = 2;
+  b.layout.chartCount = 3;
+  b.layout.utilisation = 0.4375f;
+  InstanceLightmapUv floor{0, {}};
+  for (int i = 0; i < 6; ++i) floor.cornerUv.push_back({0.0625f * i + 1e-7f, 1.0f / (3 + i)});
+  InstanceLightmapUv big{2, {{0.5f, 0.5f}, {0.9999999f, 0.5f}, {0.5f, 0.0000001f}}};
+  b.layout.instances = {floor, big};
+  b.irradiance = Image(16, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x)
+      b.irradiance.at(x, y) = {x * 0.3f + 1e-30f, y * 123.456f, 1.0f / (1 + x + 7 * y)};
+  b.irradiance.at(0, 0) = {3.0e38f, 1.17549435e-38f, 0.0f};
+  nlohmann::json manifest = {{"formatVersion", kBakeFormatVersion},
+                             {"sceneHash", sceneContentHash(scene)},
+                             {"holds", "indirect"}};
+  b.manifestJson = manifest.dump(2);
+  return b;
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("bounce_bake_io_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<unsigned char> readBytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const fs::path& file, const std::vector<unsigned char>& bytes) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+}
+
+// readBake's message, or "" when it succeeds.
+std::string readError(const fs::path& dir, const Scene& scene) {
+  try {
+    readBake(dir, scene);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool bitEqual(float a, float b) {
+  return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
+}
+
+void expectSameBake(const Bake& a, const Bake& b) {
+  EXPECT_EQ(a.manifestJson, b.manifestJson);
+  EXPECT_EQ(a.layout.width, b.layout.width);
+  EXPECT_EQ(a.layout.height, b.layout.height);
+  EXPECT_TRUE(bitEqual(a.layout.texelSize, b.layout.texelSize));
+  EXPECT_EQ(a.layout.padding, b.layout.padding);
+  EXPECT_EQ(a.layout.chartCount, b.layout.chartCount);
+  EXPECT_TRUE(bitEqual(a.layout.utilisation, b.layout.utilisation));
+  ASSERT_EQ(a.layout.instances.size(), b.layout.instances.size());
+  for (std::size_t i = 0; i < a.layout.instances.size(); ++i) {
+    EXPECT_EQ(a.layout.instances[i].instance, b.layout.instances[i].instance);
+    ASSERT_EQ(a.layout.instances[i].cornerUv.size(), b.layout.instances[i].cornerUv.size());
+    for (std::size_t k = 0; k < a.layout.instances[i].cornerUv.size(); ++k) {
+      EXPECT_TRUE(
+          bitEqual(a.layout.instances[i].cornerUv[k].x, b.layout.instances[i].cornerUv[k].x));
+      EXPECT_TRUE(
+          bitEqual(a.layout.instances[i].cornerUv[k].y, b.layout.instances[i].cornerUv[k].y));
+    }
+  }
+  ASSERT_EQ(a.irradiance.width, b.irradiance.width);
+  ASSERT_EQ(a.irradiance.height, b.irradiance.height);
+  for (std::size_t i = 0; i < a.irradiance.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_TRUE(bitEqual(a.irradiance.pixels[i][c], b.irradiance.pixels[i][c])) << i << " " << c;
+}
+
+int countEntries(const fs::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(BakeFolder, RoundTripIsBitExact) {
+  const Scene scene = testScene();
+  const Bake bake = testBake(scene);
+  const fs::path dir = freshDir("roundtrip") / "scene.bake";
+  writeBake(dir, bake);
+  EXPECT_TRUE(fs::exists(dir / "bake.json"));
+  EXPECT_TRUE(fs::exists(dir / "lightmap.exr"));
+  EXPECT_TRUE(fs::exists(dir / "layout.bin"));
+  expectSameBake(bake, readBake(dir, scene));
+  // Nothing but the folder itself is left next to it.
+  EXPECT_EQ(countEntries(dir.parent_path()), 1);
+}
+
+TEST(BakeFolder, RewriteReplacesTheWholeFolder) {
+  const Scene scene = testScene();
+  const fs::path dir = freshDir("rewrite") / "scene.bake";
+  writeBake(dir, testBake(scene));
+  std::ofstream(dir / "stale-file") << "from an older bake";
+  Bake second = testBake(scene);
+  second.irradiance.at(3, 3) = {42, 43, 44};
+  writeBake(dir, second);
+  expectSameBake(second, readBake(dir, scene));
+  EXPECT_FALSE(fs::exists(dir / "stale-file"));
+  EXPECT_EQ(countEntries(dir.parent_path()), 1);
+}
+
+// A write that fails half-way (the lightmap hits the file size limit after bake.json and
+// layout.bin were written) leaves the previous bake readable and no temporary folder behind.
+TEST(BakeFolder, FailedWriteLeavesThePreviousBake) {
+  const Scene scene = testScene();
+  const fs::path dir = freshDir("atomic") / "scene.bake";
+  const Bake first = testBake(scene);
+  writeBake(dir, first);
+
+  Bake big = testBake(scene);
+  big.layout.width = big.layout.height = 256;
+  big.irradiance = Image(256, 256);
+  uint32_t bits = 12345;  // an xorshift pattern: incompressible, so the EXR stays large
+  for (glm::vec3& p : big.irradiance.pixels)
+    for (int c = 0; c < 3; ++c) {
+      bits ^= bits << 13, bits ^= bits >> 17, bits ^= bits << 5;
+      p[c] = std::bit_cast<float>(0x3f800000u | (bits >> 9));
+    }
+
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of a signal
+  rlimit small = saved;
+  small.rlim_cur = 16 * 1024;  // the manifest and layout fit, the ~700 KB lightmap does not
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    writeBake(dir, big);
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previousHandler);
+
+  EXPECT_NE(message.find("lightmap.exr"), std::string::npos) << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;
+  expectSameBake(first, readBake(dir, scene));
+  EXPECT_EQ(countEntries(dir.parent_path()), 1);
+}
+
+TEST(BakeFolder, WriterRefusesAnIncompleteManifestOrAMismatchedLightmap) {
+  const Scene scene = testScene();
+  const fs::path dir = freshDir("writer") / "scene.bake";
+  const auto writeError = [&](const Bake& b) -> std::string {
+    try {
+      writeBake(dir, b);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Bake b = testBake(scene);
+  b.manifestJson = R"({"formatVersion": 1})";
+  EXPECT_NE(writeError(b).find("sceneHash"), std::string::npos);
+  b.manifestJson = R"({"formatVersion": 99, "sceneHash": "x"})";
+  EXPECT_NE(writeError(b).find("formatVersion 99"), std::string::npos);
+  b = testBake(scene);
+  b.irradiance = Image(8, 8);
+  EXPECT_NE(writeError(b).find("does not match"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir));
+  EXPECT_EQ(countEntries(dir.parent_path()), 0);
+}
+
+TEST(SceneContentHash, SameContentSameHashAnyChangeAnotherHash) {
+  const Scene base = testScene();
+  const std::string h = sceneContentHash(base);
+  EXPECT_EQ(h.size(), 16u);
+  EXPECT_EQ(h, sceneContentHash(testScene()));
+
+  // What does not change light does not change the hash.
+  Scene same = testScene();
+  same.cameras.push_back(Camera{});
+  same.warnings.push_back("ignored emissiveTexture");
+  same.source = "elsewhere.gltf";
+  same.meshes[0].name = "renamed";
+  same.instances[0].name = "renamed";
+  EXPECT_EQ(h, sceneContentHash(same));
+
+  const std::vector<std::pair<const char*, std::function<void(Scene&)>>> changes = {
+      {"vertex position", [](Scene& s) { s.meshes[0].positions[2].y += 1e-6f; }},
+      {"shading normal",
+       [](Scene& s) {
+         s.meshes[1].normals[0] = {0, 0.6f, 0.8f};
+       }},
+      {"material uv",
+       [](Scene& s) {
+         s.meshes[0].uv0.assign(4, {0, 0});
+       }},
+      {"index order", [](Scene& s) { std::swap(s.meshes[0].indices[1], s.meshes[0].indices[2]); }},
+      {"mesh material", [](Scene& s) { s.meshes[0].material = 1; }},
+      {"albedo", [](Scene& s) { s.materials[0].albedo.g = 0.81f; }},
+      {"albedo texture", [](Scene& s) { s.materials[1].albedoTexture.reset(); }},
+      {"emission",
+       [](Scene& s) {
+         s.materials[0].emission = {1, 1, 1};
+       }},
+      {"double sided", [](Scene& s) { s.materials[0].doubleSided = true; }},
+      {"texel", [](Scene& s) { s.textures[0].texels[1].b = 0.25f; }},
+      {"instance transform", [](Scene& s) { s.instances[0].transform[3].x = 0.5f; }},
+      {"instance mesh", [](Scene& s) { s.instances[0].mesh = 1; }},
+      {"mobility", [](Scene& s) { s.instances[1].mobility = Mobility::Static; }},
+      {"extra instance", [](Scene& s) { s.instances.push_back(s.instances[0]); }},
+      {"light intensity", [](Scene& s) { s.lights[0].intensity.r = 11; }},
+      {"light type", [](Scene& s) { s.lights[0].type = LightType::Spot; }},
+      {"light cone", [](Scene& s) { s.lights[0].outerConeAngle = 0.5f; }},
+      {"no light", [](Scene& s) { s.lights.clear(); }},
+      {"light baked", [](Scene& s) { s.lights[0].bakeDirect = true; }},
+  };
+  for (const auto& [what, change] : changes) {
+    Scene s = testScene();
+    change(s);
+    EXPECT_NE(h, sceneContentHash(s)) << what;
+  }
+}
+
+// ---- every rejection names the file and the reason
+
+class BakeRejection : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = freshDir(::testing::UnitTest::GetInstance()->current_test_info()->name()) / "s.bake";
+    writeBake(dir_, testBake(scene_));
+    ASSERT_EQ(readError(dir_, scene_), "");
+  }
+  void expectRefused(const std::string& file, const std::string& reason) {
+    const std::string message = readError(dir_, scene_);
+    EXPECT_NE(message.find((dir_ / file).string()), std::string::npos) << message;
+    EXPECT_NE(message.find(reason), std::string::npos) << message;
+  }
+  void rewriteLayout(std::function<void(std::vector<unsigned char>&)> edit) {
+    std::vector<unsigned char> bytes = readBytes(dir_ / "layout.bin");
+    edit(bytes);
+    writeBytes(dir_ / "layout.bin", bytes);
+  }
+  // Writes a bake whose layout was edited (the writer does not know the scene).
+  void writeWithLayout(std::function<void(LightmapLayout&)> edit) {
+    Bake b = testBake(scene_);
+    edit(b.layout);
+    writeBake(dir_, b);
+  }
+  Scene scene_ = testScene();
+  fs::path dir_;
+};
+
+TEST_F(BakeRejection, MissingFolder) {
+  const std::string message = readError(dir_.parent_path() / "nothing.bake", scene_);
+  EXPECT_NE(message.find("nothing.bake: no bake folder"), std::string::npos) << message;
+}
+
+TEST_F(BakeRejection, MissingFiles) {
+  for (const char* file : {"bake.json", "layout.bin", "lightmap.exr"}) {
+    writeBake(dir_, testBake(scene_));
+    fs::remove(dir_ / file);
+    expectRefused(file, "missing");
+  }
+}
+
+TEST_F(BakeRejection, ManifestNotJson) {
+  std::ofstream(dir_ / "bake.json") << "{\"formatVersion\": 1,";
+  expectRefused("bake.json", "not JSON");
+}
+
+TEST_F(BakeRejection, ManifestFormatVersion) {
+  std::ofstream(dir_ / "bake.json") << nlohmann::json{{"formatVersion", kBakeFormatVersion + 1},
+                                                      {"sceneHash", sceneContentHash(scene_)}};
+  expectRefused("bake.json", "format version " + std::to_string(kBakeFormatVersion + 1) +
+                                 ", this build reads version " +
+                                 std::to_string(kBakeFormatVersion));
+}
+
+TEST_F(BakeRejection, AnotherScene) {
+  scene_.materials[0].albedo = glm::vec3(0.5f);
+  expectRefused("bake.json", "bake made for another scene: rebake");
+}
+
+TEST_F(BakeRejection, LayoutBadMagic) {
+  rewriteLayout([](auto& bytes) { bytes[0] = 'X'; });
+  expectRefused("layout.bin", "bad magic");
+}
+
+TEST_F(BakeRejection, LayoutFormatVersion) {
+  rewriteLayout([](auto& bytes) { bytes[8] = static_cast<unsigned char>(kBakeFormatVersion + 1); });
+  expectRefused("layout.bin", "format version " + std::to_string(kBakeFormatVersion + 1));
+}
+
+TEST_F(BakeRejection, LayoutTruncatedAnywhere) {
+  const std::vector<unsigned char> whole = readBytes(dir_ / "layout.bin");
+  for (std::size_t size = 0; size < whole.size(); ++size) {
+    writeBytes(dir_ / "layout.bin", {whole.begin(), whole.begin() + static_cast<long>(size)});
+    expectRefused("layout.bin", "truncated");
+  }
+}
+
+TEST_F(BakeRejection, LayoutTrailingBytes) {
+  rewriteLayout([](auto& bytes) { bytes.push_back(0); });
+  expectRefused("layout.bin", "1 bytes after the last instance region");
+}
+
+TEST_F(BakeRejection, LayoutHugeCountIsTruncationNotAnAllocation) {
+  rewriteLayout([](auto& bytes) { std::memset(bytes.data() + 36, 0xff, 4); });  // instance count
+  expectRefused("layout.bin", "truncated");
+}
+
+TEST_F(BakeRejection, InstanceOutOfRange) {
+  writeWithLayout([](LightmapLayout& l) { l.instances[1].instance = 3; });
+  expectRefused("layout.bin", "instance 3 out of range (the scene has 3 instances)");
+}
+
+TEST_F(BakeRejection, DynamicInstanceHasARegion) {
+  writeWithLayout([](LightmapLayout& l) { l.instances[1].instance = 1; });
+  expectRefused("layout.bin", "is dynamic");
+}
+
+TEST_F(BakeRejection, RegionsOutOfOrder) {
+  writeWithLayout([](LightmapLayout& l) { std::swap(l.instances[0], l.instances[1]); });
+  expectRefused("layout.bin", "not in increasing order");
+}
+
+TEST_F(BakeRejection, CornerCountIsNotThreePerTriangle) {
+  writeWithLayout([](LightmapLayout& l) { l.instances[0].cornerUv.pop_back(); });
+  expectRefused("layout.bin", "has 5 corner UVs, its mesh needs 3 × 2");
+}
+
+TEST_F(BakeRejection, NonFiniteCornerUv) {
+  writeWithLayout([](LightmapLayout& l) { l.instances[1].cornerUv[2].y = NAN; });
+  expectRefused("layout.bin", "non-finite corner UV");
+}
+
+TEST_F(BakeRejection, LightmapSizeDisagreesWithLayout) {
+  writeExr(dir_ / "lightmap.exr", Image(16, 9));
+  expectRefused("lightmap.exr", "is 16x9, layout.bin says 16x8");
+}
+
+TEST_F(BakeRejection, LightmapNotAnExr) {
+  std::ofstream(dir_ / "lightmap.exr") << "not an exr";
+  expectRefused("lightmap.exr", "cannot read EXR");
+}

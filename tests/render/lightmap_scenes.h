@@ -1,0 +1,75 @@
+// Scenes and bakes built in code for the lightmap tests: a quad with a hand-made atlas region
+// (synthetic bakes of known irradiance) and a smooth sphere for the seam measurement.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
+#include "scene/scene.h"
+
+namespace bounce::test {
+
+// A UV sphere of `rings` × `segments` quads (poles as triangle fans), smooth unit normals,
+// counter-clockwise seen from outside. Vertices on the seam meridian are duplicated only in
+// the material UVs' sense: here positions are shared, so the atlas decides every chart cut.
+inline Mesh uvSphere(float radius, int rings, int segments) {
+  Mesh mesh;
+  mesh.name = "sphere";
+  const float pi = 3.14159265358979f;
+  const auto index = [&](int ring, int segment) {
+    return static_cast<uint32_t>(1 + (ring - 1) * segments + (segment % segments));
+  };
+  mesh.positions.push_back({0, radius, 0});
+  mesh.normals.push_back({0, 1, 0});
+  for (int ring = 1; ring < rings; ++ring) {
+    const float theta = pi * static_cast<float>(ring) / static_cast<float>(rings);
+    for (int segment = 0; segment < segments; ++segment) {
+      const float phi = 2 * pi * static_cast<float>(segment) / static_cast<float>(segments);
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                        -std::sin(theta) * std::sin(phi));
+      mesh.positions.push_back(radius * n);
+      mesh.normals.push_back(n);
+    }
+  }
+  const uint32_t south = static_cast<uint32_t>(mesh.positions.size());
+  mesh.positions.push_back({0, -radius, 0});
+  mesh.normals.push_back({0, -1, 0});
+  for (int segment = 0; segment < segments; ++segment) {
+    mesh.indices.insert(mesh.indices.end(), {0u, index(1, segment), index(1, segment + 1)});
+    for (int ring = 1; ring + 1 < rings; ++ring) {
+      const uint32_t a = index(ring, segment), b = index(ring, segment + 1);
+      const uint32_t c = index(ring + 1, segment), d = index(ring + 1, segment + 1);
+      mesh.indices.insert(mesh.indices.end(), {a, c, d, a, d, b});
+    }
+    mesh.indices.insert(mesh.indices.end(),
+                        {index(rings - 1, segment), south, index(rings - 1, segment + 1)});
+  }
+  return mesh;
+}
+
+// Adds `mesh` with material `material` as a new static instance at `transform`; returns it.
+inline uint32_t addInstance(Scene& scene, Mesh mesh, const Material& material,
+                            const glm::mat4& transform) {
+  mesh.material = static_cast<uint32_t>(scene.materials.size());
+  scene.materials.push_back(material);
+  scene.meshes.push_back(std::move(mesh));
+  Instance instance;
+  instance.name = scene.meshes.back().name;
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
+  instance.transform = transform;
+  scene.instances.push_back(instance);
+  return static_cast<uint32_t>(scene.instances.size() - 1);
+}
+
+// A manifest good enough for readBake: format version and the scene's hash.
+inline std::string minimalManifest(const Scene& scene) {
+  return nlohmann::json{{"formatVersion", kBakeFormatVersion},
+                        {"sceneHash", sceneContentHash(scene)},
+                        {"holds", "indirect"}}
+      .dump();
+}
+
+}  // namespace bounce::test
