@@ -13,6 +13,7 @@
 #include "atlas/atlas.h"
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
+#include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "scene/world_geometry.h"
@@ -21,18 +22,22 @@
 
 namespace {
 
+const bounce::LightmapBakeSettings kDefaults = bounce::defaultBakeSettings();
+
 struct Options {
   std::filesystem::path scene;
   std::filesystem::path out;
   float texelSize = 0.0f;
-  int texelBudget = 16384;
-  int spp = 4096;
-  float targetError = 0.1f;
-  int maxDepth = 64;
+  int texelBudget = bounce::kDefaultTexelBudget;
+  int spp = kDefaults.irradiance.maxSpp;
+  float targetError = kDefaults.irradiance.targetError;
+  int maxDepth = kDefaults.irradiance.maxDepth;
   uint32_t seed = 0;
   int threads = 0;
   std::string backend = "embree";
-  std::string denoise = "on";
+  std::string denoise = kDefaults.denoise ? "on" : "off";
+  std::filesystem::path png;
+  float exposure = 0.0f;
   bool progress = false;
   bool quiet = false;
 };
@@ -79,7 +84,7 @@ int run(const Options& o) {
   const auto kernel = bounce::makeRayKernel(geometry, backend);
   const double kernelSeconds = since(clock);
 
-  bounce::LightmapBakeSettings settings;
+  bounce::LightmapBakeSettings settings = kDefaults;
   settings.irradiance.maxSpp = o.spp;
   settings.irradiance.targetError = o.targetError;
   settings.irradiance.maxDepth = o.maxDepth;
@@ -184,6 +189,12 @@ int run(const Options& o) {
   folder.irradiance = bake.irradiance;
   folder.manifestJson = manifest.dump(1) + "\n";
   bounce::writeBake(out, folder);
+  if (!o.png.empty()) {
+    // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
+    bounce::Image radiance = bake.irradiance;
+    for (glm::vec3& p : radiance.pixels) p *= bounce::kInvPi;
+    bounce::writePng(o.png, radiance, o.exposure);
+  }
   std::fprintf(
       stderr,
       "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
@@ -213,6 +224,7 @@ int main(int argc, char** argv) {
       "indirect light; lights marked extras.bounce.bake = \"all\" also their direct light), "
       "into a bake folder (lightmap.exr, layout.bin, bake.json)."};
   Options o;
+  app.option_defaults()->always_capture_default();
   app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
   app.add_option("-o,--out", o.out, "bake folder (default: <scene without extension>.bake)");
   app.add_option("--texel-size", o.texelSize,
@@ -234,6 +246,10 @@ int main(int argc, char** argv) {
   app.add_option("--backend", o.backend, "ray kernel")->check(CLI::IsMember({"embree", "bvh"}));
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--png", o.png,
+                 "also write a tone-mapped picture of the lightmap (E/pi, a white surface's "
+                 "radiance) to look at");
+  app.add_option("--exposure", o.exposure, "PNG exposure in EV");
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);

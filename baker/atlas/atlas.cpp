@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "atlas/chart_flatten.h"
+#include "atlas/chart_merge.h"
 #include "atlas/chart_pack.h"
 #include "atlas/chart_segment.h"
 #include "atlas/mesh_uv1.h"
@@ -17,6 +18,8 @@ namespace {
 // Slack below which a chart's extent is not rounded up to one more texel (its last texel would
 // hold a sliver narrower than 1 % of a texel).
 constexpr float kExtentSlack = 0.01f;
+// Charts covering fewer texels than this merge across folds with small neighbours.
+constexpr double kSmallChartTexels = 16.0;
 
 struct StaticInstance {
   uint32_t instance = 0;
@@ -35,18 +38,24 @@ WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
 }
 
 // The charts of one instance, flattened in metres and turned to their smallest rectangle.
-std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world) {
+// Charts under kSmallChartTexels texels at `texelSize` may merge across folds (chart_merge.h).
+std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, float texelSize) {
   const TriangleGroups groups = segmentCharts(world, SegmentSettings{});
+  std::vector<FlatGroup> flat;
+  for (const std::vector<uint32_t>& group : groups.charts)
+    flat.push_back({group, flattenChart(world, group, 1.0f)});
+  const double smallArea = kSmallChartTexels * static_cast<double>(texelSize) * texelSize;
+  flat = mergeSmallCharts(world, std::move(flat), groups.contacts, smallArea);
   std::vector<Chart> charts;
-  for (const std::vector<uint32_t>& group : groups.charts) {
-    FlatChart flat = flattenChart(world, group, 1.0f);
-    if (!flat.cornerUv.empty()) {
-      orientChart(flat.cornerUv);
-      charts.push_back({instance, group, std::move(flat.cornerUv), flat.source});
+  for (FlatGroup& group : flat) {
+    if (!group.flat.cornerUv.empty()) {
+      orientChart(group.flat.cornerUv);
+      charts.push_back(
+          {instance, group.triangles, std::move(group.flat.cornerUv), group.flat.source});
       continue;
     }
     // No flattening of the whole region is free of folds: one chart per triangle.
-    for (const uint32_t t : group) {
+    for (const uint32_t t : group.triangles) {
       FlatChart single = flattenPlanar(world, {t}, 1.0f);
       orientChart(single.cornerUv);
       charts.push_back({instance, {t}, std::move(single.cornerUv), ChartSource::Planar});
@@ -96,7 +105,8 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     if (instance.mobility != Mobility::Static) continue;
     StaticInstance s{i, worldMeshOf(scene, instance), {}};
     if (s.world.triangleCount() == 0) continue;
-    for (std::size_t t = 0; t < s.world.triangleCount(); ++t) staticArea += s.world.area(t);
+    for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
+      if (const double a = s.world.area(t); std::isfinite(a)) staticArea += a;
     statics.push_back(std::move(s));
   }
   atlas.staticArea = staticArea;
@@ -128,7 +138,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
         uv1Notes.push_back("mesh '" + mesh.name + "' (instance '" +
                            scene.instances[s.instance].name + "'): " + uv1.reason +
                            ", so its lightmap UVs were generated");
-      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world);
+      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texelSize);
       for (Chart chart : s.charts) {
         cells.push_back(toTexels(chart, texelSize));
         charts.push_back(std::move(chart));
@@ -138,6 +148,18 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     for (const glm::ivec2 c : cells) rects.push_back(c + settings.padding);
     const std::optional<Packing> packing = packRectangles(rects, settings.maxSize);
     if (!packing) {
+      // Coarser texels shrink every chart, down to one texel plus its padding each; when even
+      // that does not fit, no texel size will.
+      const bool allMinimal = std::all_of(cells.begin(), cells.end(),
+                                          [](glm::ivec2 c) { return c.x == 1 && c.y == 1; });
+      if (allMinimal) {
+        std::ostringstream reason;
+        reason << "the " << charts.size() << " lightmap charts of " << scene.source
+               << " do not fit in a " << settings.maxSize << " x " << settings.maxSize
+               << " atlas even at one texel each (with " << settings.padding
+               << " texels padding); raise the maximum atlas size";
+        throw std::runtime_error(reason.str());
+      }
       texelSize *= 1.1f;
       continue;
     }

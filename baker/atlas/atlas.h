@@ -42,7 +42,7 @@ struct Atlas {
 // Throws std::invalid_argument for settings that make no sense (padding < 0, texelSize < 0,
 // texelBudget < 1 when texelSize is 0, maxSize < 1). A scene without static surface gives an
 // empty layout (0 × 0). When the charts do not fit in maxSize², the texel size grows by 10 % until
-// they do (with a note).
+// they do (with a note); throws std::runtime_error when they do not fit even at one texel each.
 Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings);
 
 }  // namespace bounce

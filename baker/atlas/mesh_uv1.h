@@ -16,8 +16,9 @@ struct Uv1Check {
 };
 
 // Usable when every uv1 lies in [0,1]², no two triangles overlap in it, the region fits in the
-// atlas, and at most 10 % of the surface gets fewer than a quarter of the texels per m² the
-// texel size asks for (the region is sized so that the mesh's uv1 area holds its world area).
+// atlas, its islands keep `padding` texels apart (as generated charts do), and at most 10 % of the
+// surface gets fewer than a quarter of the texels per m² the texel size asks for (the region is
+// sized so that the mesh's uv1 area holds its world area).
 Uv1Check checkMeshUv1(const Mesh& mesh, const WorldMesh& world, float texelSize, int padding,
                       int maxSize);
 

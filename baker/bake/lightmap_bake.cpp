@@ -29,6 +29,14 @@ class Stopwatch {
 
 }  // namespace
 
+LightmapBakeSettings defaultBakeSettings() {
+  LightmapBakeSettings settings;
+  settings.irradiance.maxSpp = 4096;
+  settings.irradiance.targetError = 0.1f;
+  settings.denoise = true;
+  return settings;
+}
+
 LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                           const RayKernel& kernel, const LightmapLayout& layout,
                           const LightmapBakeSettings& settings) {

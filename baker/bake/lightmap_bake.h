@@ -51,6 +51,11 @@ struct LightmapBake {
   BakePhaseSeconds seconds;
 };
 
+// bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): the atlas texel budget, at
+// most 4096 samples per texel, target relative standard error 10%, denoiser on.
+inline constexpr int kDefaultTexelBudget = 16384;
+LightmapBakeSettings defaultBakeSettings();
+
 LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                           const RayKernel& kernel, const LightmapLayout& layout,
                           const LightmapBakeSettings& settings);

@@ -216,12 +216,13 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
 }
 
 void denoise(Image& image, const DenoiseGuide& guide) {
+  static constexpr float kStop = 1.5f;
   static constexpr std::array<float, 5> kB3 = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
   const int w = image.width, h = image.height;
   Image next = image;
   for (const int step : {1, 2, 4}) {
     // Position tolerance grows with the step so that the kernel's reach is not cut off.
-    const float sigmaPosition = 1.5f * static_cast<float>(step) * guide.texelSize;
+    const float sigmaPosition = static_cast<float>(step) * guide.texelSize;
     const float invTwoSigma2 =
         sigmaPosition > 0.0f ? 1.0f / (2 * sigmaPosition * sigmaPosition) : 0;
     for (int y = 0; y < h; ++y) {
@@ -243,10 +244,11 @@ void denoise(Image& image, const DenoiseGuide& guide) {
             const glm::vec3 dp = guide.position[i] - guide.position[j];
             float weight = kB3[dx + 2] * kB3[dy + 2] * std::pow(cosine, 32.0f) *
                            std::exp(-glm::dot(dp, dp) * invTwoSigma2);
-            // Luminance edge-stopping at 4 combined standard errors.
+            // Luminance edge-stopping at kStop combined standard errors: a difference the noise
+            // cannot explain is a real gradient (a shadow, a corner) and is kept.
             const float lj = luminance(image.pixels[j]);
             const float sigmaJ = guide.relativeError[j] * lj;
-            const float sigma2 = 16.0f * (sigmaI * sigmaI + sigmaJ * sigmaJ);
+            const float sigma2 = kStop * kStop * (sigmaI * sigmaI + sigmaJ * sigmaJ);
             const float dl = li - lj;
             if (sigma2 > 0.0f)
               weight *= std::exp(-dl * dl / (2.0f * sigma2));

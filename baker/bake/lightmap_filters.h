@@ -51,8 +51,9 @@ float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations =
 float largestSeamJump(const Image& image, const std::vector<Seam>& seams);
 
 // Edge-aware à-trous denoiser (3 passes of a 5×5 B3-spline kernel, steps 1, 2, 4), guided per
-// texel by world position, normal and chart label; never mixes texels of different labels or
-// texels whose luminances differ by more than 4 standard errors (σ = relativeError × value).
+// texel by world position (σ = step × texel size), normal (cos³²) and chart label; never mixes
+// texels of different labels, and weighs luminance differences by a Gaussian of 1.5 combined
+// standard errors (σ = relativeError × value), so differences the noise cannot explain stay.
 // Texels with label 0 are left alone and never used.
 struct DenoiseGuide {
   std::vector<glm::vec3> position;  // world, metres (mean of the texel's points)

@@ -117,10 +117,14 @@ TEST(AtlasLayout, NoOverlapAndPaddingOnVariedScenes) {
   wide.padding = 5;
   const Atlas padded = buildAtlas(varied, wide);
   EXPECT_EQ(overlapProblem(padded), "");
-  const Scene cornell = contentScene("content/cornell_box/cornell_box.gltf");
-  const Atlas atlas = buildAtlas(cornell, AtlasSettings{});
-  EXPECT_EQ(regionProblem(cornell, atlas), "");
-  EXPECT_EQ(overlapProblem(atlas), "");
+  for (const std::string& path :
+       {std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box/cornell_box.gltf",
+        std::string(BOUNCE_SHARED_SCENES) + "/mcguire_cornell_box/CornellBox-Sphere.obj"}) {
+    const Scene scene = loadScene(path);
+    const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+    EXPECT_EQ(regionProblem(scene, atlas), "") << path;
+    EXPECT_EQ(overlapProblem(atlas), "") << path;
+  }
 }
 
 TEST(AtlasLayout, DynamicInstancesGetNoRegion) {
@@ -225,6 +229,21 @@ TEST(AtlasCharts, CornellBoxWallsAreOneChartEach) {
   EXPECT_EQ(static_cast<int>(allCharts.size()), atlas.layout.chartCount);
 }
 
+// Tiny charts merge across folds: a 10 cm cube at 5 cm texels has faces of 4 texels, each of
+// which alone would take 4 × 4 texels with its padding; a large cube keeps its six faces apart.
+TEST(AtlasCharts, TinyChartsMergeAcrossFoldsLargeOnesDoNot) {
+  Scene scene;
+  const uint32_t cube = addUnitCubeMesh(scene);
+  addInstance(scene, cube, glm::scale(glm::mat4(1), glm::vec3(0.1f)));
+  addInstance(scene, cube, glm::translate(glm::mat4(1), glm::vec3(1, 0, 0)));
+  const Atlas atlas = buildAtlas(scene, atTexelSize(0.05f));
+  EXPECT_EQ(overlapProblem(atlas), "");
+  const std::set<uint32_t> tiny(atlas.triangleChart[0].begin(), atlas.triangleChart[0].end());
+  const std::set<uint32_t> large(atlas.triangleChart[1].begin(), atlas.triangleChart[1].end());
+  EXPECT_LE(tiny.size(), 2u);
+  EXPECT_EQ(large.size(), 6u);
+}
+
 // Two instances of one mesh at scales 1 and 2: 4× the atlas area and 4× the texels.
 TEST(AtlasInstances, ScaleTwoGetsFourTimesTheTexels) {
   Scene scene;
@@ -301,6 +320,34 @@ TEST(AtlasMeshUv1, InvalidUv1IsRejectedWithANote) {
   EXPECT_NE(c.notes[0].find("fewer"), std::string::npos) << c.notes[0];
 }
 
+// Two triangles as two uv1 islands, `gap` apart in uv1 units (6 vertices, none shared).
+Scene twoIslands(float gap) {
+  Scene scene;
+  Mesh mesh;
+  mesh.name = "islands";
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  mesh.normals.assign(6, glm::vec3(0, 0, 1));
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  mesh.uv1 = {{0.0f, 0.0f},       {0.5f, 0.0f}, {0.5f, 0.5f},
+              {0.5f + gap, 0.0f}, {1.0f, 0.5f}, {0.5f + gap, 0.5f}};
+  scene.materials.push_back(Material{});
+  scene.meshes.push_back(mesh);
+  addInstance(scene, 0, glm::scale(glm::mat4(1), glm::vec3(3.0f, 2.0f, 1.0f)));
+  return scene;
+}
+
+// At 0.05 m per texel the uv1 square is about 98 texels across: a gap of 0.1 is about 10 texels,
+// one of 0.005 half a texel (less than the 2 texels of padding).
+TEST(AtlasMeshUv1, IslandsCloserThanThePaddingAreRejected) {
+  const Atlas wide = buildAtlas(twoIslands(0.1f), atTexelSize(0.05f));
+  EXPECT_EQ(wide.chartKinds.meshUv1, 1);
+  EXPECT_TRUE(wide.notes.empty());
+  const Atlas close = buildAtlas(twoIslands(0.005f), atTexelSize(0.05f));
+  EXPECT_EQ(close.chartKinds.meshUv1, 0);
+  ASSERT_EQ(close.notes.size(), 1u);
+  EXPECT_NE(close.notes[0].find("closer than 2 texels"), std::string::npos) << close.notes[0];
+}
+
 TEST(AtlasContent, UtilisationOnContentScenes) {
   for (const char* path :
        {"content/cornell_box/cornell_box.gltf", "content/point_over_plane/point_over_plane.gltf"}) {
@@ -311,6 +358,15 @@ TEST(AtlasContent, UtilisationOnContentScenes) {
     EXPECT_LE(atlas.layout.width, 1024) << path;
     EXPECT_LE(atlas.layout.height, 1024) << path;
   }
+}
+
+// By hand (about a minute): atlas_test --gtest_also_run_disabled_tests --gtest_filter=*Conference*
+TEST(AtlasContent, DISABLED_ConferenceRoomIsValid) {
+  const Scene scene = loadScene(std::string(BOUNCE_SHARED_SCENES) + "/conference/conference.obj");
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  EXPECT_NEAR(recountUtilisation(atlas), atlas.layout.utilisation, 1e-6);
 }
 
 TEST(AtlasContent, SameSceneSameLayout) {
@@ -325,6 +381,25 @@ TEST(AtlasContent, SameSceneSameLayout) {
     EXPECT_TRUE(a.layout.instances[i].cornerUv == b.layout.instances[i].cornerUv) << "region " << i;
     EXPECT_TRUE(a.triangleChart[i] == b.triangleChart[i]) << "region " << i;
   }
+}
+
+// Triangles without area (repeated corners, collinear, non-finite) share a one-texel chart;
+// the rest of the mesh is laid out as usual.
+TEST(AtlasCharts, DegenerateTrianglesGetOneTexel) {
+  Scene scene;
+  const uint32_t quad = addUnitQuadMesh(scene);
+  Mesh& mesh = scene.meshes[quad];
+  mesh.positions.insert(mesh.positions.end(),
+                        {{2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {std::nanf(""), 0, 0}});
+  mesh.normals.resize(mesh.positions.size(), glm::vec3(0, 0, 1));
+  mesh.indices.insert(mesh.indices.end(), {4, 5, 6, 0, 1, 7, 4, 4, 5});
+  addInstance(scene, quad, glm::mat4(1));
+  const Atlas atlas = buildAtlas(scene, atTexelSize(0.1f));
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  EXPECT_EQ(atlas.chartKinds.degenerate, 1);
+  EXPECT_EQ(atlas.chartKinds.planar, 1);
+  EXPECT_NEAR(atlas.staticArea, 1.0, 1e-6);
 }
 
 TEST(AtlasSettingsCheck, NonsenseIsRefused) {
@@ -347,6 +422,10 @@ TEST(AtlasSettingsCheck, NonsenseIsRefused) {
   EXPECT_GT(atlas.layout.texelSize, 0.001f);
   ASSERT_FALSE(atlas.notes.empty());
   EXPECT_EQ(overlapProblem(atlas), "");
+  // Every chart takes at least 3 × 3 texels with its padding: this scene's dozens of charts
+  // cannot fit in 8 × 8 at any texel size.
+  s.maxSize = 8;
+  EXPECT_THROW(buildAtlas(scene, s), std::runtime_error);
 }
 
 }  // namespace
