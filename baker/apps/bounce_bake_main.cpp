@@ -13,8 +13,8 @@
 
 #include "atlas/atlas.h"
 #include "bake/bake_folder.h"
-#include "bake/vpl_file.h"
 #include "bake/lightmap_bake.h"
+#include "bake/vpl_file.h"
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
