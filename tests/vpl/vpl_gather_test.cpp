@@ -122,3 +122,39 @@ TEST(VplGather, ConcaveCornerClampRemovesTheSpikes) {
 
 }  // namespace
 }  // namespace bounce
+
+namespace bounce {
+namespace {
+
+// The two evaluators of one VPL set agree: the path tracer sampling the VPLs as lights (one
+// per vertex, by power; PathSet::DirectOnly and no scene light, so only the VPLs' light after
+// one reflection counts) against the exact unclamped sum of the gather, at receivers in the
+// corner scene. Ties the convention the tracer checks (bake/vpl.h) to the one the renderer will
+// be measured against.
+TEST(VplGather, PathTracerSamplingTheVplsAgreesWithTheSum) {
+  test::World world = cornerWorld();
+  VplSettings settings;
+  settings.maxVpls = 500;
+  settings.relativeError = 0.0f;
+  const VplSet set = generateVpls(world.scene, world.geometry, *world.kernel, settings);
+  ASSERT_GT(set.vpls.size(), 400u);
+  Scene vplOnly = world.scene;
+  vplOnly.lights.clear();
+  TraceSettings trace;
+  trace.paths = PathSet::DirectOnly;
+  const PathTracer tracer(vplOnly, world.geometry, *world.kernel, trace, set.vpls);
+  const struct {
+    glm::vec3 x, n;
+  } receivers[] = {{{-0.5f, 0.3f, 0.0f}, {0, 0, 1}}, {{2.0f, -0.4f, 1.6f}, {-1, 0, 0}}};
+  for (const auto& r : receivers) {
+    const VplIrradiance exact = gatherVplIrradiance(set.vpls, r.x, r.n, world.kernel.get(), 0.0f);
+    const test::Estimate e = test::estimateIrradiance(tracer, r.x, r.n, 2u, 5u, 16384);
+    std::printf("VPLs through the tracer: %.5f ± %.5f, sum %.5f W/m² (red)\n", e.mean.r,
+                e.standardError().r, exact.irradiance.r);
+    EXPECT_TRUE(
+        test::agreeWithin(e.mean, e.standardError(), exact.irradiance, glm::dvec3(0.0), 5.0));
+  }
+}
+
+}  // namespace
+}  // namespace bounce
