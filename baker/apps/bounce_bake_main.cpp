@@ -49,29 +49,28 @@ struct Options {
 };
 
 // bake.json's "vpls": what the vpls file holds (baker/vpl/vpl_generate.h, bake/vpl.h).
-nlohmann::json vplManifest(const bounce::VplSet& set, const bounce::WorldGeometry& geometry,
-                           const Options& o) {
+// `area`: the static surface area the VPLs lie on, m².
+nlohmann::json vplManifest(const bounce::VplSet& set, double area, const Options& o) {
   const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.r, v.g, v.b}); };
   nlohmann::json perBounce = nlohmann::json::array();
   std::size_t last = 0;  // bounces after the deepest VPL are left out
   for (std::size_t k = 0; k < set.fluxPerBounce.size(); ++k)
     if (set.fluxPerBounce[k] != glm::dvec3(0.0)) last = k + 1;
   for (std::size_t k = 0; k < last; ++k) perBounce.push_back(rgb(set.fluxPerBounce[k]));
-  return {
-      {"file", bounce::kVplFileName},
-      {"count", set.vpls.size()},
-      {"paths", set.paths},
-      {"unit", "W"},
-      {"holds",
-       "indirect light only: one VPL per diffuse hit of a light path from the first bounce "
-       "on; flux already multiplied by the albedo of its surface; it adds "
-       "Phi/pi cos(theta_vpl) cos(theta_x) / d^2 rho_x/pi (docs/vpl.md)"},
-      {"totalFlux", rgb(set.totalFlux())},
-      {"fluxPerBounce", perBounce},
-      {"relativeError", set.relativeError},
-      {"errorTarget", o.vplError},
-      {"cap", o.vpls},
-      {"clampDistance", bounce::vplClampDistance(bounce::surfaceArea(geometry), set.vpls.size())}};
+  return {{"file", bounce::kVplFileName},
+          {"count", set.vpls.size()},
+          {"paths", set.paths},
+          {"unit", "W"},
+          {"holds",
+           "indirect light only: one VPL per diffuse hit of a light path from the first bounce "
+           "on; flux already multiplied by the albedo of its surface; it adds "
+           "Phi/pi cos(theta_vpl) cos(theta_x) / d^2 rho_x/pi (docs/vpl.md)"},
+          {"totalFlux", rgb(set.totalFlux())},
+          {"fluxPerBounce", perBounce},
+          {"relativeError", set.relativeError},
+          {"errorTarget", o.vplError},
+          {"cap", o.vpls},
+          {"clampDistance", bounce::vplClampDistance(area, set.vpls.size())}};
 }
 
 double since(std::chrono::steady_clock::time_point& last) {
@@ -131,13 +130,19 @@ int run(const Options& o) {
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
 
   bounce::VplSet vpls;
+  double vplArea = 0.0;
   if (o.vpls > 0) {
     bounce::VplSettings vplSettings;
     vplSettings.maxVpls = o.vpls;
     vplSettings.relativeError = o.vplError;
     vplSettings.seed = o.seed;
     vplSettings.threads = o.threads;
-    vpls = bounce::generateVpls(scene, geometry, *kernel, vplSettings);
+    // VPL paths run in the static scene (baker/vpl/vpl_generate.h: staticScene).
+    const bounce::Scene statics = bounce::staticScene(scene);
+    const bounce::WorldGeometry staticGeometry = bounce::flatten(statics);
+    const auto staticKernel = bounce::makeRayKernel(staticGeometry, backend);
+    vpls = bounce::generateVpls(statics, staticGeometry, *staticKernel, vplSettings);
+    vplArea = bounce::surfaceArea(staticGeometry);
   }
   const double vplSeconds = since(clock);
 
@@ -227,7 +232,7 @@ int run(const Options& o) {
         {"stitch", bake.seconds.stitch},
         {"vpls", vplSeconds},
         {"total", totalSeconds}}}};
-  if (o.vpls > 0) manifest["vpls"] = vplManifest(vpls, geometry, o);
+  if (o.vpls > 0) manifest["vpls"] = vplManifest(vpls, vplArea, o);
 
   const std::filesystem::path out =
       o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;

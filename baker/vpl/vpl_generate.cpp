@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -182,6 +183,13 @@ glm::dvec3 VplSet::totalFlux() const {
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& f : fluxPerBounce) sum += f;
   return sum;
+}
+
+Scene staticScene(const Scene& scene) {
+  Scene out = scene;
+  std::erase_if(out.instances,
+                [](const Instance& instance) { return instance.mobility == Mobility::Dynamic; });
+  return out;
 }
 
 VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,

@@ -64,4 +64,11 @@ struct VplSet {
 VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
                     const VplSettings& settings);
 
+// The scene VPL paths run in: `scene` without its dynamic instances (Mobility::Dynamic). The VPLs
+// carry the static scene's indirect light, which dynamic objects receive wherever they are
+// moved; a dynamic object neither holds VPLs (they would stay behind when it moves) nor
+// shadows the paths (the approximation: its own effect on the room's indirect light is
+// left out). Meshes, materials and lights are kept as they are.
+Scene staticScene(const Scene& scene);
+
 }  // namespace bounce

@@ -210,5 +210,42 @@ TEST(VplGenerate, CountFollowsTheCapAndTheErrorTarget) {
   EXPECT_LE(loose.relativeError, 0.5);
 }
 
+// Dynamic instances are left out of the VPL paths (staticScene): the VPLs of a floor under a
+// point light with a dynamic quad hovering between them are those of the floor alone, bit for
+// bit; with the quad kept, some light lands on it instead (the check that the quad matters).
+TEST(VplGenerate, DynamicInstancesNeitherHoldVplsNorShadowThem) {
+  test::World bare;
+  addQuad(bare.scene, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0},
+          addMaterial(bare.scene, kRho));
+  Light light;
+  light.position = {0, 0, 2};
+  light.intensity = {1, 1, 1};
+  bare.scene.lights.push_back(light);
+  test::World withQuad;
+  withQuad.scene = bare.scene;
+  // Facing down, 1 m above the floor under the light.
+  addQuad(withQuad.scene, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1},
+          addMaterial(withQuad.scene, glm::vec3(0.8f)));
+  withQuad.scene.instances.back().mobility = Mobility::Dynamic;
+  test::World statics;
+  statics.scene = staticScene(withQuad.scene);
+  ASSERT_EQ(statics.scene.instances.size(), bare.scene.instances.size());
+  bare.build();
+  withQuad.build();
+  statics.build();
+  const VplSettings s = fixedPaths(2048);
+  const VplSet a = generateVpls(bare.scene, bare.geometry, *bare.kernel, s);
+  const VplSet b = generateVpls(statics.scene, statics.geometry, *statics.kernel, s);
+  const VplSet all = generateVpls(withQuad.scene, withQuad.geometry, *withQuad.kernel, s);
+  ASSERT_EQ(a.vpls.size(), b.vpls.size());
+  for (std::size_t i = 0; i < a.vpls.size(); ++i) {
+    ASSERT_EQ(a.vpls[i].position, b.vpls[i].position);
+    ASSERT_EQ(a.vpls[i].flux, b.vpls[i].flux);
+  }
+  int onQuad = 0;
+  for (const Vpl& v : all.vpls) onQuad += v.position.z > 0.5f ? 1 : 0;
+  EXPECT_GT(onQuad, 0) << "the kept quad should have received light";
+}
+
 }  // namespace
 }  // namespace bounce
