@@ -1,5 +1,6 @@
 // bounce-bake: bakes a scene's lightmap (irradiance E in W/m² per texel of the atlas) and writes
-// the bake folder (engine/bake/bake_folder.h): lightmap.exr, layout.bin, bake.json.
+// the bake folder (engine/bake/bake_folder.h): lightmap.exr, layout.bin, bake.json, and the
+// virtual point lights (vpls, baker/vpl) unless --vpls 0.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -13,12 +14,15 @@
 #include "atlas/atlas.h"
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
+#include "bake/vpl_file.h"
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "scene/world_geometry.h"
 #include "trace/progress_line.h"
 #include "trace/sampling.h"
+#include "vpl/vpl_gather.h"
+#include "vpl/vpl_generate.h"
 
 namespace {
 
@@ -40,7 +44,34 @@ struct Options {
   float exposure = 0.0f;
   bool progress = false;
   bool quiet = false;
+  int vpls = bounce::VplSettings{}.maxVpls;
+  float vplError = bounce::VplSettings{}.relativeError;
 };
+
+// bake.json's "vpls": what the vpls file holds (baker/vpl/vpl_generate.h, bake/vpl.h).
+// `area`: the static surface area the VPLs lie on, m².
+nlohmann::json vplManifest(const bounce::VplSet& set, double area, const Options& o) {
+  const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.r, v.g, v.b}); };
+  nlohmann::json perBounce = nlohmann::json::array();
+  std::size_t last = 0;  // bounces after the deepest VPL are left out
+  for (std::size_t k = 0; k < set.fluxPerBounce.size(); ++k)
+    if (set.fluxPerBounce[k] != glm::dvec3(0.0)) last = k + 1;
+  for (std::size_t k = 0; k < last; ++k) perBounce.push_back(rgb(set.fluxPerBounce[k]));
+  return {{"file", bounce::kVplFileName},
+          {"count", set.vpls.size()},
+          {"paths", set.paths},
+          {"unit", "W"},
+          {"holds",
+           "indirect light only: one VPL per diffuse hit of a light path from the first bounce "
+           "on; flux already multiplied by the albedo of its surface; it adds "
+           "Phi/pi cos(theta_vpl) cos(theta_x) / d^2 rho_x/pi (docs/vpl.md)"},
+          {"totalFlux", rgb(set.totalFlux())},
+          {"fluxPerBounce", perBounce},
+          {"relativeError", set.relativeError},
+          {"errorTarget", o.vplError},
+          {"cap", o.vpls},
+          {"clampDistance", bounce::vplClampDistance(area, set.vpls.size())}};
+}
 
 double since(std::chrono::steady_clock::time_point& last) {
   const auto now = std::chrono::steady_clock::now();
@@ -98,6 +129,23 @@ int run(const Options& o) {
   if (!bake.irradiance.allFinite())
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
 
+  bounce::VplSet vpls;
+  double vplArea = 0.0;
+  if (o.vpls > 0) {
+    bounce::VplSettings vplSettings;
+    vplSettings.maxVpls = o.vpls;
+    vplSettings.relativeError = o.vplError;
+    vplSettings.seed = o.seed;
+    vplSettings.threads = o.threads;
+    // VPL paths run in the static scene (baker/vpl/vpl_generate.h: staticScene).
+    const bounce::Scene statics = bounce::staticScene(scene);
+    const bounce::WorldGeometry staticGeometry = bounce::flatten(statics);
+    const auto staticKernel = bounce::makeRayKernel(staticGeometry, backend);
+    vpls = bounce::generateVpls(statics, staticGeometry, *staticKernel, vplSettings);
+    vplArea = bounce::surfaceArea(staticGeometry);
+  }
+  const double vplSeconds = since(clock);
+
   // What the map holds: every light's indirect light; direct light only of baked-only lights.
   nlohmann::json bakedDirect = nlohmann::json::array();
   for (const bounce::Light& light : scene.lights)
@@ -116,7 +164,9 @@ int run(const Options& o) {
                                        {"maxDepth", o.maxDepth},
                                        {"seed", o.seed},
                                        {"denoise", settings.denoise},
-                                       {"pointsPerTexel", settings.pointsPerTexel}};
+                                       {"pointsPerTexel", settings.pointsPerTexel},
+                                       {"vpls", o.vpls},
+                                       {"vplError", o.vplError}};
   const double totalSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json manifest = {
@@ -180,7 +230,9 @@ int run(const Options& o) {
         {"denoise", bake.seconds.denoise},
         {"dilate", bake.seconds.dilate},
         {"stitch", bake.seconds.stitch},
+        {"vpls", vplSeconds},
         {"total", totalSeconds}}}};
+  if (o.vpls > 0) manifest["vpls"] = vplManifest(vpls, vplArea, o);
 
   const std::filesystem::path out =
       o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;
@@ -188,6 +240,7 @@ int run(const Options& o) {
   folder.layout = atlas.layout;
   folder.irradiance = bake.irradiance;
   folder.manifestJson = manifest.dump(1) + "\n";
+  if (o.vpls > 0) folder.vpls = vpls.vpls;
   bounce::writeBake(out, folder);
   if (!o.png.empty()) {
     // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
@@ -250,6 +303,13 @@ int main(int argc, char** argv) {
                  "also write a tone-mapped picture of the lightmap (E/pi, a white surface's "
                  "radiance) to look at");
   app.add_option("--exposure", o.exposure, "PNG exposure in EV");
+  app.add_option("--vpls", o.vpls,
+                 "most virtual point lights (0: none; fewer when --vpl-error is met first)")
+      ->check(CLI::Range(0, 1 << 24));
+  app.add_option("--vpl-error", o.vplError,
+                 "stop tracing VPL light paths once the total VPL flux has this relative "
+                 "standard error (after at least 1024 paths)")
+      ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "scene/light_falloff.h"
 #include "trace/sampling.h"
@@ -12,7 +13,7 @@ namespace bounce {
 namespace {
 
 // Sampler dimensions (2D pairs) used at each path vertex, relative to 4·reflections.
-constexpr uint32_t kDimLightPick = 0;   // emitter triangle (alias table bin + coin)
+constexpr uint32_t kDimLightPick = 0;   // light (CDF) then emitter triangle (alias bin + coin)
 constexpr uint32_t kDimLightPoint = 1;  // point on the emitter triangle
 constexpr uint32_t kDimBrdf = 2;        // cosine-weighted direction
 constexpr uint32_t kDimRoulette = 3;    // Russian roulette
@@ -29,12 +30,14 @@ bool finiteRay(const Ray& ray) {
 }  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-                       const TraceSettings& settings)
+                       const TraceSettings& settings, std::vector<Vpl> vpls)
     : scene_(scene),
       geometry_(geometry),
       kernel_(kernel),
       settings_(settings),
-      emitters_(scene, geometry) {
+      emitters_(scene, geometry),
+      vpls_(std::move(vpls)),
+      lights_(scene, geometry, emitters_, vpls_) {
   settings_.maxDepth = std::max(settings_.maxDepth, 0);
   minReflections_ = settings_.paths == PathSet::IndirectOnly ? 2 : 0;
   maxReflections_ =
@@ -55,11 +58,29 @@ bool PathTracer::visible(glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to,
   return !kernel_.occluded(ray);
 }
 
-glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, SobolSampler& sampler) const {
+glm::vec3 PathTracer::sampleLight(const SurfacePoint& point, SobolSampler& sampler) const {
+  if (lights_.empty()) return glm::vec3(0.0f);
   const uint32_t base = sampler.dimension();
   sampler.setDimension(base + kDimLightPick);
-  const glm::vec2 pick = sampler.get2D();
-  sampler.setDimension(base + kDimLightPoint);
+  const glm::vec2 u = sampler.get2D();
+  const LightPick pick = lights_.pick(u.x);
+  if (!(pick.pmf > 0.0f)) return glm::vec3(0.0f);
+  switch (pick.kind) {
+    case LightKind::Area:
+      // BRDF-only estimates count area emitters only where bounce rays hit them.
+      if (settings_.strategy == LightStrategy::BrdfOnly) return glm::vec3(0.0f);
+      sampler.setDimension(base + kDimLightPoint);
+      return sampleAreaLight(point, {pick.remapped, u.y}, pick.pmf, sampler);
+    case LightKind::Punctual:
+      return deltaLight(point, scene_.lights[pick.index]) / pick.pmf;
+    case LightKind::Virtual:
+      return virtualLight(point, vpls_[pick.index]) / pick.pmf;
+  }
+  return glm::vec3(0.0f);
+}
+
+glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, glm::vec2 pick, float setPmf,
+                                      SobolSampler& sampler) const {
   const glm::vec2 onTriangle = sampler.get2D();
   const EmitterSample light = emitters_.sample(pick, onTriangle);
 
@@ -73,8 +94,8 @@ glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, SobolSampler& s
   if (cosLight <= 0.0f || cosSurface <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f) {
     return glm::vec3(0.0f);
   }
-  // Area density → solid angle density: dω = dA cosθ' / r².
-  const float pdfLight = light.pdfArea * dist2 / cosLight;
+  // Area density (the set's pick pmf × the triangle's) → solid angle density: dω = dA cosθ'/r².
+  const float pdfLight = setPmf * light.pdfArea * dist2 / cosLight;
   if (!(pdfLight > 0.0f) || !std::isfinite(pdfLight)) return glm::vec3(0.0f);
   const glm::vec3 lightNormal = glm::dot(light.normal, -wi) > 0.0f ? light.normal : -light.normal;
   if (!visible(point.position, point.geometricNormal, light.position, lightNormal)) {
@@ -86,44 +107,56 @@ glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, SobolSampler& s
   return point.albedo * kInvPi * light.radiance * (cosSurface * weight / pdfLight);
 }
 
-glm::vec3 PathTracer::sampleDeltaLights(const SurfacePoint& point) const {
-  glm::vec3 sum(0.0f);
-  for (const Light& light : scene_.lights) {
-    glm::vec3 wi;
-    glm::vec3 incident;  // irradiance at normal incidence, W/m²
-    bool reachable = false;
-    if (light.type == LightType::Directional) {
+glm::vec3 PathTracer::deltaLight(const SurfacePoint& point, const Light& light) const {
+  glm::vec3 wi;
+  glm::vec3 incident;  // irradiance at normal incidence, W/m²
+  bool reachable = false;
+  if (light.type == LightType::Directional) {
+    const float len = glm::length(light.direction);
+    if (!(len > 0.0f) || !std::isfinite(len)) return glm::vec3(0.0f);
+    wi = -light.direction / len;
+    incident = light.irradiance;
+    if (maxComponent(incident) <= 0.0f || !isFinite(incident)) return glm::vec3(0.0f);
+    if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+      return glm::vec3(0.0f);
+    Ray ray;
+    ray.origin = offsetRayOrigin(point.position, point.geometricNormal, wi);
+    ray.direction = wi;
+    reachable = finiteRay(ray) && !kernel_.occluded(ray);
+  } else {
+    const glm::vec3 toLight = light.position - point.position;
+    const float dist2 = glm::dot(toLight, toLight);
+    if (!(dist2 > 0.0f) || !std::isfinite(dist2)) return glm::vec3(0.0f);
+    wi = toLight / std::sqrt(dist2);
+    glm::vec3 intensity = light.intensity;  // W/sr towards the point
+    if (light.type == LightType::Spot) {
       const float len = glm::length(light.direction);
-      if (!(len > 0.0f) || !std::isfinite(len)) continue;
-      wi = -light.direction / len;
-      incident = light.irradiance;
-      if (maxComponent(incident) <= 0.0f || !isFinite(incident)) continue;
-      if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
-        continue;
-      Ray ray;
-      ray.origin = offsetRayOrigin(point.position, point.geometricNormal, wi);
-      ray.direction = wi;
-      reachable = finiteRay(ray) && !kernel_.occluded(ray);
-    } else {
-      const glm::vec3 toLight = light.position - point.position;
-      const float dist2 = glm::dot(toLight, toLight);
-      if (!(dist2 > 0.0f) || !std::isfinite(dist2)) continue;
-      wi = toLight / std::sqrt(dist2);
-      glm::vec3 intensity = light.intensity;  // W/sr towards the point
-      if (light.type == LightType::Spot) {
-        const float len = glm::length(light.direction);
-        if (!(len > 0.0f)) continue;
-        intensity *= spotFalloff(light, glm::dot(light.direction / len, -wi));
-      }
-      incident = intensity / dist2;  // inverse-square law
-      if (maxComponent(incident) <= 0.0f || !isFinite(incident)) continue;
-      if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
-        continue;
-      reachable = visible(point.position, point.geometricNormal, light.position, glm::vec3(0.0f));
+      if (!(len > 0.0f)) return glm::vec3(0.0f);
+      intensity *= spotFalloff(light, glm::dot(light.direction / len, -wi));
     }
-    if (reachable) sum += point.albedo * kInvPi * incident * glm::dot(point.shadingNormal, wi);
+    incident = intensity / dist2;  // inverse-square law
+    if (maxComponent(incident) <= 0.0f || !isFinite(incident)) return glm::vec3(0.0f);
+    if (glm::dot(point.shadingNormal, wi) <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+      return glm::vec3(0.0f);
+    reachable = visible(point.position, point.geometricNormal, light.position, glm::vec3(0.0f));
   }
-  return sum;
+  if (!reachable) return glm::vec3(0.0f);
+  return point.albedo * kInvPi * incident * glm::dot(point.shadingNormal, wi);
+}
+
+// bake/vpl.h: L = Φ/π · cosθ_vpl · cosθ_x / d² · ρ_x/π, a cosine emitter of intensity Φ/π·cosθ.
+glm::vec3 PathTracer::virtualLight(const SurfacePoint& point, const Vpl& vpl) const {
+  const glm::vec3 toLight = vpl.position - point.position;
+  const float dist2 = glm::dot(toLight, toLight);
+  if (!(dist2 > 0.0f) || !std::isfinite(dist2)) return glm::vec3(0.0f);
+  const glm::vec3 wi = toLight / std::sqrt(dist2);
+  const float cosLight = glm::dot(vpl.normal, -wi);
+  const float cosSurface = glm::dot(point.shadingNormal, wi);
+  if (cosLight <= 0.0f || cosSurface <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+    return glm::vec3(0.0f);
+  if (!visible(point.position, point.geometricNormal, vpl.position, vpl.normal))
+    return glm::vec3(0.0f);
+  return point.albedo * kInvPi * vpl.flux * kInvPi * (cosLight * cosSurface / dist2);
 }
 
 glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int depth,
@@ -135,11 +168,8 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     const uint32_t dim = baseDim + kDimsPerVertex * static_cast<uint32_t>(depth);
     // Next-event estimation: light after depth + 1 reflections.
     if (depth + 1 >= minReflections_) {
-      if (settings_.strategy != LightStrategy::BrdfOnly && !emitters_.empty()) {
-        sampler.setDimension(dim);
-        radiance += beta * sampleAreaLight(point, sampler);
-      }
-      radiance += beta * sampleDeltaLights(point);
+      sampler.setDimension(dim);
+      radiance += beta * sampleLight(point, sampler);
     }
 
     // Continue the path by sampling the BRDF: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
@@ -173,7 +203,8 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     if (maxComponent(next.emitted) > 0.0f && depth + 1 >= minReflections_ &&
         settings_.strategy != LightStrategy::LightOnly) {
       float weight = 1.0f;
-      const float pdfArea = emitters_.pdfArea(next.triangle);
+      // The light strategy's density includes the pick of the area set (trace/light_sampler.h).
+      const float pdfArea = lights_.areaPmf() * emitters_.pdfArea(next.triangle);
       if (settings_.strategy == LightStrategy::Mis && pdfArea > 0.0f) {
         const glm::vec3 d = next.position - point.position;
         const float cosLight = glm::dot(next.geometricNormal, -wi);

@@ -1,8 +1,12 @@
 // The unidirectional path tracer: Lambertian surfaces (BRDF ρ/π), cosine-weighted BRDF
-// sampling, next-event estimation to area emitters (by power) and to point, spot and
-// directional lights, MIS with the power heuristic, Russian roulette on path throughput.
+// sampling, next-event estimation to ONE light per vertex picked by power among the area
+// emitters, the point, spot and directional lights and (for checks) virtual point lights
+// (trace/light_sampler.h), MIS with the power heuristic (the pick pmf is part of the light
+// strategy's density), Russian roulette on path throughput.
 // GL-free; used by the reference renderer and by the lightmap baker.
 #pragma once
+
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -10,6 +14,7 @@
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
 #include "trace/emitters.h"
+#include "trace/light_sampler.h"
 #include "trace/sobol_sampler.h"
 #include "trace/surface_point.h"
 #include "trace/trace_settings.h"
@@ -19,9 +24,13 @@ namespace bounce {
 class PathTracer {
  public:
   // scene, geometry and kernel must outlive the tracer; geometry = flatten(scene) and kernel
-  // is built over it.
+  // is built over it. `vpls` (kept by the tracer) are sampled as extra cosine emitters, for
+  // checks of the VPL convention (bake/vpl.h); the renderer, not the tracer, draws them.
   PathTracer(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-             const TraceSettings& settings);
+             const TraceSettings& settings, std::vector<Vpl> vpls = {});
+  // lights_ refers to emitters_ and vpls_: not copyable.
+  PathTracer(const PathTracer&) = delete;
+  PathTracer& operator=(const PathTracer&) = delete;
 
   // One-sample estimate of the radiance arriving at ray.origin from −ray.direction,
   // W/(sr·m²) per channel (i.e. the radiance leaving the first surface hit towards the
@@ -40,8 +49,9 @@ class PathTracer {
   glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
                        bool* nonFinite = nullptr) const;
 
-  bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty(); }
+  bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty() || !vpls_.empty(); }
   const EmitterTable& emitters() const { return emitters_; }
+  const LightSampler& lightSampler() const { return lights_; }
   const TraceSettings& settings() const { return settings_; }
 
  private:
@@ -49,10 +59,17 @@ class PathTracer {
   // `throughput` is the path weight so far, `depth` the reflections before this vertex.
   glm::vec3 reflected(SurfacePoint point, glm::vec3 throughput, int depth, uint32_t baseDim,
                       SobolSampler& sampler) const;
-  // Next-event estimate of light after one reflection at `point` (area emitters with MIS
-  // weight, plus every delta light), not yet multiplied by the path throughput.
-  glm::vec3 sampleAreaLight(const SurfacePoint& point, SobolSampler& sampler) const;
-  glm::vec3 sampleDeltaLights(const SurfacePoint& point) const;
+  // Next-event estimate of light after one reflection at `point` from one light picked by
+  // power, divided by its pick pmf (area emitters with MIS weight), not yet multiplied by the
+  // path throughput.
+  glm::vec3 sampleLight(const SurfacePoint& point, SobolSampler& sampler) const;
+  // Reflected radiance from the area emitters, given the emitter pick numbers and the pmf of
+  // picking the area set.
+  glm::vec3 sampleAreaLight(const SurfacePoint& point, glm::vec2 pick, float setPmf,
+                            SobolSampler& sampler) const;
+  // Reflected radiance from one delta light (exact: no sampling).
+  glm::vec3 deltaLight(const SurfacePoint& point, const Light& light) const;
+  glm::vec3 virtualLight(const SurfacePoint& point, const Vpl& vpl) const;
   // The firefly clamp (off when settings_.clampRadiance ≤ 0): scales a sample's reflected
   // radiance so its largest channel is at most the clamp. Biased low; see docs/path_tracer.md.
   glm::vec3 clamped(glm::vec3 radiance) const;
@@ -63,6 +80,8 @@ class PathTracer {
   const RayKernel& kernel_;
   TraceSettings settings_;
   EmitterTable emitters_;
+  std::vector<Vpl> vpls_;
+  LightSampler lights_;  // over emitters_, scene_.lights and vpls_
   int minReflections_;
   int maxReflections_;
 };

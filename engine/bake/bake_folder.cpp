@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/vpl_file.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/load_error.h"
@@ -368,6 +369,7 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                       std::to_string(bake.irradiance.height) + ", " + kLayoutName +
                                       " says " + std::to_string(bake.layout.width) + "x" +
                                       std::to_string(bake.layout.height));
+  if (fs::exists(dir / kVplFileName)) bake.vpls = readVplFile(dir / kVplFileName);
   return bake;
 }
 
@@ -398,6 +400,7 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     // bake.json last: its time stamp is the folder's (the build step's output, BounceBake.cmake).
     writeFileAtomically(tmp / kLayoutName, encodeLayout(bake.layout));
     writeExr(tmp / kLightmapName, bake.irradiance);
+    if (bake.vpls) writeVplFile(tmp / kVplFileName, *bake.vpls);
     const std::string& json = bake.manifestJson;
     writeFileAtomically(tmp / kManifestName,
                         {reinterpret_cast<const unsigned char*>(json.data()), json.size()});

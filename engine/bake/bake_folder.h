@@ -7,16 +7,19 @@
 //   <dir>/lightmap.exr    irradiance E in W/m² per linear-RGB channel, one texel per atlas texel,
 //                         rows top first (see lightmap_layout.h)
 //   <dir>/layout.bin      the LightmapLayout (versioned binary)
-//   <dir>/vpls            reserved for the virtual point lights (a later issue)
+//   <dir>/vpls            the virtual point lights (optional; engine/bake/vpl_file.h)
 //
 // A folder is written whole or not at all: into "<dir>.tmp-<pid>", then renamed over <dir>, so
 // an interrupted bake leaves the previous one intact.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "bake/lightmap_layout.h"
+#include "bake/vpl.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -28,6 +31,9 @@ struct Bake {
   LightmapLayout layout;
   Image irradiance;          // W/m², layout.width × layout.height
   std::string manifestJson;  // bake.json as written (the renderer reads what it needs from it)
+  // The VPLs (written to and read from <dir>/vpls when present; bake.json's "vpls" describes
+  // them).
+  std::optional<std::vector<Vpl>> vpls;
 };
 
 // Hash of everything in the scene that changes a bake (geometry, instances and their mobility,

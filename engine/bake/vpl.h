@@ -1,0 +1,28 @@
+// A virtual point light (instant radiosity, Keller 1997): a point on a diffuse surface that
+// re-emits, as a cosine (Lambertian) emitter on the side of `normal`, the light a light path
+// brought there. Header only and GL-free: the baker makes them (baker/vpl), the bake folder
+// stores them (engine/bake/vpl_file.h), the path tracer can sample them for checks
+// (baker/trace/light_sampler.h) and the renderer draws them.
+//
+// Convention (derived in docs/vpl.md): `flux` Φ is the flux the VPL re-emits, W per linear-RGB
+// channel, already multiplied by the albedo ρ_vpl of the surface it sits on. Its radiant
+// intensity is I(ω) = Φ/π · cosθ_vpl (so ∫ I dω over the hemisphere = Φ), and the radiance it
+// adds, reflected by a Lambertian surface of albedo ρ_x at x, is
+//     L(x) = Φ/π · cosθ_vpl · cosθ_x / d² · ρ_x/π        [W/(sr·m²)]
+// (irradiance E(x) = Φ/π · cosθ_vpl · cosθ_x / d², W/m²), with d the distance, θ_vpl the angle
+// at the VPL between its normal and x, θ_x the angle at x between its normal and the VPL.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace bounce {
+
+struct Vpl {
+  glm::vec3 position{0.0f};            // world, metres
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit; the side the VPL emits into
+  glm::vec3 flux{0.0f};                // Φ, W per channel, albedo of its surface included
+};
+
+}  // namespace bounce

@@ -1,0 +1,110 @@
+#include "bake/vpl_file.h"
+
+#include <bit>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "image/atomic_file.h"
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+constexpr char kMagic[8] = {'B', 'N', 'C', 'V', 'P', 'L', 'S', '\0'};
+constexpr std::size_t kHeaderBytes = 16;
+constexpr std::size_t kRecordBytes = 36;
+
+void putU32(std::vector<unsigned char>& out, std::size_t at, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out[at + i] = static_cast<unsigned char>(v >> (8 * i));
+}
+void putF32(std::vector<unsigned char>& out, std::size_t at, float v) {
+  putU32(out, at, std::bit_cast<uint32_t>(v));
+}
+
+uint32_t getU32(std::span<const unsigned char> bytes, std::size_t at) {
+  uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(bytes[at + i]) << (8 * i);
+  return v;
+}
+float getF32(std::span<const unsigned char> bytes, std::size_t at) {
+  return std::bit_cast<float>(getU32(bytes, at));
+}
+
+bool finite(glm::vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
+
+std::vector<unsigned char> encodeVpls(std::span<const Vpl> vpls) {
+  std::vector<unsigned char> out(kHeaderBytes + kRecordBytes * vpls.size(), 0);
+  for (std::size_t i = 0; i < sizeof kMagic; ++i) out[i] = static_cast<unsigned char>(kMagic[i]);
+  putU32(out, 8, kVplFormatVersion);
+  putU32(out, 12, static_cast<uint32_t>(vpls.size()));
+  for (std::size_t i = 0; i < vpls.size(); ++i) {
+    const std::size_t at = kHeaderBytes + kRecordBytes * i;
+    for (int c = 0; c < 3; ++c) {
+      putF32(out, at + 4 * c, vpls[i].position[c]);
+      putF32(out, at + 12 + 4 * c, vpls[i].normal[c]);
+      putF32(out, at + 24 + 4 * c, vpls[i].flux[c]);
+    }
+  }
+  return out;
+}
+
+std::vector<Vpl> decodeVpls(const std::filesystem::path& file,
+                            std::span<const unsigned char> bytes) {
+  if (bytes.size() < kHeaderBytes)
+    throw LoadError(file, "truncated: " + std::to_string(bytes.size()) +
+                              " bytes, the header needs " + std::to_string(kHeaderBytes));
+  if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw LoadError(file, "bad magic: not a bounce VPL file");
+  const uint32_t version = getU32(bytes, 8);
+  if (version != kVplFormatVersion)
+    throw LoadError(file, "format version " + std::to_string(version) +
+                              ", this build reads version " + std::to_string(kVplFormatVersion) +
+                              ": rebake");
+  const uint64_t count = getU32(bytes, 12);
+  const uint64_t expected = kHeaderBytes + kRecordBytes * count;
+  if (bytes.size() != expected)
+    throw LoadError(file, std::to_string(count) + " VPLs announced need " +
+                              std::to_string(expected) + " bytes, the file has " +
+                              std::to_string(bytes.size()));
+  std::vector<Vpl> vpls(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t at = kHeaderBytes + kRecordBytes * i;
+    Vpl& v = vpls[i];
+    for (int c = 0; c < 3; ++c) {
+      v.position[c] = getF32(bytes, at + 4 * c);
+      v.normal[c] = getF32(bytes, at + 12 + 4 * c);
+      v.flux[c] = getF32(bytes, at + 24 + 4 * c);
+    }
+    const std::string which = "VPL " + std::to_string(i) + ": ";
+    if (!finite(v.position)) throw LoadError(file, which + "position is not finite");
+    if (!finite(v.normal) || std::abs(glm::length(v.normal) - 1.0f) > 1e-3f)
+      throw LoadError(file, which + "normal is not a unit vector");
+    if (!finite(v.flux) || v.flux.r < 0.0f || v.flux.g < 0.0f || v.flux.b < 0.0f)
+      throw LoadError(file, which + "flux is negative or not finite");
+  }
+  return vpls;
+}
+
+void writeVplFile(const std::filesystem::path& file, std::span<const Vpl> vpls) {
+  writeFileAtomically(file, encodeVpls(vpls));
+}
+
+std::vector<Vpl> readVplFile(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw LoadError(file, "missing");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw LoadError(file, std::string("cannot open: ") + std::strerror(errno));
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  if (in.bad()) throw LoadError(file, "read failed");
+  return decodeVpls(file, bytes);
+}
+
+}  // namespace bounce

@@ -1,0 +1,38 @@
+// The bake folder's `vpls` file: the virtual point lights of a bake (bake/vpl.h), a versioned
+// little-endian binary, with its reader and writer here. GL-free.
+//
+//   offset  size        field
+//   0       char[8]     magic "BNCVPLS\0"
+//   8       u32         version (= kVplFormatVersion)
+//   12      u32         count N
+//   16      N × 36      per VPL, 9 × f32: position x y z (m) | normal x y z (unit) |
+//                       flux Φ r g b (W per channel, albedo of its surface included)
+//   16+36N  —           end of file (nothing may follow)
+//
+// The reader refuses (LoadError naming the file and the reason) a wrong magic or version, a
+// size that disagrees with N, a non-finite position, a normal not of unit length (±1e-3), and a
+// flux that is negative or not finite.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "bake/vpl.h"
+
+namespace bounce {
+
+inline constexpr uint32_t kVplFormatVersion = 1;
+inline constexpr char kVplFileName[] = "vpls";
+
+std::vector<unsigned char> encodeVpls(std::span<const Vpl> vpls);
+// `file` is only named in errors.
+std::vector<Vpl> decodeVpls(const std::filesystem::path& file,
+                            std::span<const unsigned char> bytes);
+
+// Whole file or nothing (engine/image/atomic_file.h); throws std::runtime_error naming the file.
+void writeVplFile(const std::filesystem::path& file, std::span<const Vpl> vpls);
+// Throws LoadError naming the file and the reason (missing, unreadable, malformed).
+std::vector<Vpl> readVplFile(const std::filesystem::path& file);
+
+}  // namespace bounce

@@ -1,0 +1,147 @@
+// The `vpls` file (engine/bake/vpl_file.h): the documented byte layout, a bit-exact round trip,
+// a refusal naming the file and the reason for each kind of damage, and its place in the bake
+// folder (written and read with the rest when the Bake has VPLs, absent otherwise).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
+#include "bake/vpl_file.h"
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<Vpl> someVpls() {
+  return {{{1.5f, -2.0f, 0.25f}, {0, 0, 1}, {0.5f, 0.25f, 1e-30f}},
+          {{-1e6f, 3.0e-7f, 7.0f}, {0.6f, 0.0f, -0.8f}, {3.0e38f, 0.0f, 1.17549435e-38f}},
+          {{0, 0, 0}, {0, -1, 0}, {1, 2, 3}}};
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("bounce_vpl_file_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+uint32_t u32At(const std::vector<unsigned char>& b, std::size_t at) {
+  return b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) | (static_cast<uint32_t>(b[at + 3]) << 24);
+}
+
+// decodeVpls's message, or "" when it succeeds.
+std::string decodeError(const std::vector<unsigned char>& bytes) {
+  try {
+    decodeVpls("dir/vpls", bytes);
+  } catch (const LoadError& e) {
+    EXPECT_EQ(e.file(), fs::path("dir/vpls"));
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VplFile, BytesFollowTheDocumentedLayout) {
+  const std::vector<Vpl> vpls = someVpls();
+  const std::vector<unsigned char> b = encodeVpls(vpls);
+  ASSERT_EQ(b.size(), 16u + 36u * vpls.size());
+  EXPECT_EQ(std::memcmp(b.data(), "BNCVPLS\0", 8), 0);
+  EXPECT_EQ(u32At(b, 8), 1u);
+  EXPECT_EQ(u32At(b, 12), 3u);
+  // Second VPL: position at 16 + 36, normal 12 bytes on, flux 24 bytes on; little-endian f32.
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52)), -1e6f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 12)), 0.6f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 20)), -0.8f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 24)), 3.0e38f);
+}
+
+TEST(VplFile, RoundTripIsBitExact) {
+  const fs::path file = freshDir("roundtrip") / "vpls";
+  for (const std::vector<Vpl>& vpls : {someVpls(), std::vector<Vpl>{}}) {
+    writeVplFile(file, vpls);
+    const std::vector<Vpl> back = readVplFile(file);
+    ASSERT_EQ(back.size(), vpls.size());
+    for (std::size_t i = 0; i < vpls.size(); ++i) {
+      EXPECT_EQ(back[i].position, vpls[i].position);
+      EXPECT_EQ(back[i].normal, vpls[i].normal);
+      EXPECT_EQ(back[i].flux, vpls[i].flux);
+    }
+  }
+}
+
+TEST(VplFile, DamagedFilesAreRefusedWithTheFileAndTheReason) {
+  const std::vector<unsigned char> good = encodeVpls(someVpls());
+  ASSERT_EQ(decodeError(good), "");
+  const auto damaged = [&](auto change) {
+    std::vector<unsigned char> b = good;
+    change(b);
+    return decodeError(b);
+  };
+  const auto putF32 = [](std::vector<unsigned char>& b, std::size_t at, float v) {
+    const uint32_t u = std::bit_cast<uint32_t>(v);
+    for (int i = 0; i < 4; ++i) b[at + i] = static_cast<unsigned char>(u >> (8 * i));
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const struct {
+    const char* reason;
+    std::string message;
+  } cases[] = {
+      {"truncated", decodeError({good.begin(), good.begin() + 10})},
+      {"bad magic", damaged([](auto& b) { b[3] = 'X'; })},
+      {"format version 2", damaged([](auto& b) { b[8] = 2; })},
+      {"4 VPLs announced need 160 bytes, the file has 124", damaged([](auto& b) { b[12] = 4; })},
+      {"the file has 125", damaged([](auto& b) { b.push_back(0); })},
+      {"VPL 1: position is not finite", damaged([&](auto& b) { putF32(b, 52 + 4, nan); })},
+      {"VPL 0: normal is not a unit vector", damaged([&](auto& b) { putF32(b, 16 + 20, 0.9f); })},
+      {"VPL 2: flux is negative", damaged([&](auto& b) { putF32(b, 88 + 28, -1.0f); })},
+      {"VPL 2: flux is negative or not finite",
+       damaged([&](auto& b) { putF32(b, 88 + 32, std::numeric_limits<float>::infinity()); })},
+  };
+  for (const auto& c : cases) {
+    EXPECT_NE(c.message.find("dir/vpls: "), std::string::npos) << c.message;
+    EXPECT_NE(c.message.find(c.reason), std::string::npos)
+        << "expected '" << c.reason << "' in: " << c.message;
+  }
+  try {
+    readVplFile(freshDir("missing") / "vpls");
+    FAIL() << "a missing file was read";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing"), std::string::npos);
+  }
+}
+
+// A bake with VPLs writes <dir>/vpls and reads them back; one without has no such file.
+TEST(VplFile, TravelsWithTheBakeFolder) {
+  Scene scene;
+  Bake bake;
+  bake.layout.width = 1;
+  bake.layout.height = 1;
+  bake.layout.texelSize = 1.0f;
+  bake.irradiance = Image(1, 1);
+  bake.manifestJson =
+      nlohmann::json{{"formatVersion", kBakeFormatVersion}, {"sceneHash", sceneContentHash(scene)}}
+          .dump();
+  const fs::path dir = freshDir("folder") / "scene.bake";
+  writeBake(dir, bake);
+  EXPECT_FALSE(fs::exists(dir / "vpls"));
+  EXPECT_FALSE(readBake(dir, scene).vpls.has_value());
+  bake.vpls = someVpls();
+  writeBake(dir, bake);
+  ASSERT_TRUE(fs::exists(dir / "vpls"));
+  const Bake back = readBake(dir, scene);
+  ASSERT_TRUE(back.vpls.has_value());
+  ASSERT_EQ(back.vpls->size(), 3u);
+  EXPECT_EQ((*back.vpls)[1].flux, someVpls()[1].flux);
+}
+
+}  // namespace
+}  // namespace bounce
