@@ -282,6 +282,8 @@ TEST(SceneContentHash, SameContentSameHashAnyChangeAnotherHash) {
       {"light intensity", [](Scene& s) { s.lights[0].intensity.r = 11; }},
       {"light type", [](Scene& s) { s.lights[0].type = LightType::Spot; }},
       {"light cone", [](Scene& s) { s.lights[0].outerConeAngle = 0.5f; }},
+      // A baked-only light's direct light is in the map, a live light's is not.
+      {"light baked direct", [](Scene& s) { s.lights[0].bakeDirect = true; }},
       {"no light", [](Scene& s) { s.lights.clear(); }},
   };
   for (const auto& [what, change] : changes) {
