@@ -122,9 +122,12 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       const double standardError = std::sqrt(variance / static_cast<double>(n));
       const float relative = mean > 0.0 ? static_cast<float>(standardError / mean) : 0.0f;
       out.relativeError[texel] = relative;
-      if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && relative < settings.targetError)
+      // With mean 0 the relative error is undefined (stored as 0): no reason to stop early.
+      if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && mean > 0.0 &&
+          relative < settings.targetError)
         break;
-      if (mean <= 0.0 && variance <= 0.0) break;  // nothing reaches this texel
+      // A texel whose samples so far are all 0 goes on to maxSpp: its light may come through
+      // rare directions (a small lit surface), and stopping would leave it biased to black.
     }
     out.samples[texel] = n;
     out.irradiance.pixels[texel] = glm::vec3(sum / static_cast<double>(n));

@@ -324,7 +324,7 @@ std::string sceneContentHash(const Scene& scene) {
     h.vec(light.irradiance);
     h.f32(light.innerConeAngle);
     h.f32(light.outerConeAngle);
-    h.u64(light.bakeDirect ? 1 : 0);
+    h.u64(light.bakeDirect ? 1 : 0);  // whether its direct light is in the map
   }
   return h.hex();
 }

@@ -113,6 +113,55 @@ TEST(AdaptiveSampling, EstimatedErrorMatchesTheActualErrorAndTheTargetIsMet) {
   EXPECT_GT(estimated, 0.5 * actual) << "estimated " << estimated << " actual " << actual;
 }
 
+// A floor whose only indirect light is a small lit board 1 m above it: a cosine-distributed
+// first direction meets the board with probability p = (board's projected solid angle)/π,
+// 1.1% (floor corners) to 2.6% (centre), so 16 samples all miss it with probability 0.65 to
+// 0.84. Every floor texel sees the board, so its irradiance is positive; a texel that stops
+// sampling because its first samples found nothing keeps 0 instead (biased low). At 1024 spp
+// all miss with probability below (1 − 0.011)^1024 ≈ 1e-5 per texel.
+void buildFloorUnderALitBoard(test::World& world) {
+  const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.8f));
+  const uint32_t lamp = test::addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(100.0f));
+  test::addQuad(world.scene, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, white);  // faces +y
+  test::addQuad(world.scene, {0.35f, 1, 0.35f}, {0.65f, 1, 0.35f}, {0.65f, 1, 0.65f},
+                {0.35f, 1, 0.65f}, white);  // the board, faces −y
+  test::addQuad(world.scene, {0.45f, 0.9f, 0.45f}, {0.45f, 0.9f, 0.55f}, {0.55f, 0.9f, 0.55f},
+                {0.55f, 0.9f, 0.45f}, lamp);  // faces +y: lights the board, not the floor
+  world.build();
+}
+
+void expectNoBlackFloorTexel(const test::QuadAtlas& atlas, const LightmapBake& bake) {
+  int floorTexels = 0;
+  for (int y = 0; y < atlas.layout.height; ++y) {
+    for (int x = 0; x < atlas.layout.width; ++x) {
+      const std::size_t t = static_cast<std::size_t>(y) * atlas.layout.width + x;
+      glm::vec3 p;
+      uint32_t instance = 0;
+      if (!bake.covered[t] || !atlas.texelCentre(x, y, p, instance) || instance != 0) continue;
+      ++floorTexels;
+      EXPECT_GT(luminance(bake.irradiance.pixels[t]), 0.0f)
+          << "floor texel (" << x << ", " << y << ") at " << p.x << ", " << p.z << " after "
+          << bake.samples[t] << " samples";
+    }
+  }
+  EXPECT_EQ(floorTexels, 64);
+}
+
+TEST(AdaptiveSampling, RarelyReachedTexelsAreNotLeftBlack) {
+  test::World world;
+  buildFloorUnderALitBoard(world);
+  const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 32);
+  for (const float target : {0.0f, 0.1f}) {
+    SCOPED_TRACE(target);
+    LightmapBakeSettings settings = test::testBakeSettings(1024);
+    settings.irradiance.targetError = target;
+    settings.stitch = false;
+    const LightmapBake bake =
+        bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+    expectNoBlackFloorTexel(atlas, bake);
+  }
+}
+
 TEST(Determinism, SameSeedGivesBitIdenticalLightmapsAtOneAndTwoThreads) {
   test::World world;
   buildCornerLampRoom(world);

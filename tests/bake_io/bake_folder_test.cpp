@@ -283,6 +283,7 @@ TEST(SceneContentHash, SameContentSameHashAnyChangeAnotherHash) {
       {"light type", [](Scene& s) { s.lights[0].type = LightType::Spot; }},
       {"light cone", [](Scene& s) { s.lights[0].outerConeAngle = 0.5f; }},
       {"no light", [](Scene& s) { s.lights.clear(); }},
+      // A baked-only light's direct light is in the map, a live light's is not.
       {"light baked", [](Scene& s) { s.lights[0].bakeDirect = true; }},
   };
   for (const auto& [what, change] : changes) {
