@@ -141,19 +141,24 @@ class MaterialLibraries : public tinyobj::MaterialReader {
     if (!reason.empty())
       throw LoadError(obj_, "material library '" + name + "' (" + mtl.string() + ") " +
                                 (reason == "file not found" ? "not found" : reason));
-    const std::string text = readText(mtl);
-    // Kd/Ka/Ks/Ke/Tf: 1 or 3 numbers; Ns, Ni, d, Tr: one.
-    checkNumbers(mtl, text,
-                 {{"Kd", {1, 3}},
-                  {"Ka", {1, 3}},
-                  {"Ks", {1, 3}},
-                  {"Ke", {1, 3}},
-                  {"Tf", {1, 3}},
-                  {"Ns", {1, 1}},
-                  {"Ni", {1, 1}},
-                  {"d", {1, 1}},
-                  {"Tr", {1, 1}}},
-                 INFINITY);
+    std::string text;
+    try {  // errors name the OBJ (the file the user gave) and the library
+      text = readText(mtl);
+      // Kd/Ka/Ks/Ke/Tf: 1 or 3 numbers; Ns, Ni, d, Tr: one.
+      checkNumbers(mtl, text,
+                   {{"Kd", {1, 3}},
+                    {"Ka", {1, 3}},
+                    {"Ks", {1, 3}},
+                    {"Ke", {1, 3}},
+                    {"Tf", {1, 3}},
+                    {"Ns", {1, 1}},
+                    {"Ni", {1, 1}},
+                    {"d", {1, 1}},
+                    {"Tr", {1, 1}}},
+                   INFINITY);
+    } catch (const LoadError& e) {
+      throw LoadError(obj_, "material library '" + name + "': " + e.reason());
+    }
     std::istringstream in(text);
     tinyobj::LoadMtl(materialMap, materials, &in, warn, err);
     return true;
