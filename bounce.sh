@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 packages=(
   cmake g++ make pkg-config python3-glad
   libosmesa6-dev libegl1-mesa-dev libgles-dev libglfw3-dev libglm-dev
-  libopenmesh-dev libstb-dev libembree-dev libtbb-dev
+  libopenmesh-dev libeigen3-dev libstb-dev libembree-dev libtbb-dev
   libtinygltf-dev libtinyobjloader-dev libtinyexr-dev
   libcli11-dev nlohmann-json3-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth

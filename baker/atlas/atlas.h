@@ -25,8 +25,24 @@ struct AtlasSettings {
 struct Atlas {
   LightmapLayout layout;
   std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
+  // Added to the interface: the chart of every triangle, parallel to layout.instances[i].cornerUv
+  // (one per triangle), chart ids in [0, layout.chartCount). Texels of different charts never
+  // neighbour within `padding`; filters (dilation, denoiser, seams) must not mix charts.
+  std::vector<std::vector<uint32_t>> triangleChart;
+  // Added to the interface, for reports (bake.json, bounce-atlas): what the charts are.
+  struct ChartKinds {
+    int planar = 0;      // planar projections of (near-)flat regions
+    int conformal = 0;   // least-squares conformal maps of curved regions
+    int meshUv1 = 0;     // instances laid out by their mesh's own TEXCOORD_1 (one chart each)
+    int degenerate = 0;  // groups of area-less triangles (one texel each)
+  } chartKinds;
+  double staticArea = 0.0;  // m², surface of all static instances (world space)
 };
 
+// Throws std::invalid_argument for settings that make no sense (padding < 0, texelSize < 0,
+// texelBudget < 1 when texelSize is 0, maxSize < 1). A scene without static surface gives an
+// empty layout (0 × 0). When the charts do not fit in maxSize², the texel size grows by 10 % until
+// they do (with a note); throws std::runtime_error when they do not fit even at one texel each.
 Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings);
 
 }  // namespace bounce

@@ -209,8 +209,9 @@ glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite)
   return glm::vec3(0.0f);
 }
 
-glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal,
-                                 SobolSampler& sampler) const {
+glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
+                                 bool* nonFinite) const {
+  if (nonFinite != nullptr) *nonFinite = false;
   // A white (ρ = 1) Lambertian surface reflects Lo = E/π in every direction.
   SurfacePoint point;
   point.position = position;
@@ -219,7 +220,9 @@ glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal,
   point.albedo = glm::vec3(1.0f);
   const glm::vec3 lo = clamped(reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler));
   const glm::vec3 e = kPi * lo;
-  return isFinite(e) ? e : glm::vec3(0.0f);
+  if (isFinite(e)) return e;
+  if (nonFinite != nullptr) *nonFinite = true;
+  return glm::vec3(0.0f);
 }
 
 }  // namespace bounce

@@ -34,8 +34,11 @@ class PathTracer {
 
   // One-sample estimate of the irradiance E (W/m²) at `position` on a surface with unit
   // normal `normal` (facing the hemisphere integrated over): E = π × the radiance a white
-  // Lambertian surface there would reflect, estimated with the same NEE + MIS.
-  glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler) const;
+  // Lambertian surface there would reflect, estimated with the same NEE + MIS. Always finite,
+  // as Li: a non-finite estimate is returned as black and, when `nonFinite` is given,
+  // *nonFinite says so, so the baker can count such samples.
+  glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
+                       bool* nonFinite = nullptr) const;
 
   bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty(); }
   const EmitterTable& emitters() const { return emitters_; }

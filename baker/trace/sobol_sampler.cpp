@@ -86,6 +86,7 @@ glm::uvec3 SobolSampler::pairSeeds(uint32_t d) {
 }
 
 glm::uvec2 SobolSampler::pairBits() {
+  if (log_ != nullptr) log_->push_back(dimension_);
   const glm::uvec3 seeds = pairSeeds(dimension_++);
   // Shuffling the index by a nested uniform scramble keeps every power-of-two prefix a
   // (0,m,2)-net (the low m bits of the shuffled index are a permutation of the low m bits),

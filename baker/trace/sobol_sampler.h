@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -47,6 +48,10 @@ class SobolSampler {
   glm::vec2 get2D();
   float get1D();
 
+  // For tests of the dimension allocation: while set, the index of every pair drawn is
+  // appended to *log, so a test can check that no two decisions of one sample share a pair.
+  void logDimensions(std::vector<uint32_t>* log) { log_ = log; }
+
  private:
   glm::uvec2 pairBits();
   // The scramble seeds of pair d (index shuffle, x, y): functions of (seed, pixel, d) only,
@@ -59,6 +64,7 @@ class SobolSampler {
   uint32_t dimension_ = 0;
   uint32_t cached_ = 0;  // bit d set: seeds_[d] is valid
   std::array<glm::uvec3, kCachedPairs> seeds_;
+  std::vector<uint32_t>* log_ = nullptr;
 };
 
 }  // namespace bounce

@@ -8,6 +8,7 @@
 
 #include <tbb/global_control.h>
 
+#include "trace/sampling.h"
 #include "transport_scenes.h"
 
 namespace bounce {
@@ -215,6 +216,43 @@ TEST(BadInput, NonFiniteSamplesAreCounted) {
   const CameraRender good =
       traceCamera(sane.scene, sane.geometry, *sane.kernel, test::furnaceCamera(), 8, 8, settings);
   EXPECT_EQ(good.nonFiniteSamples, 0u);
+}
+
+// The baker's entry point counts the same way: irradiance in the overflowing furnace (at its
+// centre, facing +z) comes back finite and flagged; in a sane furnace nothing is flagged and
+// the flag is cleared on every call.
+TEST(BadInput, NonFiniteIrradianceSamplesAreCounted) {
+  TraceSettings settings = quick();
+  settings.maxDepth = 8;
+  test::World huge = test::furnace(0.9f, glm::vec3(3e38f));
+  huge.build();
+  const PathTracer bad(huge.scene, huge.geometry, *huge.kernel, settings);
+  test::World sane = test::furnace(0.9f, glm::vec3(1.0f));
+  sane.build();
+  const PathTracer good(sane.scene, sane.geometry, *sane.kernel, settings);
+  SobolSampler sampler(1u, 2u);
+  int badCount = 0, goodCount = 0;
+  const int n = 64;
+  for (int i = 0; i < n; ++i) {
+    sampler.startSample(static_cast<uint32_t>(i));
+    bool flagged = false;
+    const glm::vec3 e = bad.irradiance({0, 0, 0}, {0, 0, 1}, sampler, &flagged);
+    EXPECT_TRUE(isFinite(e));
+    if (flagged) {
+      ++badCount;
+      EXPECT_EQ(e, glm::vec3(0.0f)) << "a non-finite estimate is returned as black";
+    }
+    sampler.startSample(static_cast<uint32_t>(i));
+    flagged = true;  // must be cleared
+    const glm::vec3 fine = good.irradiance({0, 0, 0}, {0, 0, 1}, sampler, &flagged);
+    EXPECT_TRUE(isFinite(fine));
+    if (flagged) ++goodCount;
+    sampler.startSample(static_cast<uint32_t>(i));
+    EXPECT_EQ(fine, good.irradiance({0, 0, 0}, {0, 0, 1}, sampler)) << "the flag is optional";
+  }
+  std::printf("overflowing furnace: %d of %d irradiance samples non-finite\n", badCount, n);
+  EXPECT_GT(badCount, 0);
+  EXPECT_EQ(goodCount, 0);
 }
 
 TEST(BadInput, InvalidSettingsThrow) {

@@ -64,15 +64,19 @@ void World::build(RayBackend backend) {
   kernel = makeRayKernel(geometry, backend);
 }
 
-Estimate estimateLi(const PathTracer& tracer, const Ray& ray, uint32_t seed, uint32_t pixel,
-                    int n) {
+namespace {
+
+// Welford's running mean and variance of n one-sample estimates `one(sampler)`, each drawn
+// from dimension 1 on of sample i of the pattern (seed, pixel).
+template <typename OneSample>
+Estimate estimate(uint32_t seed, uint32_t pixel, int n, OneSample one) {
   SobolSampler sampler(seed, pixel);
   Estimate e;
   glm::dvec3 m2(0.0);
   for (int i = 0; i < n; ++i) {
     sampler.startSample(static_cast<uint32_t>(i));
     sampler.setDimension(1);  // as the camera renderer does (dimension 0: pixel jitter)
-    const glm::dvec3 value(tracer.Li(ray, sampler));
+    const glm::dvec3 value(one(sampler));
     const glm::dvec3 delta = value - e.mean;
     e.mean += delta / static_cast<double>(i + 1);
     m2 += delta * (value - e.mean);
@@ -80,6 +84,20 @@ Estimate estimateLi(const PathTracer& tracer, const Ray& ray, uint32_t seed, uin
   e.n = n;
   e.variance = n > 1 ? m2 / static_cast<double>(n - 1) : glm::dvec3(0.0);
   return e;
+}
+
+}  // namespace
+
+Estimate estimateLi(const PathTracer& tracer, const Ray& ray, uint32_t seed, uint32_t pixel,
+                    int n) {
+  return estimate(seed, pixel, n, [&](SobolSampler& sampler) { return tracer.Li(ray, sampler); });
+}
+
+Estimate estimateIrradiance(const PathTracer& tracer, glm::vec3 position, glm::vec3 normal,
+                            uint32_t seed, uint32_t pixel, int n) {
+  return estimate(seed, pixel, n, [&](SobolSampler& sampler) {
+    return tracer.irradiance(position, normal, sampler);
+  });
 }
 
 ImageMean imageMean(const CameraRender& render, int spp) {

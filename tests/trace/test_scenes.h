@@ -48,6 +48,12 @@ struct Estimate {
 // n estimates of tracer.Li(ray) with samples 0..n−1 of the pattern (seed, pixel).
 Estimate estimateLi(const PathTracer& tracer, const Ray& ray, uint32_t seed, uint32_t pixel, int n);
 
+// n estimates of tracer.irradiance(position, normal) (W/m²) with samples 0..n−1 of the pattern
+// (seed, pixel), the sampler at dimension 1 as the baker leaves it (dimension 0: the point in
+// the texel).
+Estimate estimateIrradiance(const PathTracer& tracer, glm::vec3 position, glm::vec3 normal,
+                            uint32_t seed, uint32_t pixel, int n);
+
 // The mean radiance over an image's pixels and its standard error: pixels are independent
 // estimates (distinct sampler patterns), so Var(mean) = Σ_p Var_p / (spp · P²).
 struct ImageMean {

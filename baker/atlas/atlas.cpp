@@ -1,0 +1,226 @@
+#include "atlas/atlas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "atlas/chart_flatten.h"
+#include "atlas/chart_merge.h"
+#include "atlas/chart_pack.h"
+#include "atlas/chart_segment.h"
+#include "atlas/mesh_uv1.h"
+#include "atlas/uv_geometry.h"
+
+namespace bounce {
+namespace {
+
+// Slack below which a chart's extent is not rounded up to one more texel (its last texel would
+// hold a sliver narrower than 1 % of a texel).
+constexpr float kExtentSlack = 0.01f;
+// Charts covering fewer texels than this merge across folds with small neighbours.
+constexpr double kSmallChartTexels = 16.0;
+
+struct StaticInstance {
+  uint32_t instance = 0;
+  WorldMesh world;
+  std::vector<Chart> charts;  // generated, in metres (texelSize 1); empty when uv1 is used
+};
+
+WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
+  const Mesh& mesh = scene.meshes.at(instance.mesh);
+  WorldMesh world;
+  world.indices = mesh.indices;
+  world.positions.reserve(mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions)
+    world.positions.emplace_back(instance.transform * glm::vec4(p, 1.0f));
+  return world;
+}
+
+// The charts of one instance, flattened in metres and turned to their smallest rectangle.
+// Charts under kSmallChartTexels texels at `texelSize` may merge across folds (chart_merge.h).
+std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, float texelSize) {
+  const TriangleGroups groups = segmentCharts(world, SegmentSettings{});
+  std::vector<FlatGroup> flat;
+  for (const std::vector<uint32_t>& group : groups.charts)
+    flat.push_back({group, flattenChart(world, group, 1.0f)});
+  const double smallArea = kSmallChartTexels * static_cast<double>(texelSize) * texelSize;
+  flat = mergeSmallCharts(world, std::move(flat), groups.contacts, smallArea);
+  std::vector<Chart> charts;
+  for (FlatGroup& group : flat) {
+    if (!group.flat.cornerUv.empty()) {
+      orientChart(group.flat.cornerUv);
+      charts.push_back(
+          {instance, group.triangles, std::move(group.flat.cornerUv), group.flat.source});
+      continue;
+    }
+    // No flattening of the whole region is free of folds: one chart per triangle.
+    for (const uint32_t t : group.triangles) {
+      FlatChart single = flattenPlanar(world, {t}, 1.0f);
+      orientChart(single.cornerUv);
+      charts.push_back({instance, {t}, std::move(single.cornerUv), ChartSource::Planar});
+    }
+  }
+  if (!groups.degenerate.empty())
+    charts.push_back({instance, groups.degenerate,
+                      std::vector<glm::vec2>(3 * groups.degenerate.size(), glm::vec2(0.5f)),
+                      ChartSource::Degenerate});
+  return charts;
+}
+
+// Scales a chart laid out in metres to texel units and returns its extent in whole texels.
+glm::ivec2 toTexels(Chart& chart, float texelSize) {
+  if (chart.source == ChartSource::Degenerate) return {1, 1};
+  glm::vec2 hi(0.0f);
+  for (glm::vec2& p : chart.cornerUv) {
+    p /= texelSize;
+    hi = glm::max(hi, p);
+  }
+  const glm::ivec2 cells(std::max(1.0f, std::ceil(hi.x - kExtentSlack)),
+                         std::max(1.0f, std::ceil(hi.y - kExtentSlack)));
+  // Pull an overhang within the slack back inside the cells.
+  const float fit = std::min({1.0f, static_cast<float>(cells.x) / std::max(hi.x, 1e-30f),
+                              static_cast<float>(cells.y) / std::max(hi.y, 1e-30f)});
+  if (fit < 1.0f)
+    for (glm::vec2& p : chart.cornerUv) p *= fit;
+  return cells;
+}
+
+}  // namespace
+
+Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
+  if (settings.padding < 0) throw std::invalid_argument("atlas padding must be ≥ 0 texels");
+  if (settings.texelSize < 0.0f || !std::isfinite(settings.texelSize))
+    throw std::invalid_argument("atlas texel size must be a positive number of metres (or 0)");
+  if (settings.texelSize == 0.0f && settings.texelBudget < 1)
+    throw std::invalid_argument("atlas texel budget must be ≥ 1 texel");
+  if (settings.maxSize < 1) throw std::invalid_argument("atlas maximum size must be ≥ 1 texel");
+
+  Atlas atlas;
+  atlas.layout.padding = settings.padding;
+  std::vector<StaticInstance> statics;
+  double staticArea = 0.0;  // m²
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance& instance = scene.instances[i];
+    if (instance.mobility != Mobility::Static) continue;
+    StaticInstance s{i, worldMeshOf(scene, instance), {}};
+    if (s.world.triangleCount() == 0) continue;
+    for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
+      if (const double a = s.world.area(t); std::isfinite(a)) staticArea += a;
+    statics.push_back(std::move(s));
+  }
+  atlas.staticArea = staticArea;
+  if (statics.empty() || !(staticArea > 0.0)) return atlas;
+
+  float texelSize = settings.texelSize > 0.0f
+                        ? settings.texelSize
+                        : static_cast<float>(std::sqrt(staticArea / settings.texelBudget));
+  std::vector<std::string> uv1Notes;
+  for (;;) {
+    // Charts at this texel size: the mesh's own uv1 when usable, else generated ones.
+    std::vector<Chart> charts;
+    std::vector<glm::ivec2> cells;
+    uv1Notes.clear();
+    for (StaticInstance& s : statics) {
+      const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
+      const Uv1Check uv1 =
+          checkMeshUv1(mesh, s.world, texelSize, settings.padding, settings.maxSize);
+      if (uv1.usable) {
+        Chart chart{s.instance, {}, {}, ChartSource::MeshUv1};
+        for (uint32_t t = 0; t < mesh.triangleCount(); ++t) chart.triangles.push_back(t);
+        for (const uint32_t v : mesh.indices)
+          chart.cornerUv.push_back(mesh.uv1[v] * static_cast<float>(uv1.side));
+        charts.push_back(std::move(chart));
+        cells.emplace_back(uv1.side, uv1.side);
+        continue;
+      }
+      if (!uv1.reason.empty())
+        uv1Notes.push_back("mesh '" + mesh.name + "' (instance '" +
+                           scene.instances[s.instance].name + "'): " + uv1.reason +
+                           ", so its lightmap UVs were generated");
+      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texelSize);
+      for (Chart chart : s.charts) {
+        cells.push_back(toTexels(chart, texelSize));
+        charts.push_back(std::move(chart));
+      }
+    }
+    std::vector<glm::ivec2> rects;
+    for (const glm::ivec2 c : cells) rects.push_back(c + settings.padding);
+    const std::optional<Packing> packing = packRectangles(rects, settings.maxSize);
+    if (!packing) {
+      // Coarser texels shrink every chart, down to one texel plus its padding each; when even
+      // that does not fit, no texel size will.
+      const bool allMinimal = std::all_of(cells.begin(), cells.end(),
+                                          [](glm::ivec2 c) { return c.x == 1 && c.y == 1; });
+      if (allMinimal) {
+        std::ostringstream reason;
+        reason << "the " << charts.size() << " lightmap charts of " << scene.source
+               << " do not fit in a " << settings.maxSize << " x " << settings.maxSize
+               << " atlas even at one texel each (with " << settings.padding
+               << " texels padding); raise the maximum atlas size";
+        throw std::runtime_error(reason.str());
+      }
+      texelSize *= 1.1f;
+      continue;
+    }
+    if (texelSize != settings.texelSize && settings.texelSize > 0.0f) {
+      std::ostringstream note;
+      note << "the charts do not fit in " << settings.maxSize << "² texels at "
+           << settings.texelSize << " m per texel, so the texel size is " << texelSize << " m";
+      atlas.notes.push_back(note.str());
+    }
+
+    // Place the charts; padding/2 texels before each chart, the rest after it.
+    LightmapLayout& layout = atlas.layout;
+    layout.width = packing->width;
+    layout.height = packing->height;
+    layout.texelSize = texelSize;
+    layout.chartCount = static_cast<int>(charts.size());
+    for (const Chart& chart : charts) {
+      Atlas::ChartKinds& kinds = atlas.chartKinds;
+      ++(chart.source == ChartSource::Planar      ? kinds.planar
+         : chart.source == ChartSource::Conformal ? kinds.conformal
+         : chart.source == ChartSource::MeshUv1   ? kinds.meshUv1
+                                                  : kinds.degenerate);
+    }
+    const glm::vec2 size(static_cast<float>(layout.width), static_cast<float>(layout.height));
+    layout.instances.resize(statics.size());
+    atlas.triangleChart.resize(statics.size());
+    for (std::size_t i = 0; i < statics.size(); ++i) {
+      layout.instances[i].instance = statics[i].instance;
+      layout.instances[i].cornerUv.assign(statics[i].world.indices.size(), glm::vec2(0.0f));
+      atlas.triangleChart[i].assign(statics[i].world.triangleCount(), 0u);
+    }
+    std::vector<uint8_t> covered(static_cast<std::size_t>(layout.width) * layout.height, 0);
+    for (std::size_t c = 0; c < charts.size(); ++c) {
+      const Chart& chart = charts[c];
+      const std::size_t slot = static_cast<std::size_t>(
+          std::find_if(statics.begin(), statics.end(),
+                       [&](const StaticInstance& s) { return s.instance == chart.instance; }) -
+          statics.begin());
+      const glm::vec2 offset(packing->origin[c] + settings.padding / 2);
+      for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
+        const uint32_t t = chart.triangles[k];
+        atlas.triangleChart[slot][t] = static_cast<uint32_t>(c);
+        glm::vec2 texel[3];
+        for (int j = 0; j < 3; ++j) {
+          const glm::vec2 uv = (chart.cornerUv[3 * k + j] + offset) / size;
+          layout.instances[slot].cornerUv[3 * t + j] = uv;
+          texel[j] = uv * size;
+        }
+        forEachTouchedTexel(
+            texel[0], texel[1], texel[2], layout.width, layout.height,
+            [&](int x, int y) { covered[static_cast<std::size_t>(y) * layout.width + x] = 1; });
+      }
+    }
+    std::size_t coveredCount = 0;
+    for (const uint8_t c : covered) coveredCount += c;
+    layout.utilisation =
+        static_cast<float>(static_cast<double>(coveredCount) / static_cast<double>(covered.size()));
+    break;
+  }
+  atlas.notes.insert(atlas.notes.begin(), uv1Notes.begin(), uv1Notes.end());
+  return atlas;
+}
+
+}  // namespace bounce
