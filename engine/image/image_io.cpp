@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,42 @@ void requireSize(const std::filesystem::path& path, const Image& image) {
           static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
     throw std::runtime_error(path.string() + ": refusing to write an image of size " +
                              std::to_string(image.width) + "x" + std::to_string(image.height));
+}
+
+// tinyexr 1.0.1's header parser assert()s (aborting the process) on two header attributes it
+// does not validate: a `type` string other than scanlineimage/tiledimage (or one that disagrees
+// with the version's tiled flag) and a `tiles` attribute that is not 9 bytes. Found by fuzz_exr
+// (tests/corpus/found/fuzz_exr_type_assert.exr). The attributes are walked here first; a
+// malformed walk is left for tinyexr to report.
+std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool tiled) {
+  std::size_t at = 8;  // magic + version
+  auto cString = [&](std::string& out) {
+    const std::size_t start = at;
+    while (at < bytes.size() && bytes[at] != 0) ++at;
+    if (at >= bytes.size()) return false;
+    out.assign(reinterpret_cast<const char*>(bytes.data()) + start, at - start);
+    ++at;
+    return true;
+  };
+  while (at < bytes.size() && bytes[at] != 0) {
+    std::string name, kind;
+    if (!cString(name) || !cString(kind) || bytes.size() - at < 4) return {};
+    int32_t size = 0;
+    std::memcpy(&size, bytes.data() + at, 4);
+    at += 4;
+    if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at) return {};
+    const std::string value(reinterpret_cast<const char*>(bytes.data()) + at,
+                            static_cast<std::size_t>(size));
+    at += static_cast<std::size_t>(size);
+    if (name == "type") {
+      const std::string type = value.substr(0, value.find('\0'));
+      if (!((type == "scanlineimage" && !tiled) || (type == "tiledimage" && tiled)))
+        return "header attribute type '" + type + "' is not this file's kind of image";
+    }
+    if (name == "tiles" && tiled && size != 9)
+      return "header attribute tiles has " + std::to_string(size) + " bytes (expected 9)";
+  }
+  return {};
 }
 
 }  // namespace
@@ -89,6 +126,8 @@ Image readExr(const std::filesystem::path& path) {
   if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
     throw fail("not an OpenEXR file (bad magic or version)");
   if (version.multipart || version.non_image) throw fail("multi-part and deep images are not read");
+  if (const std::string trigger = tinyexrAssertTrigger(bytes, version.tiled != 0); !trigger.empty())
+    throw fail(trigger);
   EXRHeader header;
   InitEXRHeader(&header);
   const char* err = nullptr;

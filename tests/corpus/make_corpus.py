@@ -445,14 +445,27 @@ write("exr/inverted_window.exr", exr(2, 2, window=(5, 5, 0, 0)), "error", "canno
 # The tiled bit without tile attributes: tinyexr reads the scanline data, which is right.
 write("exr/ok_tiled_flag_only.exr", exr(2, 2, flags=0x200), "ok", "width=2;height=2")
 
+
+def with_type(value):  # a `type` attribute before the end of the header
+    def tamper(b):
+        at = b.index(b"screenWindowWidth\0")
+        return b[:at] + attribute("type", "string", value) + b[at:]
+    return tamper
+
+
+write("exr/type_unknown.exr", exr(2, 2, tamper=with_type(b"els")), "error", "header attribute type 'els'")
+write("exr/type_tiled_on_scanline.exr", exr(2, 2, tamper=with_type(b"tiledimage")), "error", "header attribute type 'tiledimage'")
+
 # ---------------------------------------------------------------- found by fuzzing ----------
 # Inputs the fuzz targets saved (docs/fuzzing.md), committed as they were found (not generated):
-# each made bounce's readExr leak tinyexr's header (LoadEXRFromMemory) before the fix.
+# the first four made bounce's readExr leak tinyexr's header (LoadEXRFromMemory) before the fix.
 FOUND = [
     ("found/fuzz_exr_header_attribute.exr", "error", "cannot read EXR: Failed to read attribute"),
     ("found/fuzz_exr_corrupt_pixels.exr", "error", "cannot read EXR: Invalid data found when decoding pixels"),
     ("found/fuzz_exr_channel_info.exr", "error", "cannot read EXR: Failed to parse channel info"),
     ("found/fuzz_exr_data_width.exr", "error", "cannot read EXR: Invalid data width value"),
+    # tinyexr assert()ed (abort, no message) on its unknown `type` attribute "els\xa5chlist...".
+    ("found/fuzz_exr_type_assert.exr", "error", "cannot read EXR: header attribute type"),
 ]
 rows.extend(FOUND)
 
