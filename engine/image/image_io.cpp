@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,7 +38,7 @@ void requireSize(const std::filesystem::path& path, const Image& image) {
 // with the version's tiled flag) and a `tiles` attribute that is not 9 bytes. Found by fuzz_exr
 // (tests/corpus/found/fuzz_exr_type_assert.exr). The attributes are walked here first; a
 // malformed walk is left for tinyexr to report.
-std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool tiled) {
+std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool versionTiled) {
   std::size_t at = 8;  // magic + version
   auto cString = [&](std::string& out) {
     const std::size_t start = at;
@@ -47,24 +48,47 @@ std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool t
     ++at;
     return true;
   };
+  // tinyexr's own idea of "tiled": the version's tiled bit and a parsed `tiles` attribute.
+  bool tiles = false;
+  std::optional<std::string> type;
+  bool walked = true;
   while (at < bytes.size() && bytes[at] != 0) {
     std::string name, kind;
-    if (!cString(name) || !cString(kind) || bytes.size() - at < 4) return {};
     int32_t size = 0;
+    if (!cString(name) || !cString(kind) || bytes.size() - at < 4) {
+      walked = false;
+      break;
+    }
     std::memcpy(&size, bytes.data() + at, 4);
     at += 4;
-    if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at) return {};
+    if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at) {
+      walked = false;
+      break;
+    }
     const std::string value(reinterpret_cast<const char*>(bytes.data()) + at,
                             static_cast<std::size_t>(size));
     at += static_cast<std::size_t>(size);
-    if (name == "type") {
-      const std::string type = value.substr(0, value.find('\0'));
-      if (!((type == "scanlineimage" && !tiled) || (type == "tiledimage" && tiled)))
-        return "header attribute type '" + type + "' is not this file's kind of image";
+    if (name == "type") type = value.substr(0, value.find('\0'));
+    if (name == "tiles" && versionTiled) {
+      if (size != 9)
+        return "header attribute tiles has " + std::to_string(size) + " bytes (expected 9)";
+      tiles = true;
     }
-    if (name == "tiles" && tiled && size != 9)
-      return "header attribute tiles has " + std::to_string(size) + " bytes (expected 9)";
   }
+  // tinyexr's reader may get further than this walk on a malformed attribute: any
+  // "type\0string\0<len>" in the file then counts too.
+  if (!walked && !type) {
+    const std::string needle("type\0string\0", 12);
+    const std::string text(bytes.begin(), bytes.end());
+    if (const std::size_t found = text.find(needle);
+        found != std::string::npos && text.size() - found >= needle.size() + 4) {
+      const std::string value = text.substr(found + needle.size() + 4, 32);
+      type = value.substr(0, value.find_first_of(std::string("\0", 1) + "\x01\x02"));
+    }
+  }
+  const bool tiled = versionTiled && tiles;
+  if (type && !((*type == "scanlineimage" && !tiled) || (*type == "tiledimage" && tiled)))
+    return "header attribute type '" + *type + "' is not this file's kind of image";
   return {};
 }
 

@@ -466,6 +466,8 @@ FOUND = [
     ("found/fuzz_exr_data_width.exr", "error", "cannot read EXR: Invalid data width value"),
     # tinyexr assert()ed (abort, no message) on its unknown `type` attribute "els\xa5chlist...".
     ("found/fuzz_exr_type_assert.exr", "error", "cannot read EXR: header attribute type"),
+    # ... and on type "tiledimage" with the tiled bit but no `tiles` attribute (CI's 20 s run).
+    ("found/fuzz_exr_tiledimage_assert.exr", "error", "header attribute type 'tiledimage'"),
 ]
 rows.extend(FOUND)
 
