@@ -2,7 +2,9 @@
 # The two entry points of the README, idempotent on a fresh Debian 12 machine (as root):
 #   ./bounce.sh demo   install what is missing, build (Release; bakes the Cornell box's lightmap),
 #                      render the Cornell box with its baked global illumination
-#   ./bounce.sh test   install what is missing, build (Release), run the whole CTest suite
+#   ./bounce.sh test   install what is missing, then three CTest runs (docs/README: Tests):
+#                      the whole suite in Release; the whole suite again built with ASan + UBSan
+#                      (preset debug); each libFuzzer target for 20 s (preset fuzz, clang)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -14,6 +16,7 @@ packages=(
   libtinygltf-dev libtinyobjloader-dev libtinyexr-dev
   libcli11-dev nlohmann-json3-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+  clang libclang-rt-14-dev
 )
 
 install_missing() {
@@ -59,6 +62,14 @@ case "${1:-}" in
     install_missing
     build
     ctest --preset release
+    # The same suite under AddressSanitizer + UBSan (any report fails its test).
+    cmake --preset debug
+    cmake --build --preset debug
+    ctest --preset debug
+    # A short bounded run of each fuzz target, seeded from tests/corpus (docs/fuzzing.md).
+    cmake --preset fuzz
+    cmake --build --preset fuzz
+    ctest --preset fuzz
     ;;
   *)
     echo "usage: $0 demo|test" >&2

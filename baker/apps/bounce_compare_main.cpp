@@ -24,8 +24,11 @@ nlohmann::json toJson(const bounce::ChannelError& e) {
 }
 
 void printTable(const bounce::ImageError& error) {
-  std::printf("compared pixels: %zu (non-finite, excluded: %zu)\n", error.comparedPixels,
-              error.nonFinitePixels);
+  std::printf(
+      "compared pixels: %zu (non-finite, excluded: %zu; %zu in the image, %zu in the "
+      "reference)\n",
+      error.comparedPixels, error.nonFinitePixels, error.nonFiniteInImage,
+      error.nonFiniteInReference);
   std::printf("%-4s %12s %12s %12s %13s %12s\n", "", "RMSE", "relMSE", "meanAbsRel", "bias",
               "p99|a-b|");
   const char* names[4] = {"R", "G", "B", "all"};
@@ -62,7 +65,8 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "print the metrics as JSON");
   app.add_flag(
       "--allow-nonfinite", allowNonFinite,
-      "exit 0 even when the image has NaN/Inf pixels (they are excluded from the metrics)");
+      "exit 0 even when the image or the reference has NaN/Inf pixels (they are excluded from "
+      "the metrics, and counted)");
   app.add_option("--error-image", errorImagePath,
                  "write a false-colour PNG of |a-b|/(|b|+0.01) (blue 0 ... red >= scale)");
   app.add_option("--error-scale", errorScale,
@@ -74,7 +78,15 @@ int main(int argc, char** argv) {
     const bounce::Image a = bounce::readExr(imagePath);
     const bounce::Image b = bounce::readExr(referencePath);
     std::optional<bounce::Mask> mask;
-    if (!maskPath.empty()) mask = bounce::readMask(maskPath);
+    if (!maskPath.empty()) {
+      mask = bounce::readMask(maskPath);
+      if (mask->width != b.width || mask->height != b.height) {
+        std::cerr << "bounce-compare: " << maskPath << ": mask size " << mask->width << "x"
+                  << mask->height << " differs from the reference " << referencePath << "'s "
+                  << b.width << "x" << b.height << "\n";
+        return 1;
+      }
+    }
     const bounce::Mask* maskPtr = mask ? &*mask : nullptr;
     const bounce::ImageError error = bounce::compareImages(a, b, maskPtr);
 
@@ -83,6 +95,7 @@ int main(int argc, char** argv) {
                           {"comparedPixels", error.comparedPixels},
                           {"nonFinitePixels", error.nonFinitePixels},
                           {"nonFiniteInImage", error.nonFiniteInImage},
+                          {"nonFiniteInReference", error.nonFiniteInReference},
                           {"relMseEpsilon", bounce::kRelMseEpsilon},
                           {"relErrorEpsilon", bounce::kRelErrorEpsilon},
                           {"channels",
@@ -123,6 +136,12 @@ int main(int argc, char** argv) {
       std::cerr << "bounce-compare: " << imagePath << " vs " << referencePath
                 << ": no pixel to compare (" << error.nonFinitePixels
                 << " non-finite, the rest masked out)\n";
+      return 1;
+    }
+    if (error.nonFiniteInReference > 0 && !allowNonFinite) {
+      std::cerr << "bounce-compare: " << referencePath << ": " << error.nonFiniteInReference
+                << " reference pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite "
+                   "accepts this)\n";
       return 1;
     }
     if (error.nonFiniteInImage > 0 && !allowNonFinite) {

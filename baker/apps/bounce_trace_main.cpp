@@ -6,6 +6,7 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -107,8 +108,6 @@ int run(const Options& o) {
   if (!render.radiance.allFinite()) {
     throw std::runtime_error("the render has non-finite pixels (a bug: please report)");
   }
-  bounce::writeExr(o.out, render.radiance);
-  if (!o.png.empty()) bounce::writePng(o.png, render.radiance, o.exposure);
   // Standard error of each pixel's mean, sqrt(s²/spp), from the per-pixel sample variance
   // (an overestimate for the scrambled Sobol sampler, which beats independent sampling).
   bounce::Image stdError(width, height);
@@ -119,7 +118,11 @@ int run(const Options& o) {
     meanSum += static_cast<double>(bounce::luminance(render.radiance.pixels[i]));
     errorSum += static_cast<double>(bounce::luminance(stdError.pixels[i]));
   }
-  if (!o.stdError.empty()) bounce::writeExr(o.stdError, stdError);
+  // All outputs or none (image_io.h): a failing one leaves no other one behind.
+  std::vector<bounce::ImageOutput> outputs{{o.out, &render.radiance, 0.0f}};
+  if (!o.png.empty()) outputs.push_back({o.png, &render.radiance, o.exposure});
+  if (!o.stdError.empty()) outputs.push_back({o.stdError, &stdError, 0.0f});
+  bounce::writeImages(outputs);
   std::fprintf(
       stderr,
       "bounce-trace: %s camera '%s' %dx%d, %d spp, max depth %d: %.1f Msamples in "
@@ -164,10 +167,21 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"embree", "bvh"}));
   app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, kMaxSide));
   app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, kMaxSide));
-  app.add_option("--out", o.out, "output EXR, linear radiance W/(sr·m²)")->required();
-  app.add_option("--png", o.png, "also write a tone-mapped sRGB PNG");
+  // The extension says the format: a .png name never receives EXR data.
+  auto extension = [](const char* wanted) {
+    return [wanted](const std::string& path) -> std::string {
+      return std::filesystem::path(path).extension() == wanted
+                 ? ""
+                 : path + ": the file must end in " + wanted;
+    };
+  };
+  app.add_option("--out", o.out, "output EXR, linear radiance W/(sr·m²)")
+      ->required()
+      ->check(extension(".exr"));
+  app.add_option("--png", o.png, "also write a tone-mapped sRGB PNG")->check(extension(".png"));
   app.add_option("--std-error", o.stdError,
-                 "also write each pixel's standard error sqrt(variance/spp), W/(sr·m²), as EXR");
+                 "also write each pixel's standard error sqrt(variance/spp), W/(sr·m²), as EXR")
+      ->check(extension(".exr"));
   app.add_option("--exposure", o.exposure, "PNG exposure in EV (L·2^EV)");
   app.add_option("--clamp", o.clamp,
                  "firefly clamp: largest channel of a sample's reflected radiance, W/(sr·m²) "

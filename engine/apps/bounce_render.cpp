@@ -116,10 +116,12 @@ int run(const Options& options) {
                  options.frames - 1, ms(repeatStart, Clock::now()) / (options.frames - 1));
   }
 
-  for (const std::string& out : options.outputs) {
-    bounce::writeImage(out, image, options.exposure);
+  // All outputs or none (image_io.h): a failing --out leaves no other one behind.
+  std::vector<bounce::ImageOutput> outputs;
+  for (const std::string& out : options.outputs) outputs.push_back({out, &image, options.exposure});
+  bounce::writeImages(outputs);
+  for (const std::string& out : options.outputs)
     std::fprintf(stderr, "bounce-render: wrote %s\n", out.c_str());
-  }
   return 0;
 }
 

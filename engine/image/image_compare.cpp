@@ -9,6 +9,7 @@
 #include <string>
 
 #include "image/atomic_file.h"
+#include "image/regular_file.h"
 
 namespace bounce {
 namespace {
@@ -72,8 +73,12 @@ glm::vec3 ramp(float t) {
 }  // namespace
 
 Mask readMask(const std::filesystem::path& path) {
+  const std::vector<unsigned char> bytes = readRegularFile(path);
+  if (bytes.size() > static_cast<std::size_t>(INT32_MAX))
+    throw std::runtime_error(path.string() + ": cannot read mask: larger than 2 GiB");
   int width = 0, height = 0, channels = 0;
-  unsigned char* pixels = stbi_load(path.string().c_str(), &width, &height, &channels, 0);
+  unsigned char* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()),
+                                                &width, &height, &channels, 0);
   if (pixels == nullptr) {
     throw std::runtime_error(path.string() + ": cannot read mask: " + stbi_failure_reason());
   }
@@ -107,6 +112,7 @@ ImageError compareImages(const Image& a, const Image& ref, const Mask* mask) {
     if (!finite(pa) || !finite(pb)) {
       ++result.nonFinitePixels;
       if (!finite(pa)) ++result.nonFiniteInImage;
+      if (!finite(pb)) ++result.nonFiniteInReference;
       continue;
     }
     ++result.comparedPixels;

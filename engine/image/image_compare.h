@@ -36,6 +36,7 @@ struct ImageError {
   std::size_t comparedPixels = 0;        // inside the mask, finite in both images
   std::size_t nonFinitePixels = 0;       // inside the mask, NaN/Inf in a or ref (excluded)
   std::size_t nonFiniteInImage = 0;      // of those, the ones NaN/Inf in a (a broken render)
+  std::size_t nonFiniteInReference = 0;  // of those, the ones NaN/Inf in ref (a broken reference)
 };
 
 // Which pixels to compare: keep[i] != 0 compares pixel i (rows top first, like Image).

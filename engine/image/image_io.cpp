@@ -5,12 +5,15 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "image/atomic_file.h"
+#include "image/regular_file.h"
 #include "image/tonemap.h"
 
 namespace bounce {
@@ -30,9 +33,68 @@ void requireSize(const std::filesystem::path& path, const Image& image) {
                              std::to_string(image.width) + "x" + std::to_string(image.height));
 }
 
+// tinyexr 1.0.1's header parser assert()s (aborting the process) on two header attributes it
+// does not validate: a `type` string other than scanlineimage/tiledimage (or one that disagrees
+// with the version's tiled flag) and a `tiles` attribute that is not 9 bytes. Found by fuzz_exr
+// (tests/corpus/found/fuzz_exr_type_assert.exr). The attributes are walked here first; a
+// malformed walk is left for tinyexr to report.
+std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool versionTiled) {
+  std::size_t at = 8;  // magic + version
+  auto cString = [&](std::string& out) {
+    const std::size_t start = at;
+    while (at < bytes.size() && bytes[at] != 0) ++at;
+    if (at >= bytes.size()) return false;
+    out.assign(reinterpret_cast<const char*>(bytes.data()) + start, at - start);
+    ++at;
+    return true;
+  };
+  // tinyexr's own idea of "tiled": the version's tiled bit and a parsed `tiles` attribute.
+  bool tiles = false;
+  std::optional<std::string> type;
+  bool walked = true;
+  while (at < bytes.size() && bytes[at] != 0) {
+    std::string name, kind;
+    int32_t size = 0;
+    if (!cString(name) || !cString(kind) || bytes.size() - at < 4) {
+      walked = false;
+      break;
+    }
+    std::memcpy(&size, bytes.data() + at, 4);
+    at += 4;
+    if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - at) {
+      walked = false;
+      break;
+    }
+    const std::string value(reinterpret_cast<const char*>(bytes.data()) + at,
+                            static_cast<std::size_t>(size));
+    at += static_cast<std::size_t>(size);
+    if (name == "type") type = value.substr(0, value.find('\0'));
+    if (name == "tiles" && versionTiled) {
+      if (size != 9)
+        return "header attribute tiles has " + std::to_string(size) + " bytes (expected 9)";
+      tiles = true;
+    }
+  }
+  // tinyexr's reader may get further than this walk on a malformed attribute: any
+  // "type\0string\0<len>" in the file then counts too.
+  if (!walked && !type) {
+    const std::string needle("type\0string\0", 12);
+    const std::string text(bytes.begin(), bytes.end());
+    if (const std::size_t found = text.find(needle);
+        found != std::string::npos && text.size() - found >= needle.size() + 4) {
+      const std::string value = text.substr(found + needle.size() + 4, 32);
+      type = value.substr(0, value.find_first_of(std::string("\0", 1) + "\x01\x02"));
+    }
+  }
+  const bool tiled = versionTiled && tiles;
+  if (type && !((*type == "scanlineimage" && !tiled) || (*type == "tiledimage" && tiled)))
+    return "header attribute type '" + *type + "' is not this file's kind of image";
+  return {};
+}
+
 }  // namespace
 
-void writeExr(const std::filesystem::path& path, const Image& image) {
+std::vector<unsigned char> encodeExr(const std::filesystem::path& path, const Image& image) {
   requireSize(path, image);
   // EXR stores channels by name in alphabetical order: B, G, R.
   std::vector<float> planes[3];
@@ -69,24 +131,90 @@ void writeExr(const std::filesystem::path& path, const Image& image) {
   if (size == 0)
     throw std::runtime_error(path.string() + ": cannot encode EXR: " + takeExrError(err));
   std::unique_ptr<unsigned char, decltype(&std::free)> owned(memory, &std::free);
-  writeFileAtomically(path, {memory, size});
+  return std::vector<unsigned char>(memory, memory + size);
+}
+
+void writeExr(const std::filesystem::path& path, const Image& image) {
+  writeFileAtomically(path, encodeExr(path, image));
 }
 
 Image readExr(const std::filesystem::path& path) {
-  float* rgba = nullptr;
-  int width = 0;
-  int height = 0;
+  const std::vector<unsigned char> bytes = readRegularFile(path);
+  auto fail = [&](const std::string& reason) -> std::runtime_error {
+    return std::runtime_error(path.string() + ": cannot read EXR: " + reason);
+  };
+  // tinyexr's lower-level calls, with the header freed on every path: its LoadEXRFromMemory
+  // (1.0.1) leaks the header when the pixel data is corrupt, and would hand UINT channels over
+  // as float bit patterns.
+  EXRVersion version;
+  if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
+    throw fail("not an OpenEXR file (bad magic or version)");
+  if (version.multipart || version.non_image) throw fail("multi-part and deep images are not read");
+  if (const std::string trigger = tinyexrAssertTrigger(bytes, version.tiled != 0); !trigger.empty())
+    throw fail(trigger);
+  EXRHeader header;
+  InitEXRHeader(&header);
   const char* err = nullptr;
-  if (LoadEXR(&rgba, &width, &height, path.c_str(), &err) != TINYEXR_SUCCESS)
-    throw std::runtime_error(path.string() + ": cannot read EXR: " + takeExrError(err));
-  std::unique_ptr<float, decltype(&std::free)> owned(rgba, &std::free);
-  Image image(width, height);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = {rgba[4 * i + 0], rgba[4 * i + 1], rgba[4 * i + 2]};
+  if (ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &err) !=
+      TINYEXR_SUCCESS) {
+    FreeEXRHeader(&header);
+    throw fail(takeExrError(err));
+  }
+  std::unique_ptr<EXRHeader, decltype(&FreeEXRHeader)> headerOwner(&header, &FreeEXRHeader);
+  int channelOf[3] = {-1, -1, -1};  // R, G, B
+  for (int c = 0; c < header.num_channels; ++c) {
+    const std::string name = header.channels[c].name;
+    if (header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT)
+      throw fail("channel '" + name +
+                 "' holds UINT values; bounce reads HALF or FLOAT (linear radiance) channels");
+    header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    if (name == "R") channelOf[0] = c;
+    if (name == "G") channelOf[1] = c;
+    if (name == "B") channelOf[2] = c;
+  }
+  if (header.num_channels == 1) channelOf[0] = channelOf[1] = channelOf[2] = 0;  // grey
+  if (channelOf[0] < 0 || channelOf[1] < 0 || channelOf[2] < 0)
+    throw fail("no R, G and B channels (and not a single grey channel)");
+  EXRImage exr;
+  InitEXRImage(&exr);
+  // On failure tinyexr has freed what it decoded (without clearing the pointers), so the image
+  // is not freed again here; on some corrupt-data paths it leaks instead (docs/fuzzing.md).
+  if (LoadEXRImageFromMemory(&exr, &header, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
+    throw fail(takeExrError(err));
+  std::unique_ptr<EXRImage, decltype(&FreeEXRImage)> imageOwner(&exr, &FreeEXRImage);
+  if (exr.width <= 0 || exr.height <= 0) throw fail("image has no pixels");
+  Image image(exr.width, exr.height);
+  auto value = [](unsigned char* const* planes, int channel, std::size_t i) {
+    return reinterpret_cast<const float*>(planes[channel])[i];
+  };
+  if (exr.tiles == nullptr) {
+    if (exr.images == nullptr) throw fail("no pixel data");
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+      for (int k = 0; k < 3; ++k) image.pixels[i][k] = value(exr.images, channelOf[k], i);
+  } else {  // tiles of the full-resolution level, tile_size_x texels per stored row
+    for (int t = 0; t < exr.num_tiles; ++t) {
+      const EXRTile& tile = exr.tiles[t];
+      if (tile.level_x != 0 || tile.level_y != 0) continue;
+      for (int y = 0; y < tile.height; ++y)
+        for (int x = 0; x < tile.width; ++x) {
+          const int px = tile.offset_x * header.tile_size_x + x;
+          const int py = tile.offset_y * header.tile_size_y + y;
+          if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+          const auto src =
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(header.tile_size_x) +
+              static_cast<std::size_t>(x);
+          glm::vec3& p =
+              image.pixels[static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width) +
+                           static_cast<std::size_t>(px)];
+          for (int k = 0; k < 3; ++k) p[k] = value(tile.images, channelOf[k], src);
+        }
+    }
+  }
   return image;
 }
 
-void writePng(const std::filesystem::path& path, const Image& radiance, float exposureEV) {
+std::vector<unsigned char> encodePng(const std::filesystem::path& path, const Image& radiance,
+                                     float exposureEV) {
   requireSize(path, radiance);
   std::vector<unsigned char> rgb;
   rgb.reserve(radiance.pixels.size() * 3);
@@ -104,15 +232,31 @@ void writePng(const std::filesystem::path& path, const Image& radiance, float ex
   if (!stbi_write_png_to_func(append, &encoded, radiance.width, radiance.height, 3, rgb.data(),
                               radiance.width * 3))
     throw std::runtime_error(path.string() + ": cannot encode PNG");
-  writeFileAtomically(path, encoded);
+  return encoded;
+}
+
+void writePng(const std::filesystem::path& path, const Image& radiance, float exposureEV) {
+  writeFileAtomically(path, encodePng(path, radiance, exposureEV));
+}
+
+std::vector<unsigned char> encodeImage(const std::filesystem::path& path, const Image& image,
+                                       float exposureEV) {
+  const std::string ext = path.extension().string();
+  if (ext == ".exr") return encodeExr(path, image);
+  if (ext == ".png") return encodePng(path, image, exposureEV);
+  throw std::runtime_error(path.string() + ": unknown image extension '" + ext +
+                           "' (expected .exr or .png)");
 }
 
 void writeImage(const std::filesystem::path& path, const Image& image, float exposureEV) {
-  const std::string ext = path.extension().string();
-  if (ext == ".exr") return writeExr(path, image);
-  if (ext == ".png") return writePng(path, image, exposureEV);
-  throw std::runtime_error(path.string() + ": unknown image extension '" + ext +
-                           "' (expected .exr or .png)");
+  writeFileAtomically(path, encodeImage(path, image, exposureEV));
+}
+
+void writeImages(std::span<const ImageOutput> outputs) {
+  std::vector<FileBytes> files;
+  for (const ImageOutput& o : outputs)
+    files.push_back({o.path, encodeImage(o.path, *o.image, o.exposureEV)});
+  writeFilesAtomically(files);
 }
 
 }  // namespace bounce

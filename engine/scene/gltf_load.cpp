@@ -1,11 +1,13 @@
 // glTF 2.0 → Scene. tinygltf parses the JSON, the buffers and the images; everything it does
 // not check (indices, byte ranges, finiteness, extensions, light and camera values) is checked
 // here, so a bad file is one LoadError and never a crash.
+#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -15,7 +17,10 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "image/regular_file.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_schema.h"
+#include "scene/input_limits.h"
 #include "scene/load_error.h"
 #include "scene/loaders.h"
 #include "scene/mesh_normals.h"
@@ -31,12 +36,54 @@ constexpr std::array kSupportedExtensions = {"KHR_lights_punctual",
                                              "KHR_materials_emissive_strength"};
 
 std::vector<unsigned char> readBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw LoadError(path, "cannot open the file");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
-  if (in.bad()) throw LoadError(path, "read error");
-  return bytes;
+  try {
+    return readRegularFile(path);
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    const std::string prefix = path.string() + ": ";
+    throw LoadError(path, message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message);
+  }
+}
+
+// tinygltf reads the buffers and images a file names through these: regular files only (a
+// FIFO or a device named by a `uri` would block or stream forever), no shell expansion of the
+// name, never a write.
+bool regularFileExists(const std::string& path, void*) {
+  return notRegularFileReason(path) != "file not found";
+}
+std::string unexpandedPath(const std::string& path, void*) {
+  return path;
+}
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                        void*) {
+  try {
+    *out = readRegularFile(path);
+    return true;
+  } catch (const std::exception& e) {
+    if (err) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+bool refuseWrite(std::string* err, const std::string& path, const std::vector<unsigned char>&,
+                 void*) {
+  if (err) *err += path + ": bounce never writes while loading\n";
+  return false;
+}
+
+// tinygltf's image decoder behind a size check on the image header: a texture beyond the
+// limits (input_limits.h) is refused before width × height texels are allocated.
+bool decodeImageWithinLimits(tinygltf::Image* image, const int index, std::string* err,
+                             std::string* warn, int reqWidth, int reqHeight,
+                             const unsigned char* bytes, int size, void* user) {
+  int width = 0, height = 0, components = 0;
+  if (stbi_info_from_memory(bytes, size, &width, &height, &components) != 0) {
+    if (const std::string problem = textureSizeProblem(width, height); !problem.empty()) {
+      if (err)
+        *err += "image " + std::to_string(index) + " '" + image->uri + "': " + problem + "\n";
+      return false;
+    }
+  }
+  return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, user);
 }
 
 uint32_t readU32(const std::vector<unsigned char>& bytes, std::size_t offset) {
@@ -118,6 +165,22 @@ std::optional<glm::mat4> rigidFrame(const glm::mat4& m) {
   return rigid;
 }
 
+// A number for messages: 6 significant digits, exponent form for large values ("1.46413e+39").
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+bool withinCoordinateLimit(const glm::dvec3& p) {
+  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
+         std::abs(p.z) <= kMaxCoordinate;
+}
+
+std::string coordinateLimitText() {
+  return "beyond bounce's coordinate limit of 1e6 m (docs/input_limits.md)";
+}
+
 bool allFinite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
@@ -166,6 +229,14 @@ class GltfBuilder {
     return f;
   }
 
+  // A radiometric value (after the photometric conversion) within kMaxRadiometric.
+  float radiometricValue(double v, const std::string& what) const {
+    if (!(v <= kMaxRadiometric)) {
+      fail(what + " " + shortNumber(v) + " exceeds bounce's limit of 1e12 (docs/input_limits.md)");
+    }
+    return toFloat(v, what);
+  }
+
   glm::vec3 vec3(const std::vector<double>& v, glm::dvec3 fallback, const std::string& what) const {
     if (v.empty()) return glm::vec3(fallback);
     if (v.size() < 3) fail(what + " has fewer than 3 components");
@@ -202,8 +273,8 @@ class GltfBuilder {
     if (!m.emissiveFactor.empty()) {  // keep the exact doubles of the file
       const glm::dvec3 exact(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
       for (int c = 0; c < 3; ++c)
-        material.emission[c] =
-            toFloat(nitsToRadiance(exact[c] * strength), what + ": emitted radiance");
+        material.emission[c] = radiometricValue(nitsToRadiance(exact[c] * strength),
+                                                what + ": emitted radiance W/(sr·m²)");
     } else {
       material.emission = glm::vec3(factor);
     }
@@ -273,6 +344,9 @@ class GltfBuilder {
       const int position = attribute("POSITION");
       if (position < 0) fail(what + " has no POSITION");
       mesh.positions = accessors_.readVec3(position, what + " POSITION");
+      for (const glm::vec3& q : mesh.positions)
+        if (!withinCoordinateLimit(glm::dvec3(q)))
+          fail(what + " POSITION is " + coordinateLimitText());
       const std::size_t n = mesh.positions.size();
       if (const int a = attribute("NORMAL"); a >= 0)
         mesh.normals = accessors_.readVec3(a, what + " NORMAL");
@@ -308,6 +382,16 @@ class GltfBuilder {
     meshesOf_.push_back(std::move(ours));
   }
 
+  // Every vertex of `mesh` placed by `world`, in double: within kMaxCoordinate (the renderer and
+  // the tracer square and subtract world coordinates in float).
+  void checkWorldCoordinates(const Mesh& mesh, const glm::mat4& world, const std::string& what) {
+    const glm::dmat4 m(world);
+    for (const glm::vec3& p : mesh.positions) {
+      if (!withinCoordinateLimit(glm::dvec3(m * glm::dvec4(glm::dvec3(p), 1.0))))
+        fail(what + ": mesh '" + mesh.name + "' has a world coordinate " + coordinateLimitText());
+    }
+  }
+
   Mobility mobility(const tinygltf::Node& node, Mobility inherited, const std::string& what) const {
     if (!node.extras.Has("bounce")) return inherited;
     const tinygltf::Value& bounce = node.extras.Get("bounce");
@@ -329,22 +413,27 @@ class GltfBuilder {
         gl.color.empty() ? glm::dvec3(1.0) : glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
     if (!std::isfinite(gl.intensity) || gl.intensity < 0.0)
       fail(what + ": light intensity is negative or not finite");
+    if (!withinCoordinateLimit(glm::dvec3(world[3])))
+      fail(what + ": light position is " + coordinateLimitText());
     light.position = glm::vec3(world[3]);
-    const glm::vec3 down = glm::vec3(world * glm::vec4(0, 0, -1, 0));  // lights shine along −Z
-    if (!(glm::length(down) > 0.0f)) fail(what + ": the light's transform is degenerate");
-    light.direction = glm::normalize(down);
+    // Lights shine along −Z; in double, so a large scale cannot overflow the length.
+    const glm::dvec3 down = -glm::dvec3(world[2]);
+    const double length = glm::length(down);
+    if (!(length > 0.0) || !std::isfinite(length))
+      fail(what + ": the light's transform is degenerate");
+    light.direction = glm::vec3(down / length);
     glm::vec3 radiometric;
     if (gl.type == "directional") {
       light.type = LightType::Directional;
       for (int c = 0; c < 3; ++c)
-        radiometric[c] =
-            toFloat(luxToWattsPerM2(color[c] * gl.intensity), what + ": light irradiance");
+        radiometric[c] = radiometricValue(luxToWattsPerM2(color[c] * gl.intensity),
+                                          what + ": light irradiance W/m²");
       light.irradiance = radiometric;
     } else if (gl.type == "point" || gl.type == "spot") {
       light.type = gl.type == "point" ? LightType::Point : LightType::Spot;
       for (int c = 0; c < 3; ++c)
-        radiometric[c] =
-            toFloat(candelaToWattsPerSr(color[c] * gl.intensity), what + ": light intensity");
+        radiometric[c] = radiometricValue(candelaToWattsPerSr(color[c] * gl.intensity),
+                                          what + ": light intensity W/sr");
       light.intensity = radiometric;
       if (light.type == LightType::Spot) {
         const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
@@ -386,6 +475,11 @@ class GltfBuilder {
     const std::optional<glm::mat4> rigid = rigidFrame(world);
     if (!rigid)
       fail(what + ": camera '" + camera.name + "' has a degenerate transform (zero scale)");
+    if (!withinCoordinateLimit(glm::dvec3(world[3])))
+      fail(what + ": camera position is " + coordinateLimitText());
+    if (p.znear < kMinZnear)
+      fail(what + ": camera znear " + shortNumber(p.znear) +
+           " m is below bounce's limit of 1e-6 m (docs/input_limits.md)");
     camera.cameraToWorld = *rigid;
     camera.yfov = static_cast<float>(p.yfov);
     camera.aspect = toFloat(p.aspectRatio, what + ": camera aspectRatio");
@@ -440,6 +534,7 @@ class GltfBuilder {
       if (node.mesh >= 0) {
         checkIndex(node.mesh, model_.meshes, what + " mesh");
         for (const uint32_t mesh : meshesOf_[static_cast<std::size_t>(node.mesh)]) {
+          checkWorldCoordinates(scene_.meshes[mesh], world, what);
           scene_.instances.push_back(
               Instance{node.name.empty() ? scene_.meshes[mesh].name : node.name, mesh, world, mob});
         }
@@ -472,7 +567,16 @@ Scene loadGltf(const std::filesystem::path& path) {
   const std::vector<unsigned char> bytes = readBytes(path);
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (binary || path.extension() == ".glb") checkGlbContainer(path, bytes);
+  // The JSON (all of a .gltf, the first chunk of a .glb): depth and types, before tinygltf.
+  const std::string_view json =
+      binary
+          ? std::string_view(reinterpret_cast<const char*>(bytes.data()) + 20, readU32(bytes, 12))
+          : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  checkGltfSchema(path, json);
   tinygltf::TinyGLTF parser;
+  parser.SetFsCallbacks(tinygltf::FsCallbacks{&regularFileExists, &unexpandedPath,
+                                              &readReferencedFile, &refuseWrite, nullptr});
+  parser.SetImageLoader(&decodeImageWithinLimits, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   const std::string baseDir = path.parent_path().string();

@@ -10,10 +10,15 @@
 // their .mtl lacks, and rendering them without their only emitter would be wrong.
 #include <tiny_obj_loader.h>
 
+#include <charconv>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
+#include <string_view>
 
+#include "image/regular_file.h"
+#include "scene/input_limits.h"
 #include "scene/load_error.h"
 #include "scene/loaders.h"
 #include "scene/texture_decode.h"
@@ -49,25 +54,146 @@ void rejectMissingMaterials(const std::filesystem::path& path, const std::string
   }
 }
 
+std::string readText(const std::filesystem::path& path) {
+  std::vector<unsigned char> bytes;
+  try {
+    bytes = readRegularFile(path);
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what(), prefix = path.string() + ": ";
+    throw LoadError(path, message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message);
+  }
+  return std::string(bytes.begin(), bytes.end());
+}
+
+// tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999", "abc") as 0 and a
+// missing component as 0: OBJ and MTL statements with numbers are checked here first, so such
+// a value is a LoadError naming the line. Binary data (a NUL or other control byte) is refused.
+// `keywords` maps a statement to its least and most number of numeric arguments.
+void checkNumbers(const std::filesystem::path& path, const std::string& text,
+                  const std::map<std::string_view, std::pair<int, int>>& keywords, double maxAbs) {
+  std::size_t lineNo = 0, begin = 0;
+  while (begin <= text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    ++lineNo;
+    const std::string_view line(text.data() + begin, end - begin);
+    const std::string where = "line " + std::to_string(lineNo);
+    for (const char c : line) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u == 0 || (u < 0x20 && c != '\t' && c != '\r'))
+        throw LoadError(path, where + ": binary data (control byte " + std::to_string(u) +
+                                  "); not a text file");
+    }
+    std::vector<std::string_view> tokens;
+    const std::string_view statement = line.substr(0, line.find('#'));  // a comment ends it
+    for (std::size_t i = 0; i < statement.size();) {
+      while (i < statement.size() &&
+             (statement[i] == ' ' || statement[i] == '\t' || statement[i] == '\r'))
+        ++i;
+      std::size_t j = i;
+      while (j < statement.size() && statement[j] != ' ' && statement[j] != '\t' &&
+             statement[j] != '\r')
+        ++j;
+      if (j > i) tokens.push_back(statement.substr(i, j - i));
+      i = j;
+    }
+    if (!tokens.empty()) {
+      if (const auto it = keywords.find(tokens[0]); it != keywords.end()) {
+        const auto [least, most] = it->second;
+        const int count = static_cast<int>(tokens.size()) - 1;
+        if (count < least || count > most) {
+          throw LoadError(path, where + ": '" + std::string(tokens[0]) + "' takes " +
+                                    std::to_string(least) +
+                                    (least == most ? "" : "-" + std::to_string(most)) +
+                                    " numbers, the line has " + std::to_string(count));
+        }
+        for (std::size_t t = 1; t < tokens.size(); ++t) {
+          double v = 0.0;
+          const char* first = tokens[t].data();
+          const char* last = first + tokens[t].size();
+          if (*first == '+') ++first;
+          const auto [ptr, ec] = std::from_chars(first, last, v);
+          if (ec != std::errc() || ptr != last || !std::isfinite(v) || std::abs(v) > maxAbs) {
+            throw LoadError(
+                path, where + ": '" + std::string(tokens[t]) + "' in '" + std::string(tokens[0]) +
+                          "' is not a finite number" +
+                          (std::isfinite(maxAbs) ? " within ±1e6 m, bounce's coordinate "
+                                                   "limit (docs/input_limits.md)"
+                                                 : ""));
+          }
+        }
+      }
+    }
+    begin = end + 1;
+  }
+}
+
+// `mtllib` names are resolved in the OBJ's folder and read as regular files only, checked
+// before LoadMtl parses them; a missing library is an error, not a warning.
+class MaterialLibraries : public tinyobj::MaterialReader {
+ public:
+  MaterialLibraries(std::filesystem::path obj) : obj_(std::move(obj)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* materialMap, std::string* warn,
+                  std::string* err) override {
+    const std::filesystem::path mtl = obj_.parent_path() / name;
+    const std::string reason = notRegularFileReason(mtl);
+    if (!reason.empty())
+      throw LoadError(obj_, "material library '" + name + "' (" + mtl.string() + ") " +
+                                (reason == "file not found" ? "not found" : reason));
+    std::string text;
+    try {  // errors name the OBJ (the file the user gave) and the library
+      text = readText(mtl);
+      // Kd/Ka/Ks/Ke/Tf: 1 or 3 numbers; Ns, Ni, d, Tr: one.
+      checkNumbers(mtl, text,
+                   {{"Kd", {1, 3}},
+                    {"Ka", {1, 3}},
+                    {"Ks", {1, 3}},
+                    {"Ke", {1, 3}},
+                    {"Tf", {1, 3}},
+                    {"Ns", {1, 1}},
+                    {"Ni", {1, 1}},
+                    {"d", {1, 1}},
+                    {"Tr", {1, 1}}},
+                   INFINITY);
+    } catch (const LoadError& e) {
+      throw LoadError(obj_, "material library '" + name + "': " + e.reason());
+    }
+    std::istringstream in(text);
+    tinyobj::LoadMtl(materialMap, materials, &in, warn, err);
+    return true;
+  }
+
+ private:
+  std::filesystem::path obj_;
+};
+
 }  // namespace
 
 Scene loadObj(const std::filesystem::path& path) {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path.string(), config)) {
-    std::string err = reader.Error();
-    while (!err.empty() && err.back() == '\n') err.pop_back();
-    throw LoadError(path, "invalid OBJ: " + (err.empty() ? std::string("parse failed") : err));
+  const std::string text = readText(path);
+  // v: x y z [w]; vn: 3; vt: 1-3 (u [v [w]]).
+  checkNumbers(path, text, {{"v", {3, 4}}, {"vn", {3, 3}}, {"vt", {1, 3}}}, kMaxCoordinate);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warning, error;
+  std::istringstream in(text);
+  MaterialLibraries libraries(path);
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &libraries,
+                        /*triangulate=*/true, /*default_vcols_fallback=*/false)) {
+    while (!error.empty() && error.back() == '\n') error.pop_back();
+    throw LoadError(path, "invalid OBJ: " + (error.empty() ? std::string("parse failed") : error));
   }
-  rejectMissingMaterials(path, reader.Warning());
+  rejectMissingMaterials(path, warning);
+  std::size_t faceCount = 0;
+  for (const tinyobj::shape_t& shape : shapes) faceCount += shape.mesh.num_face_vertices.size();
+  if (faceCount == 0) throw LoadError(path, "no faces (f statements): nothing to render");
 
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
   Scene scene;
   const std::filesystem::path folder = path.parent_path();
   std::map<std::string, uint32_t> textureOfFile;
-  for (const tinyobj::material_t& m : reader.GetMaterials()) {
+  for (const tinyobj::material_t& m : materials) {
     Material material;
     material.name = m.name;
     material.albedo = glm::clamp(glm::vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]), 0.0f, 1.0f);
@@ -76,6 +202,11 @@ Scene loadObj(const std::filesystem::path& path) {
         glm::any(glm::lessThan(material.emission, glm::vec3(0)))) {
       throw LoadError(path, "material '" + m.name + "' has a negative or non-finite Kd or Ke");
     }
+    if (glm::any(
+            glm::greaterThan(material.emission, glm::vec3(static_cast<float>(kMaxRadiometric)))))
+      throw LoadError(path, "material '" + m.name +
+                                "' has Ke beyond bounce's radiance limit of 1e12 W/(sr·m²) "
+                                "(docs/input_limits.md)");
     if (!m.diffuse_texname.empty()) {
       auto [it, added] = textureOfFile.try_emplace(m.diffuse_texname, 0);
       if (added) {
@@ -105,7 +236,7 @@ Scene loadObj(const std::filesystem::path& path) {
     return p;
   };
 
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     const tinyobj::mesh_t& faces = shape.mesh;
     std::map<int, uint32_t> meshOfMaterial;  // this shape's faces split by material
     for (std::size_t f = 0; f < faces.num_face_vertices.size(); ++f) {

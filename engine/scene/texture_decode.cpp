@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "image/regular_file.h"
+#include "scene/input_limits.h"
 #include "scene/load_error.h"
 
 namespace bounce {
@@ -13,9 +15,21 @@ float srgbToLinear(float encoded) {
   return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
+std::string textureSizeProblem(int width, int height) {
+  if (width <= 0 || height <= 0) return "image has no pixels";
+  if (width > kMaxTextureSide || height > kMaxTextureSide ||
+      static_cast<std::size_t>(width) * static_cast<std::size_t>(height) > kMaxTextureTexels) {
+    return "image of " + std::to_string(width) + "x" + std::to_string(height) +
+           " texels exceeds bounce's texture limit (at most 16384 per side, the GL maximum of "
+           "llvmpipe, and 2^26 texels in all; docs/input_limits.md)";
+  }
+  return {};
+}
+
 Texture decodeSrgbTexture(std::string name, int width, int height, int components, int bits,
                           std::span<const unsigned char> data) {
-  if (width <= 0 || height <= 0) throw std::invalid_argument("image has no pixels");
+  if (const std::string problem = textureSizeProblem(width, height); !problem.empty())
+    throw std::invalid_argument(problem);
   if (components < 1 || components > 4) {
     throw std::invalid_argument("image has " + std::to_string(components) + " channels");
   }
@@ -55,8 +69,23 @@ Texture decodeSrgbTexture(std::string name, int width, int height, int component
 }
 
 Texture readSrgbTextureFile(const std::filesystem::path& file, const std::filesystem::path& image) {
+  std::vector<unsigned char> bytes;
+  try {
+    bytes = readRegularFile(image);
+  } catch (const std::runtime_error& e) {
+    throw LoadError(file, std::string("cannot read texture: ") + e.what());
+  }
+  if (bytes.size() > static_cast<std::size_t>(INT32_MAX))
+    throw LoadError(file, "texture '" + image.string() + "' is larger than 2 GiB");
+  const int byteCount = static_cast<int>(bytes.size());
   int width = 0, height = 0, components = 0;
-  unsigned char* pixels = stbi_load(image.string().c_str(), &width, &height, &components, 3);
+  // The size from the header, before decoding allocates width × height texels.
+  if (stbi_info_from_memory(bytes.data(), byteCount, &width, &height, &components) != 0) {
+    if (const std::string problem = textureSizeProblem(width, height); !problem.empty())
+      throw LoadError(file, "texture '" + image.string() + "': " + problem);
+  }
+  unsigned char* pixels =
+      stbi_load_from_memory(bytes.data(), byteCount, &width, &height, &components, 3);
   if (pixels == nullptr) {
     throw LoadError(file, "cannot read texture '" + image.string() + "': " + stbi_failure_reason());
   }

@@ -95,5 +95,33 @@ TEST_F(CompareCli, NonFiniteImageFails) {
   EXPECT_EQ(out["nonFiniteInImage"], 4);
 }
 
+// NaN pixels in the reference were dropped without a word (exit 0): now they fail like the
+// image's, naming the reference, and are counted apart in the JSON.
+TEST_F(CompareCli, NonFiniteReferenceFails) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  writeExr(path("a.exr"), Image(4, 4, glm::vec3(1.0f)));
+  Image ref(4, 4, glm::vec3(1.0f));
+  ref.at(2, 2) = glm::vec3(nan);
+  writeExr(path("ref.exr"), ref);
+  EXPECT_EQ(run(path("a.exr") + " " + path("ref.exr")), 1);
+  EXPECT_NE(read("stderr.txt").find(path("ref.exr") + ": 1 reference pixels are NaN/Inf"),
+            std::string::npos)
+      << read("stderr.txt");
+  EXPECT_EQ(run(path("a.exr") + " " + path("ref.exr") + " --json --allow-nonfinite"), 0);
+  const nlohmann::json out = nlohmann::json::parse(read("stdout.txt"));
+  EXPECT_EQ(out["nonFiniteInReference"], 1);
+  EXPECT_EQ(out["nonFiniteInImage"], 0);
+}
+
+// A mask of the wrong size: the message names the mask, not only the images.
+TEST_F(CompareCli, MaskSizeErrorNamesTheMask) {
+  writeExr(path("a.exr"), Image(4, 4));
+  writeExr(path("b.exr"), Image(4, 4));
+  writeDisplayPng(path("small_mask.png"), Image(2, 2, glm::vec3(1.0f)));
+  EXPECT_EQ(run(path("a.exr") + " " + path("b.exr") + " --mask " + path("small_mask.png")), 1);
+  EXPECT_NE(read("stderr.txt").find(path("small_mask.png") + ": mask size 2x2"), std::string::npos)
+      << read("stderr.txt");
+}
+
 }  // namespace
 }  // namespace bounce

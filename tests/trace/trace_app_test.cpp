@@ -222,5 +222,27 @@ TEST(TraceApp, BadInputFailsWithNonZeroExit) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Each output's extension says its format: `--out x.png` wrote EXR data under a .png name; now
+// it is refused before tracing. And outputs are all or nothing: a --png that cannot be written
+// leaves no --out EXR behind (the exit status 1 used to come with the EXR in place).
+TEST(TraceApp, OutputsMatchTheirExtensionAndAreAllOrNothing) {
+  const std::string cornell = (kContent / "cornell_box" / "cornell_box.gltf").string();
+  const fs::path png = scratch("wrong.png");
+  const std::string log = scratch("wrong.log").string();
+  const std::string command =
+      kTool + " " + cornell + " --width 4 --height 4 --spp 1 --out " + png.string() + " 2> " + log;
+  EXPECT_NE(std::system(command.c_str()), 0);
+  EXPECT_FALSE(fs::exists(png));
+  EXPECT_NE(readText(log).find("wrong.png: the file must end in .exr"), std::string::npos)
+      << readText(log);
+
+  const fs::path exr = scratch("first.exr");
+  fs::create_directories(scratch("taken.png"));
+  EXPECT_EQ(run(cornell + " --width 4 --height 4 --spp 1 --quiet --out " + exr.string() +
+                " --png " + scratch("taken.png").string()),
+            1);
+  EXPECT_FALSE(fs::exists(exr));
+}
+
 }  // namespace
 }  // namespace bounce
