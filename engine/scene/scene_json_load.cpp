@@ -15,12 +15,15 @@
 //   }
 // Lights and the camera are added to (the camera before) those of the model.
 #include <cmath>
-#include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "image/regular_file.h"
+#include "scene/gltf_schema.h"
+#include "scene/input_limits.h"
 #include "scene/load.h"
 #include "scene/loaders.h"
 
@@ -77,14 +80,62 @@ Light lightOf(const std::filesystem::path& path, const json& entry) {
   return light;
 }
 
+// A wrapper is a few lines; anything larger is not one.
+constexpr std::size_t kMaxWrapperBytes = std::size_t{1} << 20;
+
+bool withinCoordinateLimit(glm::dvec3 p) {
+  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
+         std::abs(p.z) <= kMaxCoordinate;
+}
+
+bool withinRadiometricLimit(glm::vec3 v) {
+  for (int i = 0; i < 3; ++i)
+    if (!(v[i] >= 0.0f && v[i] <= kMaxRadiometric)) return false;
+  return true;
+}
+
+// The same limits the model's own loader applied (docs/input_limits.md), now to what the wrapper
+// made of it: its scale moves every vertex, light and camera, and it adds lights and a camera.
+void checkLimits(const std::filesystem::path& path, const Scene& scene) {
+  const std::string beyond = "beyond bounce's limit of " + std::to_string(kMaxCoordinate) + " m";
+  for (const Instance& instance : scene.instances) {
+    const glm::dmat4 world(instance.transform);
+    for (const glm::vec3& p : scene.meshes.at(instance.mesh).positions)
+      if (!withinCoordinateLimit(glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0))))
+        throw LoadError(path, "instance '" + instance.name + "' has a vertex " + beyond +
+                                  " after the wrapper's scale");
+  }
+  for (const Light& light : scene.lights) {
+    if (!withinCoordinateLimit(glm::dvec3(light.position)))
+      throw LoadError(path, "light '" + light.name + "' is placed " + beyond);
+    if (!withinRadiometricLimit(light.intensity) || !withinRadiometricLimit(light.irradiance))
+      throw LoadError(path, "light '" + light.name +
+                                "' has a negative intensity/irradiance or one beyond " +
+                                std::to_string(kMaxRadiometric) + " W/sr (W/m²)");
+  }
+  for (const Camera& camera : scene.cameras) {
+    if (!withinCoordinateLimit(glm::dvec3(camera.position())))
+      throw LoadError(path, "camera '" + camera.name + "' is placed " + beyond);
+    if (!(camera.znear >= kMinZnear))
+      throw LoadError(
+          path, "camera '" + camera.name + "' has znear below " + std::to_string(kMinZnear) + " m");
+  }
+}
+
 }  // namespace
 
 Scene loadSceneJson(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw LoadError(path, "cannot open");
+  std::vector<unsigned char> bytes;
+  try {
+    bytes = readRegularFile(path, kMaxWrapperBytes);
+  } catch (const std::runtime_error& e) {
+    throw LoadError(path, e.what());
+  }
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  checkJsonDepth(path, text);  // before the recursive parser
   json doc;
   try {
-    doc = json::parse(in);
+    doc = json::parse(text);
   } catch (const json::exception& e) {
     throw LoadError(path, std::string("invalid JSON: ") + e.what());
   }
@@ -133,6 +184,7 @@ Scene loadSceneJson(const std::filesystem::path& path) {
       throw LoadError(path, "camera needs 0 < yfov < π and 0 < znear < zfar");
     scene.cameras.insert(scene.cameras.begin(), camera);
   }
+  checkLimits(path, scene);
   return scene;
 }
 

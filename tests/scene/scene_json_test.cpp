@@ -65,6 +65,19 @@ TEST(SceneJson, MalformedWrappersNameTheWrapper) {
       {R"({"model": ")" + kCornell + R"(", "scale": -1})", "'scale' must be positive"},
       {R"({"model": ")" + kCornell + R"(", "lights": [{"type": "area"}]})", "unknown light type"},
       {"{not json", "invalid JSON"},
+      // The model's loader checked its own limits; the wrapper's scale and lights are checked
+      // against the same ones (docs/input_limits.md).
+      {R"({"model": ")" + kCornell + R"(", "scale": 1e30})", "vertex beyond"},
+      {R"({"model": ")" + kCornell + R"(", "lights": [{"type": "point",
+          "position": [0, 1, 0], "intensity": [1e20, 1, 1]}]})",
+       "beyond"},
+      {R"({"model": ")" + kCornell + R"(", "lights": [{"type": "point",
+          "position": [0, 1e30, 0], "intensity": [1, 1, 1]}]})",
+       "placed beyond"},
+      {R"({"model": ")" + kCornell + R"(", "camera": {"position": [0, 0.1, 1],
+          "target": [0, 0.1, 0], "znear": 1e-30}})",
+       "znear below"},
+      {std::string(100000, '[') + std::string(100000, ']'), "nest"},
   };
   int i = 0;
   for (const auto& [text, reason] : cases) {
