@@ -10,32 +10,11 @@
 
 #include "atlas/atlas.h"
 #include "atlas/uv_geometry.h"
+#include "bake/lightmap_charts.h"
 #include "image/image_compare.h"
 #include "scene/load.h"
 
 namespace {
-
-// A colour per chart, spread over hues by the golden ratio so neighbours differ.
-glm::vec3 chartColour(uint32_t chart) {
-  const float hue = std::fmod(0.618034f * static_cast<float>(chart), 1.0f) * 6.0f;
-  const float f = hue - std::floor(hue);
-  const int sector = static_cast<int>(hue);
-  const float v = 0.85f, s = 0.55f, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  switch (sector) {
-    case 0:
-      return {v, t, p};
-    case 1:
-      return {q, v, p};
-    case 2:
-      return {p, v, t};
-    case 3:
-      return {p, q, v};
-    case 4:
-      return {t, p, v};
-    default:
-      return {v, p, q};
-  }
-}
 
 // Covered texels in their chart's colour, texels of two charts white, empty texels dark grey;
 // each texel `scale` pixels wide.
@@ -61,7 +40,7 @@ bounce::Image atlasPicture(const bounce::Atlas& atlas, int scale) {
       const int64_t o = owner[static_cast<std::size_t>(y / scale) * layout.width + x / scale];
       picture.at(x, y) = o == -1   ? glm::vec3(0.12f)
                          : o == -2 ? glm::vec3(1.0f)
-                                   : chartColour(static_cast<uint32_t>(o));
+                                   : bounce::chartColour(static_cast<uint32_t>(o));
     }
   return picture;
 }

@@ -24,13 +24,13 @@ struct InstanceLightmapUv {
 };
 
 struct LightmapLayout {
-  int width = 0;                             // texels
-  int height = 0;                            // texels
-  float texelSize = 0.0f;                    // metres: edge of one texel on the surface
-  int padding = 2;                           // texels kept free around every chart
-  int chartCount = 0;                        // charts packed
-  float utilisation = 0.0f;                  // covered texels / (width × height)
-  std::vector<InstanceLightmapUv> instances; // sorted by instance index
+  int width = 0;                              // texels
+  int height = 0;                             // texels
+  float texelSize = 0.0f;                     // metres: edge of one texel on the surface
+  int padding = 2;                            // texels kept free around every chart
+  int chartCount = 0;                         // charts packed
+  float utilisation = 0.0f;                   // covered texels / (width × height)
+  std::vector<InstanceLightmapUv> instances;  // sorted by instance index
 
   // The region of `instance`, or nullptr when it has none (dynamic, or no triangles).
   const InstanceLightmapUv* find(uint32_t instance) const;
