@@ -4,6 +4,7 @@
 #include <tinyexr.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -92,6 +93,36 @@ std::string tinyexrAssertTrigger(const std::vector<unsigned char>& bytes, bool v
   return {};
 }
 
+// The largest EXR bounce reads: 2^26 pixels (docs/input_limits.md, the texture limit too).
+constexpr std::int64_t kMaxExrPixels = std::int64_t{1} << 26;
+
+// tinyexr 1.0.1 sizes its offset tables from the data window, the tile size and chunkCount
+// before it checks them against the file: a zero or negative tile size, or a data window whose
+// width overflows int, resized a vector to a negative count (std::length_error naming no file;
+// found by fuzz_exr, tests/corpus/found/fuzz_exr_tile_size_*.exr), and a huge chunkCount
+// allocates gigabytes. Checked here, in 64-bit arithmetic, before any pixel is decoded.
+std::string exrSizeProblem(const EXRHeader& header) {
+  const EXRBox2i& box = header.data_window;
+  const std::int64_t width = std::int64_t{box.max_x} - box.min_x + 1;
+  const std::int64_t height = std::int64_t{box.max_y} - box.min_y + 1;
+  const std::string window = "data window " + std::to_string(width) + "x" + std::to_string(height);
+  if (width < 1 || height < 1) return window + " has no pixels";
+  if (width * height > kMaxExrPixels)
+    return window + " exceeds bounce's limit of " + std::to_string(kMaxExrPixels) + " pixels";
+  if (header.tiled) {
+    // A tile may be larger than the image, but not empty nor larger than the pixel limit.
+    if (header.tile_size_x < 1 || header.tile_size_y < 1 ||
+        std::int64_t{header.tile_size_x} * header.tile_size_y > kMaxExrPixels)
+      return "tile size " + std::to_string(header.tile_size_x) + "x" +
+             std::to_string(header.tile_size_y) + " is empty or exceeds " +
+             std::to_string(kMaxExrPixels) + " pixels";
+  } else if (header.chunk_count > height) {
+    return "chunkCount " + std::to_string(header.chunk_count) + " exceeds the " +
+           std::to_string(height) + " scanlines of the " + window;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<unsigned char> encodeExr(const std::filesystem::path& path, const Image& image) {
@@ -161,6 +192,7 @@ Image readExr(const std::filesystem::path& path) {
     throw fail(takeExrError(err));
   }
   std::unique_ptr<EXRHeader, decltype(&FreeEXRHeader)> headerOwner(&header, &FreeEXRHeader);
+  if (const std::string problem = exrSizeProblem(header); !problem.empty()) throw fail(problem);
   int channelOf[3] = {-1, -1, -1};  // R, G, B
   for (int c = 0; c < header.num_channels; ++c) {
     const std::string name = header.channels[c].name;

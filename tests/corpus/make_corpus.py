@@ -456,6 +456,17 @@ def with_type(value):  # a `type` attribute before the end of the header
 write("exr/type_unknown.exr", exr(2, 2, tamper=with_type(b"els")), "error", "header attribute type 'els'")
 write("exr/type_tiled_on_scanline.exr", exr(2, 2, tamper=with_type(b"tiledimage")), "error", "header attribute type 'tiledimage'")
 
+
+def with_chunk_count(count):  # tinyexr sized its offset table from chunkCount unchecked
+    def tamper(b):
+        at = b.index(b"screenWindowWidth\0")
+        return b[:at] + attribute("chunkCount", "int", struct.pack("<i", count)) + b[at:]
+    return tamper
+
+
+write("exr/chunk_count_huge.exr", exr(2, 2, tamper=with_chunk_count(1 << 30)), "error", "chunkCount 1073741824 exceeds the 2 scanlines")
+write("exr/window_pixels_over_limit.exr", exr(2, 2, window=(0, 0, 3, 1 << 28)), "error", "exceeds bounce's limit of 67108864 pixels")
+
 # ---------------------------------------------------------------- found by fuzzing ----------
 # Inputs the fuzz targets saved (docs/fuzzing.md), committed as they were found (not generated):
 # the first four made bounce's readExr leak tinyexr's header (LoadEXRFromMemory) before the fix.
@@ -463,11 +474,15 @@ FOUND = [
     ("found/fuzz_exr_header_attribute.exr", "error", "cannot read EXR: Failed to read attribute"),
     ("found/fuzz_exr_corrupt_pixels.exr", "error", "cannot read EXR: Invalid data found when decoding pixels"),
     ("found/fuzz_exr_channel_info.exr", "error", "cannot read EXR: Failed to parse channel info"),
-    ("found/fuzz_exr_data_width.exr", "error", "cannot read EXR: Invalid data width value"),
+    ("found/fuzz_exr_data_width.exr", "error", "cannot read EXR: data window -4x8 has no pixels"),
     # tinyexr assert()ed (abort, no message) on its unknown `type` attribute "els\xa5chlist...".
     ("found/fuzz_exr_type_assert.exr", "error", "cannot read EXR: header attribute type"),
     # ... and on type "tiledimage" with the tiled bit but no `tiles` attribute (CI's 20 s run).
     ("found/fuzz_exr_tiledimage_assert.exr", "error", "header attribute type 'tiledimage'"),
+    # Data windows 2x2516582404 and 4x2147483652: tinyexr resized its offset table to a negative
+    # count, std::length_error naming no file (the long run, docs/fuzzing.md round 3).
+    ("found/fuzz_exr_window_overflow_a.exr", "error", "data window 2x2516582404 exceeds"),
+    ("found/fuzz_exr_window_overflow_b.exr", "error", "data window 4x2147483652 exceeds"),
 ]
 rows.extend(FOUND)
 
