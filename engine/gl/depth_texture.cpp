@@ -79,6 +79,36 @@ void DepthCubeMap::bind(int unit) const {
   glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
 }
 
+DepthTextureArray::DepthTextureArray(int size, int layers) : size_(size), layers_(layers) {
+  requireSize(size, size);
+  GLint maxLayers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+  if (layers <= 0 || layers > maxLayers)
+    throw std::invalid_argument("depth texture array of " + std::to_string(layers) +
+                                " layers (the driver allows 1 to " + std::to_string(maxLayers) +
+                                ")");
+  glGenTextures(1, &id_);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0,
+               GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  setComparison(GL_TEXTURE_2D_ARRAY);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+DepthTextureArray::~DepthTextureArray() {
+  if (id_) glDeleteTextures(1, &id_);
+}
+
+DepthTextureArray::DepthTextureArray(DepthTextureArray&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), size_(other.size_), layers_(other.layers_) {}
+
+void DepthTextureArray::bind(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
+}
+
 DepthTarget::DepthTarget() {
   glGenFramebuffers(1, &framebuffer_);
 }
@@ -102,6 +132,16 @@ void DepthTarget::bind(const DepthCubeMap& cube, int face) {
                          GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face), cube.id_, 0);
   check();
   glViewport(0, 0, cube.size_, cube.size_);
+}
+
+void DepthTarget::bind(const DepthTextureArray& array, int layer) {
+  if (layer < 0 || layer >= array.layers_)
+    throw std::invalid_argument("layer " + std::to_string(layer) + " of a depth array of " +
+                                std::to_string(array.layers_));
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, array.id_, 0, layer);
+  check();
+  glViewport(0, 0, array.size_, array.size_);
 }
 
 void DepthTarget::check() {

@@ -1,7 +1,8 @@
 // Depth textures for shadow maps (32-bit float depth in [0,1]) that shaders read with hardware
-// comparison: `sampler2DShadow` / `samplerCubeShadow` return the fraction of the 2×2 nearest
-// texels whose stored depth d satisfies ref ≤ d (bilinearly weighted: GL_LINEAR comparison),
-// i.e. 1 = lit. Outside a 2D map the border depth is 1 (the far plane): lit.
+// comparison: `sampler2DShadow` / `samplerCubeShadow` / `sampler2DArrayShadow` return the
+// fraction of the 2×2 nearest texels whose stored depth d satisfies ref ≤ d (bilinearly
+// weighted: GL_LINEAR comparison), i.e. 1 = lit. Outside a 2D map the border depth is 1 (the far
+// plane): lit.
 #pragma once
 
 #include <cstdint>
@@ -47,6 +48,28 @@ class DepthCubeMap {
   int size_ = 0;
 };
 
+// `layers` square layers of `size`² texels (GL_TEXTURE_2D_ARRAY): many small maps in one
+// texture unit, read by a `sampler2DArrayShadow` with the layer as the third coordinate
+// (GL 3.3 core has no cube-map arrays). Clamped to the edge of each layer.
+class DepthTextureArray {
+ public:
+  DepthTextureArray(int size, int layers);
+  ~DepthTextureArray();
+  DepthTextureArray(DepthTextureArray&& other) noexcept;
+  DepthTextureArray& operator=(DepthTextureArray&&) = delete;
+  DepthTextureArray(const DepthTextureArray&) = delete;
+  DepthTextureArray& operator=(const DepthTextureArray&) = delete;
+
+  void bind(int unit) const;
+  int size() const { return size_; }
+  int layers() const { return layers_; }
+
+ private:
+  friend class DepthTarget;
+  uint32_t id_ = 0;
+  int size_ = 0, layers_ = 0;
+};
+
 // A depth-only framebuffer (no colour): a pass renders into one depth texture or one cube face.
 class DepthTarget {
  public:
@@ -59,6 +82,7 @@ class DepthTarget {
   // Throws std::runtime_error if the driver cannot render to it.
   void bind(const DepthTexture2D& texture);
   void bind(const DepthCubeMap& cube, int face);
+  void bind(const DepthTextureArray& array, int layer);
 
  private:
   void check();

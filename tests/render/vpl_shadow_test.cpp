@@ -1,0 +1,299 @@
+// VPL shadow maps (engine/render/vpl_shadow_maps.h, shaders/vpl_shadows.glsl): vplVisibility
+// read back at chosen receivers through shaders/vpl_visibility_probe.frag, against exact
+// visibility from the baker's ray kernel. A receiver counts as "deep umbra" when it and its
+// neighbours a margin away on its surface are all occluded, "well outside" when none are; the
+// margin is the map's uncertainty there: 3 texels at the receiver's distance (bilinear
+// footprint 1, normal offset 1.5, rounding) plus the origin offset, spread on the surface by
+// 1/cosθ_x. Between the two the map may filter; elsewhere it must agree.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "gl/draw_state.h"
+#include "gl/render_target.h"
+#include "gl/shader.h"
+#include "gl/texture.h"
+#include "render/gpu_scene.h"
+#include "render/vpl_shadow_maps.h"
+#include "shadow_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+struct Receiver {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f};  // unit, facing the VPL's side
+  glm::vec3 tangent{0.0f}, bitangent{0.0f};
+  glm::vec3 lo{0.0f}, hi{0.0f};  // the surface's extent (neighbours are clamped into it)
+};
+
+// vplVisibility of group `group` at each receiver, read through the probe shader.
+std::vector<float> probe(const VplShadowMaps& maps, int group,
+                         const std::vector<Receiver>& receivers) {
+  gl::Program program(gl::shaderDirectory() / "fullscreen.vert",
+                      gl::shaderDirectory() / "vpl_visibility_probe.frag");
+  std::vector<float> out;
+  constexpr std::size_t kBatch = 1024;
+  for (std::size_t first = 0; first < receivers.size(); first += kBatch) {
+    const std::size_t n = std::min(kBatch, receivers.size() - first);
+    std::vector<glm::vec4> table(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      table[i] = glm::vec4(receivers[first + i].position, 1.0f);
+      table[n + i] = glm::vec4(receivers[first + i].normal, 0.0f);
+    }
+    const gl::Texture2D data(static_cast<int>(n), 2, table);
+    gl::RenderTarget target(static_cast<int>(n), 1);
+    target.bind();
+    gl::setDepthTest(false);
+    maps.bind(program, 0);
+    data.bind(1);
+    program.set("uReceivers", 1);
+    program.set("uProbeGroup", group);
+    gl::drawFullscreenTriangle();
+    const Image image = target.read();
+    for (std::size_t i = 0; i < n; ++i) out.push_back(image.at(static_cast<int>(i), 0).x);
+  }
+  gl::checkErrors("VPL visibility probe");
+  return out;
+}
+
+bool occluded(const RayKernel& kernel, const Vpl& vpl, glm::vec3 p, glm::vec3 np) {
+  const glm::vec3 from = offsetRayOrigin(vpl.position, vpl.normal, p - vpl.position);
+  const glm::vec3 to = offsetRayOrigin(p, np, vpl.position - p);
+  Ray ray;
+  ray.origin = from;
+  ray.direction = to - from;
+  ray.tmax = 1.0f;
+  return kernel.occluded(ray);
+}
+
+// Receivers on the axis-aligned rectangle [lo, hi] (one extent zero) with normal n, `count`
+// per side.
+void addGrid(std::vector<Receiver>& out, glm::vec3 lo, glm::vec3 hi, glm::vec3 n, int count) {
+  glm::vec3 t(0.0f), b(0.0f);
+  int axis = 0;
+  for (int i = 0; i < 3; ++i)
+    if (hi[i] == lo[i]) axis = i;
+  t[(axis + 1) % 3] = 1.0f;
+  b[(axis + 2) % 3] = 1.0f;
+  for (int i = 0; i < count; ++i)
+    for (int j = 0; j < count; ++j) {
+      const float s = (static_cast<float>(i) + 0.5f) / static_cast<float>(count);
+      const float r = (static_cast<float>(j) + 0.5f) / static_cast<float>(count);
+      glm::vec3 p = lo;
+      p[(axis + 1) % 3] = glm::mix(lo[(axis + 1) % 3], hi[(axis + 1) % 3], s);
+      p[(axis + 2) % 3] = glm::mix(lo[(axis + 2) % 3], hi[(axis + 2) % 3], r);
+      out.push_back({p, n, t, b, lo, hi});
+    }
+}
+
+struct Classified {
+  int umbra = 0, outside = 0;
+  int umbraWrong = 0, outsideWrong = 0;  // umbra with V > 0.01, outside with V < 0.99
+  float worstOutside = 1.0f, worstUmbra = 0.0f;
+};
+
+Classified classify(const RayKernel& kernel, const Vpl& vpl, float originOffset, int resolution,
+                    const std::vector<Receiver>& receivers, const std::vector<float>& visibility) {
+  Classified c;
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    const Receiver& r = receivers[i];
+    const glm::vec3 toVpl = vpl.position - r.position;
+    const float d = glm::length(toVpl);
+    const float cosX = glm::dot(r.normal, toVpl) / d;
+    const float cosY = -glm::dot(vpl.normal, toVpl) / d;
+    if (cosX <= 0.0f || cosY <= 0.0f) continue;  // the VPL does not light it
+    const float margin =
+        (3.0f * 2.0f / static_cast<float>(resolution) * d + originOffset) / std::max(cosX, 0.1f);
+    int hidden = 0, tested = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const glm::vec3 q = glm::clamp(r.position + margin * (static_cast<float>(dx) * r.tangent +
+                                                              static_cast<float>(dy) * r.bitangent),
+                                       r.lo, r.hi);
+        hidden += occluded(kernel, vpl, q, r.normal) ? 1 : 0;
+        ++tested;
+      }
+    if (hidden == tested) {
+      ++c.umbra;
+      c.worstUmbra = std::max(c.worstUmbra, visibility[i]);
+      if (visibility[i] > 0.01f) ++c.umbraWrong;
+    } else if (hidden == 0) {
+      ++c.outside;
+      c.worstOutside = std::min(c.worstOutside, visibility[i]);
+      if (visibility[i] < 0.99f) ++c.outsideWrong;
+    }
+  }
+  return c;
+}
+
+Material grey(const char* name) {
+  Material m;
+  m.name = name;
+  m.albedo = glm::vec3(0.5f);
+  m.doubleSided = true;
+  return m;
+}
+
+// A 3 m × 2.4 m × 3 m room, a tilted plate the VPL sits on, an occluding box above it.
+struct Room {
+  Scene scene;
+  Vpl vpl;
+  std::vector<Receiver> receivers;
+};
+
+Room roomWithOccluder() {
+  Room room;
+  addBox(room.scene, {-1.5f, 0.0f, -1.5f}, {1.5f, 2.4f, 1.5f}, grey("room"));
+  room.vpl.normal = glm::normalize(glm::vec3(0.4f, 1.0f, -0.3f));
+  room.vpl.position = {-0.2f, 0.8f, 0.1f};
+  room.vpl.flux = glm::vec3(1.0f);
+  // The plate through the VPL, perpendicular to its normal, 30 cm across.
+  const glm::vec3 u = 0.3f * glm::normalize(glm::cross(room.vpl.normal, glm::vec3(0, 0, 1)));
+  const glm::vec3 v = 0.3f * glm::normalize(glm::cross(room.vpl.normal, u));
+  addQuad(room.scene, room.vpl.position - 0.5f * (u + v), u, v, grey("plate"));
+  addBox(room.scene, {0.1f, 1.3f, -0.5f}, {0.6f, 1.5f, 0.0f}, grey("occluder"));
+  const int n = 40;
+  addGrid(room.receivers, {-1.5f, 2.4f, -1.5f}, {1.5f, 2.4f, 1.5f}, {0, -1, 0}, n);  // ceiling
+  addGrid(room.receivers, {1.5f, 0.0f, -1.5f}, {1.5f, 2.4f, 1.5f}, {-1, 0, 0}, n);   // +x wall
+  addGrid(room.receivers, {-1.5f, 0.0f, -1.5f}, {-1.5f, 2.4f, 1.5f}, {1, 0, 0}, n);  // −x wall
+  addGrid(room.receivers, {-1.5f, 0.0f, -1.5f}, {1.5f, 2.4f, -1.5f}, {0, 0, 1}, n);  // −z wall
+  addGrid(room.receivers, {-1.5f, 0.0f, 1.5f}, {1.5f, 2.4f, 1.5f}, {0, 0, -1}, n);   // +z wall
+  addGrid(room.receivers, {-1.5f, 0.0f, -1.5f}, {1.5f, 0.0f, 1.5f}, {0, 1, 0}, n);   // floor
+  // The occluder's own faces that see the VPL (contact with its caster's map).
+  addGrid(room.receivers, {0.1f, 1.3f, -0.5f}, {0.6f, 1.3f, 0.0f}, {0, -1, 0}, 12);
+  addGrid(room.receivers, {0.1f, 1.3f, -0.5f}, {0.1f, 1.5f, 0.0f}, {-1, 0, 0}, 12);
+  return room;
+}
+
+TEST(VplShadow, PackedNormalsRoundTrip) {
+  std::mt19937 rng(7);
+  std::normal_distribution<float> gauss;
+  float worst = 0.0f;
+  std::vector<glm::vec3> normals = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0}};
+  for (int i = 0; i < 10000; ++i)
+    normals.push_back(glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))));
+  for (const glm::vec3 n : normals) {
+    const float packed = vplShadowPackNormal(n);
+    ASSERT_LT(packed, 16777216.0f);
+    ASSERT_EQ(packed, std::floor(packed));
+    worst = std::max(worst, std::acos(std::min(1.0f, glm::dot(n, vplShadowUnpackNormal(packed)))));
+  }
+  // 12-bit octahedral: about 2/4095 per coordinate, ≤ ~0.05°.
+  EXPECT_LT(worst, 1.5e-3f);
+}
+
+TEST(VplShadow, SkipsOnlyTheFacesBehindTheVpl) {
+  EXPECT_EQ(vplShadowFaces({0, 1, 0}), 0b110111u);   // −Y skipped
+  EXPECT_EQ(vplShadowFaces({-1, 0, 0}), 0b111110u);  // +X skipped
+  // Tilted 25° from +y, −Y's whole cone still lies behind it; along a diagonal every face
+  // has a corner in front.
+  EXPECT_EQ(vplShadowFaces(glm::normalize(glm::vec3(0.4f, 1.0f, -0.3f))), 0b110111u);
+  EXPECT_EQ(vplShadowFaces(glm::normalize(glm::vec3(1.0f, 1.0f, 1.0f))), 0b111111u);
+}
+
+// The umbra of the box is 0 and every lit receiver (walls, ceiling, floor, the occluder's own
+// lit faces, grazing and head-on) is ≥ 0.99: right faces, no acne, no light leaks.
+TEST(VplShadow, UmbraAndLitSurfacesAgreeWithRayTracing) {
+  testContext();
+  const Room room = roomWithOccluder();
+  std::vector<std::string> warnings;
+  const GpuScene gpu(room.scene, warnings);
+  VplShadowMaps maps(VplShadowSettings{}, gl::shaderDirectory());
+  maps.setRepresentatives(std::span<const Vpl>(&room.vpl, 1));
+  EXPECT_EQ(maps.render(gpu).views, 5);  // −Y lies behind the VPL
+  const std::vector<float> visibility = probe(maps, 0, room.receivers);
+  const auto kernel = makeRayKernel(flatten(room.scene), RayBackend::Embree);
+  const Classified c =
+      classify(*kernel, room.vpl, maps.originOffset(), 64, room.receivers, visibility);
+  std::printf("umbra %d (wrong %d, worst %.4f), well outside %d (wrong %d, worst %.4f)\n", c.umbra,
+              c.umbraWrong, c.worstUmbra, c.outside, c.outsideWrong, c.worstOutside);
+  EXPECT_GE(c.umbra, 100);
+  EXPECT_GE(c.outside, 3000);
+  EXPECT_EQ(c.umbraWrong, 0) << "worst umbra visibility " << c.worstUmbra;
+  EXPECT_EQ(c.outsideWrong, 0) << "worst lit visibility " << c.worstOutside;
+
+  // Off: visibility 1 everywhere, nothing drawn.
+  maps.setEnabled(false);
+  EXPECT_EQ(maps.render(gpu).views, 0);
+  for (const float v : probe(maps, 0, room.receivers)) ASSERT_EQ(v, 1.0f);
+}
+
+// A VPL on the floor 1.5 cm from a wall: the wall right next to it (down to 2 mm, inside the
+// clamp radius) and the ceiling see it; nothing may self-shadow at the concave corner, also
+// when the VPL lies 10 µm under its floor (a baked hit point's rounding at a scale of ~100 m)
+// or 1 mm under it (less than the origin offset, 1e-3 × the 3.5 m diagonal).
+TEST(VplShadow, NoSelfShadowAtAConcaveCorner) {
+  testContext();
+  Scene scene;
+  addBox(scene, {-1.0f, 0.0f, -1.0f}, {1.0f, 2.0f, 1.0f}, grey("room"));
+  std::vector<Receiver> receivers;
+  const glm::vec3 wallN(-1, 0, 0), t(0, 1, 0), b(0, 0, 1);
+  for (const float h : {0.002f, 0.005f, 0.01f, 0.02f, 0.05f, 0.1f, 0.3f, 0.7f, 1.5f})
+    for (const float z : {-0.6f, -0.1f, -0.01f, 0.0f, 0.004f, 0.03f, 0.2f, 0.8f})
+      receivers.push_back({{1.0f, h, z}, wallN, t, b, {1, 0, -1}, {1, 2, 1}});
+  addGrid(receivers, {-1.0f, 2.0f, -1.0f}, {1.0f, 2.0f, 1.0f}, {0, -1, 0}, 20);
+  addGrid(receivers, {-1.0f, 0.0f, -1.0f}, {-1.0f, 2.0f, 1.0f}, {1, 0, 0}, 20);
+  std::vector<std::string> warnings;
+  const GpuScene gpu(scene, warnings);
+  for (const float y : {0.0f, -1e-5f, -1e-3f}) {
+    Vpl vpl;
+    vpl.position = {0.985f, y, 0.0f};
+    vpl.normal = {0.0f, 1.0f, 0.0f};
+    vpl.flux = glm::vec3(1.0f);
+    VplShadowMaps maps(VplShadowSettings{}, gl::shaderDirectory());
+    maps.setRepresentatives(std::span<const Vpl>(&vpl, 1));
+    EXPECT_EQ(maps.render(gpu).views, 5);  // the face under the floor is skipped
+    const std::vector<float> visibility = probe(maps, 0, receivers);
+    int wrong = 0;
+    for (std::size_t i = 0; i < receivers.size(); ++i) {
+      if (visibility[i] >= 0.99f) continue;
+      if (++wrong <= 5)
+        ADD_FAILURE() << "VPL at y = " << y << ": visibility " << visibility[i] << " at "
+                      << receivers[i].position.x << ", " << receivers[i].position.y << ", "
+                      << receivers[i].position.z;
+    }
+    EXPECT_EQ(wrong, 0) << "of " << receivers.size() << " receivers, VPL at y = " << y;
+  }
+}
+
+// Maps are redrawn only when something they depend on changed.
+TEST(VplShadow, RedrawsOnlyWhenVplsOrCastersMove) {
+  testContext();
+  Room room = roomWithOccluder();
+  room.scene.instances.back().mobility = Mobility::Dynamic;
+  std::vector<std::string> warnings;
+  GpuScene gpu(room.scene, warnings);
+  VplShadowMaps maps(VplShadowSettings{}, gl::shaderDirectory());
+  maps.setRepresentatives(std::span<const Vpl>(&room.vpl, 1));
+  EXPECT_GT(maps.render(gpu).views, 0);
+  EXPECT_EQ(maps.render(gpu).views, 0);
+  maps.setRepresentatives(std::span<const Vpl>(&room.vpl, 1));
+  EXPECT_EQ(maps.render(gpu).views, 0);
+  const std::size_t occluder = room.scene.instances.size() - 1;
+  gpu.setInstanceTransform(occluder, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.8f)));
+  EXPECT_GT(maps.render(gpu).views, 0);
+  EXPECT_EQ(maps.render(gpu).views, 0);
+  Vpl moved = room.vpl;
+  moved.position.x += 0.1f;
+  maps.setRepresentatives(std::span<const Vpl>(&moved, 1));
+  EXPECT_GT(maps.render(gpu).views, 0);
+
+  // The box moved 0.8 m along +z: the receivers now agree with the moved geometry.
+  Scene movedScene = room.scene;
+  movedScene.instances.back().transform =
+      glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.8f));
+  const std::vector<float> visibility = probe(maps, 0, room.receivers);
+  const auto kernel = makeRayKernel(flatten(movedScene), RayBackend::Embree);
+  const Classified c =
+      classify(*kernel, moved, maps.originOffset(), 64, room.receivers, visibility);
+  EXPECT_GE(c.umbra, 100);
+  EXPECT_EQ(c.umbraWrong, 0) << "worst umbra visibility " << c.worstUmbra;
+  EXPECT_EQ(c.outsideWrong, 0) << "worst lit visibility " << c.worstOutside;
+}
+
+}  // namespace
+}  // namespace bounce::test
