@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -24,5 +25,21 @@ struct Vpl {
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit; the side the VPL emits into
   glm::vec3 flux{0.0f};                // Φ, W per channel, albedo of its surface included
 };
+
+// The VPL of `members` (not empty) nearest `point`: a point on a real surface and its normal,
+// for a group whose representative, a centroid, may lie inside an object (floor VPLs on both
+// sides of a block); the VPL shadow maps put a group's cube there (docs/vpl.md "Visibility").
+inline const Vpl& nearestVpl(std::span<const Vpl> members, glm::vec3 point) {
+  std::size_t best = 0;
+  float bestDistance = 0.0f;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const glm::vec3 d = members[i].position - point;
+    if (i == 0 || glm::dot(d, d) < bestDistance) {
+      best = i;
+      bestDistance = glm::dot(d, d);
+    }
+  }
+  return members[best];
+}
 
 }  // namespace bounce

@@ -65,4 +65,10 @@ int Texture2D::maxSize() {
   return size;
 }
 
+int Texture2D::maxFragmentUnits() {
+  GLint units = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+  return units;
+}
+
 }  // namespace bounce::gl

@@ -32,6 +32,9 @@ class Texture2D {
   int width() const { return width_; }
   int height() const { return height_; }
   static int maxSize();  // GL_MAX_TEXTURE_SIZE of the current context
+  // GL_MAX_TEXTURE_IMAGE_UNITS of the current context: texture units a fragment shader can
+  // read (GL 3.3 guarantees 16, most drivers give 32).
+  static int maxFragmentUnits();
 
  private:
   friend class RenderTarget;

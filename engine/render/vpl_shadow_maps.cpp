@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl/draw_state.h"
+#include "gl/texture.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
 
@@ -139,6 +140,10 @@ ShadowDrawCount VplShadowMaps::render(const GpuScene& scene) {
 }
 
 void VplShadowMaps::bind(gl::Program& program, int firstTextureUnit) const {
+  if (firstTextureUnit < 0 || firstTextureUnit >= gl::Texture2D::maxFragmentUnits())
+    throw std::logic_error("VPL shadow maps on texture unit " + std::to_string(firstTextureUnit) +
+                           ": the driver gives fragment shaders units 0 to " +
+                           std::to_string(gl::Texture2D::maxFragmentUnits() - 1));
   maps_->bind(firstTextureUnit);
   program.set("uVplShadowMap", firstTextureUnit);
   const bool on = settings_.enabled && !groupUniforms_.empty();

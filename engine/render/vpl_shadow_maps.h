@@ -67,7 +67,8 @@ class VplShadowMaps {
   // what it drew.
   ShadowDrawCount render(const GpuScene& scene);
   // Binds the depth array to `firstTextureUnit` (it uses that one unit) and sets every
-  // uVplShadow* uniform of `program`.
+  // uVplShadow* uniform of `program`. Throws std::logic_error when the unit is beyond
+  // gl::Texture2D::maxFragmentUnits() (GL 3.3 guarantees only 0..15).
   void bind(gl::Program& program, int firstTextureUnit) const;
 
   void setEnabled(bool enabled);

@@ -12,12 +12,10 @@
 #include <random>
 #include <vector>
 
-#include "gl/draw_state.h"
-#include "gl/render_target.h"
 #include "gl/shader.h"
-#include "gl/texture.h"
 #include "render/gpu_scene.h"
 #include "render/vpl_shadow_maps.h"
+#include "render/vpl_visibility_probe.h"
 #include "shadow_scenes.h"
 
 namespace bounce::test {
@@ -33,31 +31,13 @@ struct Receiver {
 // vplVisibility of group `group` at each receiver, read through the probe shader.
 std::vector<float> probe(const VplShadowMaps& maps, int group,
                          const std::vector<Receiver>& receivers) {
-  gl::Program program(gl::shaderDirectory() / "fullscreen.vert",
-                      gl::shaderDirectory() / "vpl_visibility_probe.frag");
-  std::vector<float> out;
-  constexpr std::size_t kBatch = 1024;
-  for (std::size_t first = 0; first < receivers.size(); first += kBatch) {
-    const std::size_t n = std::min(kBatch, receivers.size() - first);
-    std::vector<glm::vec4> table(2 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-      table[i] = glm::vec4(receivers[first + i].position, 1.0f);
-      table[n + i] = glm::vec4(receivers[first + i].normal, 0.0f);
-    }
-    const gl::Texture2D data(static_cast<int>(n), 2, table);
-    gl::RenderTarget target(static_cast<int>(n), 1);
-    target.bind();
-    gl::setDepthTest(false);
-    maps.bind(program, 0);
-    data.bind(1);
-    program.set("uReceivers", 1);
-    program.set("uProbeGroup", group);
-    gl::drawFullscreenTriangle();
-    const Image image = target.read();
-    for (std::size_t i = 0; i < n; ++i) out.push_back(image.at(static_cast<int>(i), 0).x);
+  std::vector<glm::vec3> positions, normals;
+  for (const Receiver& r : receivers) {
+    positions.push_back(r.position);
+    normals.push_back(r.normal);
   }
-  gl::checkErrors("VPL visibility probe");
-  return out;
+  VplVisibilityProbe reader(gl::shaderDirectory());
+  return reader.read(maps, group, positions, normals);
 }
 
 bool occluded(const RayKernel& kernel, const Vpl& vpl, glm::vec3 p, glm::vec3 np) {

@@ -1,0 +1,303 @@
+// bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl.md "Visibility"). At
+// receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake/vpl.h,
+// clamped as baker/vpl/vpl_gather.h) with
+//   exact   V = a ray between the receiver and every VPL (vpl_gather.h with the ray kernel),
+//   none    V = 1 (what the renderer draws without VPL shadows),
+//   groups  V = the visibility of the VPL's group representative, exact: the K runtime VPLs of
+//           reduceVpls(vpls, K), each VPL in the group of its nearest representative of the
+//           same dominant normal axis (what K shadow cubes give at best; the maps' own error
+//           is tested in tests/render/vpl_shadow_test.cpp),
+// against PathTracer::irradiance with PathSet::IndirectOnly (the same light: reflected at least
+// once). Receivers are grouped by region: floor in the shadow of the blocks (the light's
+// centre occluded), floor behind the tall block, open floor.
+//
+//   bench_vpl_visibility --scene content/cornell_box/cornell_box.gltf
+//                        --vpls build/release/content/cornell_box/cornell_box.bake/vpls
+//                        [--samples 4096] [--grid 0.02] [--groups 64] [--maps RESOLUTION]
+//
+// --maps: also "group V (maps)": the same groups' visibility read from VplShadowMaps cubes of
+// that resolution centred on each group's nearest member (OSMesa, through VplVisibilityProbe),
+// and the time to render all the maps.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "bake/vpl_file.h"
+#include "gl/context.h"
+#include "gl/draw_state.h"
+#include "render/gpu_scene.h"
+#include "render/vpl_shadow_maps.h"
+#include "render/vpl_visibility_probe.h"
+#include "scene/load.h"
+#include "trace/path_tracer.h"
+#include "trace/sampling.h"
+#include "vpl/vpl_gather.h"
+#include "vpl/vpl_reduce.h"
+
+namespace {
+
+using namespace bounce;
+
+constexpr double kPiD = 3.14159265358979323846;
+
+int normalGroup(glm::vec3 n) {
+  const glm::vec3 a = glm::abs(n);
+  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  return 2 * axis + (n[axis] < 0.0f ? 1 : 0);
+}
+
+bool visible(const RayKernel& kernel, glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to,
+             glm::vec3 toNormal) {
+  const glm::vec3 a = offsetRayOrigin(from, fromNormal, to - from);
+  const glm::vec3 b = offsetRayOrigin(to, toNormal, from - to);
+  Ray ray;
+  ray.origin = a;
+  ray.direction = b - a;
+  ray.tmax = 1.0f;
+  return !kernel.occluded(ray);
+}
+
+struct Receiver {
+  glm::vec3 position{0.0f}, normal{0.0f, 1.0f, 0.0f};
+  int region = 0;  // 0 blocks' shadow, 1 behind the tall block, 2 open floor
+  double exact = 0, none = 0, groups = 0, groupsMember = 0, groupsMap = 0, traced = 0,
+         tracedVariance = 0;  // luminance, W/m²
+};
+
+const char* kRegionNames[3] = {"floor in the blocks' shadow", "floor behind the tall block",
+                               "floor lit directly"};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string scenePath, vplPath;
+  int samples = 4096, groupCount = 64, mapResolution = 0;
+  float grid = 0.02f;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (a == "--scene" && hasValue)
+      scenePath = argv[++i];
+    else if (a == "--vpls" && hasValue)
+      vplPath = argv[++i];
+    else if (a == "--samples" && hasValue)
+      samples = std::stoi(argv[++i]);
+    else if (a == "--grid" && hasValue)
+      grid = std::stof(argv[++i]);
+    else if (a == "--groups" && hasValue)
+      groupCount = std::stoi(argv[++i]);
+    else if (a == "--maps" && hasValue)
+      mapResolution = std::stoi(argv[++i]);
+    else {
+      std::fprintf(stderr,
+                   "usage: bench_vpl_visibility --scene FILE --vpls FILE [--samples N] "
+                   "[--grid METRES] [--groups K] [--maps RESOLUTION]\n");
+      return a == "--help" ? 0 : 2;
+    }
+  }
+  if (scenePath.empty() || vplPath.empty()) {
+    std::fprintf(stderr, "bench_vpl_visibility: --scene and --vpls are required\n");
+    return 2;
+  }
+  const Scene scene = loadScene(scenePath);
+  const WorldGeometry geometry = flatten(scene);
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  const std::vector<Vpl> vpls = readVplFile(vplPath);
+  const float r = vplClampDistance(surfaceArea(geometry), vpls.size());
+  const std::vector<Vpl> reps = reduceVpls(vpls, static_cast<std::size_t>(groupCount));
+  std::vector<int> group(vpls.size(), 0);
+  for (std::size_t i = 0; i < vpls.size(); ++i) {
+    float best = std::numeric_limits<float>::max();
+    for (std::size_t g = 0; g < reps.size(); ++g) {
+      if (normalGroup(reps[g].normal) != normalGroup(vpls[i].normal)) continue;
+      const glm::vec3 d = reps[g].position - vpls[i].position;
+      if (glm::dot(d, d) < best) {
+        best = glm::dot(d, d);
+        group[i] = static_cast<int>(g);
+      }
+    }
+  }
+
+  // Each group's member nearest its representative: a point on a real surface, where the
+  // centroid may lie inside an object (floor VPLs on both sides of a block).
+  std::vector<std::vector<Vpl>> members(reps.size());
+  for (std::size_t i = 0; i < vpls.size(); ++i)
+    members[static_cast<std::size_t>(group[i])].push_back(vpls[i]);
+  std::vector<Vpl> nearestMember(reps.size());
+  std::vector<float> nearestDistance(reps.size(), 0.0f);
+  for (std::size_t g = 0; g < reps.size(); ++g) {
+    if (members[g].empty()) {
+      nearestMember[g] = reps[g];
+      continue;
+    }
+    nearestMember[g] = nearestVpl(members[g], reps[g].position);
+    nearestDistance[g] = glm::length(nearestMember[g].position - reps[g].position);
+  }
+  int inside = 0;
+  for (std::size_t g = 0; g < reps.size(); ++g) inside += nearestDistance[g] > 0.02f ? 1 : 0;
+  std::fprintf(stderr, "%d representatives lie more than 2 cm from every member\n", inside);
+
+  // The floor (y = lowest) of the scene's box.
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const glm::vec3& p : geometry.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  TraceSettings settings;
+  settings.paths = PathSet::IndirectOnly;
+  const PathTracer tracer(scene, geometry, *kernel, settings);
+  // The Cornell box's light hangs at the centre of the ceiling.
+  const glm::vec3 lightCentre(0.5f * (lo.x + hi.x), hi.y - 1e-3f, 0.5f * (lo.z + hi.z));
+
+  std::vector<Receiver> receivers;
+  const glm::vec3 up(0, 1, 0);
+  for (float x = lo.x + 0.5f * grid; x < hi.x; x += grid)
+    for (float z = lo.z + 0.5f * grid; z < hi.z; z += grid) {
+      Receiver rc;
+      rc.position = {x, lo.y, z};
+      // On the floor and not under a block: the floor is the first hit looking down.
+      Ray down;
+      down.origin = rc.position + glm::vec3(0.0f, 0.9f * (hi.y - lo.y), 0.0f);
+      down.direction = -up;
+      const Hit hit = kernel->intersect(down);
+      if (!hit.valid() || std::abs(hit.t - 0.9f * (hi.y - lo.y)) > 1e-4f) continue;
+      const bool lit = visible(*kernel, rc.position, up, lightCentre, -up);
+      const bool behindTall = x > 0.40f && z > 0.40f;  // between the tall block and the walls
+      rc.region = behindTall ? 1 : (lit ? 2 : 0);
+      receivers.push_back(rc);
+    }
+  std::fprintf(stderr, "%zu VPLs, clamp r = %.4f m, %zu representatives, %zu receivers\n",
+               vpls.size(), r, reps.size(), receivers.size());
+
+  // Group visibility from the shadow maps: mapVisible[g][i] for receiver i.
+  std::vector<std::vector<float>> mapVisible;
+  std::unique_ptr<gl::Context> context;
+  if (mapResolution > 0) {
+    context = gl::createOSMesaContext();
+    context->makeCurrent();
+    std::vector<std::string> warnings;
+    const GpuScene gpu(scene, warnings);
+    VplShadowSettings mapSettings;
+    mapSettings.resolution = mapResolution;
+    VplShadowMaps maps(mapSettings, gl::shaderDirectory());
+    maps.setRepresentatives(nearestMember);
+    constexpr int kRuns = 5;
+    double seconds = 0.0;
+    ShadowDrawCount drawn;
+    for (int run = 0; run < kRuns; ++run) {
+      maps.setEnabled(false);
+      maps.setEnabled(true);  // forces a redraw
+      const auto start = std::chrono::steady_clock::now();
+      drawn = maps.render(gpu);
+      gl::finish();
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    std::fprintf(stderr, "%zu maps of 6 x %d^2: %d faces, %d caster draws, %.1f ms per redraw\n",
+                 nearestMember.size(), mapResolution, drawn.views, drawn.casters,
+                 1e3 * seconds / kRuns);
+    std::vector<glm::vec3> positions, normals;
+    for (const Receiver& rc : receivers) {
+      positions.push_back(rc.position);
+      normals.push_back(rc.normal);
+    }
+    VplVisibilityProbe probe(gl::shaderDirectory());
+    for (std::size_t g = 0; g < nearestMember.size(); ++g)
+      mapVisible.push_back(probe.read(maps, static_cast<int>(g), positions, normals));
+  }
+
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size(), 4), [&](auto range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      Receiver& rc = receivers[i];
+      rc.exact = luminance(
+          glm::vec3(gatherVplIrradiance(vpls, rc.position, rc.normal, kernel.get(), r).irradiance));
+      rc.none = luminance(
+          glm::vec3(gatherVplIrradiance(vpls, rc.position, rc.normal, nullptr, r).irradiance));
+      std::vector<char> repVisible(reps.size()), memberVisible(reps.size());
+      for (std::size_t g = 0; g < reps.size(); ++g) {
+        repVisible[g] =
+            visible(*kernel, reps[g].position, reps[g].normal, rc.position, rc.normal) ? 1 : 0;
+        memberVisible[g] = visible(*kernel, nearestMember[g].position, nearestMember[g].normal,
+                                   rc.position, rc.normal)
+                               ? 1
+                               : 0;
+      }
+      glm::dvec3 e(0.0), em(0.0), emap(0.0);
+      for (std::size_t v = 0; v < vpls.size(); ++v) {
+        const glm::vec3 d = rc.position - vpls[v].position;
+        const float d2 = glm::dot(d, d);
+        const float cosY = glm::dot(vpls[v].normal, d) / std::sqrt(d2);
+        const float cosX = -glm::dot(rc.normal, d) / std::sqrt(d2);
+        if (cosY <= 0.0f || cosX <= 0.0f) continue;
+        const glm::dvec3 term =
+            glm::dvec3(vpls[v].flux) / kPiD * double(cosY * cosX) / double(std::max(d2, r * r));
+        const auto g = static_cast<std::size_t>(group[v]);
+        if (repVisible[g]) e += term;
+        if (memberVisible[g]) em += term;
+        if (!mapVisible.empty()) emap += term * double(mapVisible[g][i]);
+      }
+      rc.groups = luminance(glm::vec3(e));
+      rc.groupsMember = luminance(glm::vec3(em));
+      rc.groupsMap = luminance(glm::vec3(emap));
+      SobolSampler sampler(7u, static_cast<uint32_t>(i));
+      double mean = 0, m2 = 0;
+      for (int s = 0; s < samples; ++s) {
+        sampler.startSample(static_cast<uint32_t>(s));
+        sampler.setDimension(1);
+        const double value = luminance(tracer.irradiance(rc.position, rc.normal, sampler));
+        const double delta = value - mean;
+        mean += delta / (s + 1);
+        m2 += delta * (value - mean);
+      }
+      rc.traced = mean;
+      rc.tracedVariance = samples > 1 ? m2 / (samples - 1) / samples : 0.0;  // of the mean
+    }
+  });
+
+  // Per region and estimator: mean E (luminance, W/m²), its bias against the tracer's mean, and
+  // the RMS of the per-receiver relative error with the tracer's own noise subtracted.
+  struct Column {
+    const char* name;
+    double Receiver::*value;
+  };
+  std::vector<Column> columns = {{"exact V", &Receiver::exact},
+                                 {"group V, centroid", &Receiver::groups},
+                                 {"group V, nearest member", &Receiver::groupsMember}};
+  if (!mapVisible.empty()) columns.push_back({"group V, maps", &Receiver::groupsMap});
+  columns.push_back({"no V", &Receiver::none});
+  std::printf("| region | receivers | path tracer E (rel. SE) |");
+  for (const Column& c : columns) std::printf(" %s: E, bias, RMS |", c.name);
+  std::printf("\n");
+  for (int region = 0; region < 3; ++region) {
+    double n = 0, traced = 0, se2 = 0;
+    std::vector<double> sum(columns.size(), 0.0), err(columns.size(), 0.0);
+    for (const Receiver& rc : receivers) {
+      if (rc.region != region || !(rc.traced > 0)) continue;
+      n += 1;
+      traced += rc.traced;
+      const double t2 = rc.traced * rc.traced;
+      se2 += rc.tracedVariance / t2;
+      for (std::size_t k = 0; k < columns.size(); ++k) {
+        const double v = rc.*columns[k].value;
+        sum[k] += v;
+        err[k] += (v - rc.traced) * (v - rc.traced) / t2;
+      }
+    }
+    if (n == 0) continue;
+    std::printf("| %s | %.0f | %.4f (%.1f%%) |", kRegionNames[region], n, traced / n,
+                100 * std::sqrt(se2 / n));
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      std::printf(" %.4f, %+.1f%%, %.1f%% |", sum[k] / n, 100 * (sum[k] / traced - 1),
+                  100 * std::sqrt(std::max(0.0, (err[k] - se2) / n)));
+    std::printf("\n");
+  }
+  return 0;
+}
