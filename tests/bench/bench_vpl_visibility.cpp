@@ -41,30 +41,11 @@
 #include "trace/path_tracer.h"
 #include "trace/sampling.h"
 #include "vpl/vpl_gather.h"
-#include "vpl/vpl_reduce.h"
+#include "vpl_group_visibility.h"
 
 namespace {
 
 using namespace bounce;
-
-constexpr double kPiD = 3.14159265358979323846;
-
-int normalGroup(glm::vec3 n) {
-  const glm::vec3 a = glm::abs(n);
-  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-  return 2 * axis + (n[axis] < 0.0f ? 1 : 0);
-}
-
-bool visible(const RayKernel& kernel, glm::vec3 from, glm::vec3 fromNormal, glm::vec3 to,
-             glm::vec3 toNormal) {
-  const glm::vec3 a = offsetRayOrigin(from, fromNormal, to - from);
-  const glm::vec3 b = offsetRayOrigin(to, toNormal, from - to);
-  Ray ray;
-  ray.origin = a;
-  ray.direction = b - a;
-  ray.tmax = 1.0f;
-  return !kernel.occluded(ray);
-}
 
 struct Receiver {
   glm::vec3 position{0.0f}, normal{0.0f, 1.0f, 0.0f};
@@ -113,35 +94,12 @@ int main(int argc, char** argv) {
   const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
   const std::vector<Vpl> vpls = readVplFile(vplPath);
   const float r = vplClampDistance(surfaceArea(geometry), vpls.size());
-  const std::vector<Vpl> reps = reduceVpls(vpls, static_cast<std::size_t>(groupCount));
-  std::vector<int> group(vpls.size(), 0);
-  for (std::size_t i = 0; i < vpls.size(); ++i) {
-    float best = std::numeric_limits<float>::max();
-    for (std::size_t g = 0; g < reps.size(); ++g) {
-      if (normalGroup(reps[g].normal) != normalGroup(vpls[i].normal)) continue;
-      const glm::vec3 d = reps[g].position - vpls[i].position;
-      if (glm::dot(d, d) < best) {
-        best = glm::dot(d, d);
-        group[i] = static_cast<int>(g);
-      }
-    }
-  }
-
-  // Each group's member nearest its representative: a point on a real surface, where the
-  // centroid may lie inside an object (floor VPLs on both sides of a block).
-  std::vector<std::vector<Vpl>> members(reps.size());
-  for (std::size_t i = 0; i < vpls.size(); ++i)
-    members[static_cast<std::size_t>(group[i])].push_back(vpls[i]);
-  std::vector<Vpl> nearestMember(reps.size());
-  std::vector<float> nearestDistance(reps.size(), 0.0f);
-  for (std::size_t g = 0; g < reps.size(); ++g) {
-    if (members[g].empty()) {
-      nearestMember[g] = reps[g];
-      continue;
-    }
-    nearestMember[g] = nearestVpl(members[g], reps[g].position);
-    nearestDistance[g] = glm::length(nearestMember[g].position - reps[g].position);
-  }
+  const test::VplGroupsCpu groups = test::groupVplsCpu(vpls, static_cast<std::size_t>(groupCount));
+  const std::vector<Vpl>& reps = groups.representatives;
+  const std::vector<Vpl>& nearestMember = groups.origins;
+  std::vector<float> nearestDistance;
+  for (std::size_t g = 0; g < reps.size(); ++g)
+    nearestDistance.push_back(glm::length(nearestMember[g].position - reps[g].position));
   int inside = 0;
   for (std::size_t g = 0; g < reps.size(); ++g) inside += nearestDistance[g] > 0.02f ? 1 : 0;
   std::fprintf(stderr, "%d representatives lie more than 2 cm from every member\n", inside);
@@ -170,7 +128,7 @@ int main(int argc, char** argv) {
       down.direction = -up;
       const Hit hit = kernel->intersect(down);
       if (!hit.valid() || std::abs(hit.t - 0.9f * (hi.y - lo.y)) > 1e-4f) continue;
-      const bool lit = visible(*kernel, rc.position, up, lightCentre, -up);
+      const bool lit = test::segmentVisible(*kernel, rc.position, up, lightCentre, -up);
       const bool behindTall = x > 0.40f && z > 0.40f;  // between the tall block and the walls
       rc.region = behindTall ? 1 : (lit ? 2 : 0);
       receivers.push_back(rc);
@@ -221,32 +179,28 @@ int main(int argc, char** argv) {
           glm::vec3(gatherVplIrradiance(vpls, rc.position, rc.normal, kernel.get(), r).irradiance));
       rc.none = luminance(
           glm::vec3(gatherVplIrradiance(vpls, rc.position, rc.normal, nullptr, r).irradiance));
-      std::vector<char> repVisible(reps.size()), memberVisible(reps.size());
+      std::vector<float> repVisible(reps.size()), memberVisible(reps.size());
       for (std::size_t g = 0; g < reps.size(); ++g) {
         repVisible[g] =
-            visible(*kernel, reps[g].position, reps[g].normal, rc.position, rc.normal) ? 1 : 0;
-        memberVisible[g] = visible(*kernel, nearestMember[g].position, nearestMember[g].normal,
-                                   rc.position, rc.normal)
-                               ? 1
-                               : 0;
+            test::segmentVisible(*kernel, reps[g].position, reps[g].normal, rc.position, rc.normal)
+                ? 1.0f
+                : 0.0f;
+        memberVisible[g] = test::segmentVisible(*kernel, nearestMember[g].position,
+                                                nearestMember[g].normal, rc.position, rc.normal)
+                               ? 1.0f
+                               : 0.0f;
       }
-      glm::dvec3 e(0.0), em(0.0), emap(0.0);
-      for (std::size_t v = 0; v < vpls.size(); ++v) {
-        const glm::vec3 d = rc.position - vpls[v].position;
-        const float d2 = glm::dot(d, d);
-        const float cosY = glm::dot(vpls[v].normal, d) / std::sqrt(d2);
-        const float cosX = -glm::dot(rc.normal, d) / std::sqrt(d2);
-        if (cosY <= 0.0f || cosX <= 0.0f) continue;
-        const glm::dvec3 term =
-            glm::dvec3(vpls[v].flux) / kPiD * double(cosY * cosX) / double(std::max(d2, r * r));
-        const auto g = static_cast<std::size_t>(group[v]);
-        if (repVisible[g]) e += term;
-        if (memberVisible[g]) em += term;
-        if (!mapVisible.empty()) emap += term * double(mapVisible[g][i]);
+      auto gather = [&](std::span<const float> visibility) {
+        return luminance(glm::vec3(
+            test::groupGather(vpls, groups.group, visibility, rc.position, rc.normal, r)));
+      };
+      rc.groups = gather(repVisible);
+      rc.groupsMember = gather(memberVisible);
+      if (!mapVisible.empty()) {
+        std::vector<float> fromMaps;
+        for (std::size_t g = 0; g < reps.size(); ++g) fromMaps.push_back(mapVisible[g][i]);
+        rc.groupsMap = gather(fromMaps);
       }
-      rc.groups = luminance(glm::vec3(e));
-      rc.groupsMember = luminance(glm::vec3(em));
-      rc.groupsMap = luminance(glm::vec3(emap));
       SobolSampler sampler(7u, static_cast<uint32_t>(i));
       double mean = 0, m2 = 0;
       for (int s = 0; s < samples; ++s) {
