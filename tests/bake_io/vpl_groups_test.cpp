@@ -88,33 +88,62 @@ TEST(VplGroups, EveryCellCountsEveryVplOnceAndRepresentativesKeepTheFlux) {
   ASSERT_EQ(cuts.cellEntries.size(), static_cast<std::size_t>(cuts.cells.x) *
                                          static_cast<std::size_t>(cuts.cells.y) *
                                          static_cast<std::size_t>(cuts.cells.z));
+  // Every node's representative stands for its members; a cell's entries must cover every VPL
+  // exactly once, either itself or through one representative.
+  std::vector<const VplNode*> nodeOf(groups.lights().size(), nullptr);
+  for (const VplNode& node : groups.nodes()) {
+    if (node.count > 1) nodeOf[node.representative] = &node;
+    // A node's representative keeps its members' flux.
+    if (node.count > 1) {
+      glm::dvec3 members(0.0);
+      for (uint32_t i = node.first; i < node.first + node.count; ++i)
+        members += glm::dvec3(groups.lights()[i].flux);
+      const glm::dvec3 representative(groups.lights()[node.representative].flux);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(representative[c], members[c], 1e-6 * members[c]);
+    }
+  }
+  const std::size_t n = groups.vplCount();
+  std::size_t entries = 0;
   for (const glm::uvec2 cell : cuts.cellEntries) {
-    std::vector<int> seen(groups.groupCount(), 0);
+    std::vector<int> seen(n, 0);
     for (uint32_t e = cell.x; e < cell.x + cell.y; ++e) {
       const glm::uvec2 range = cuts.entries[e];
       ASSERT_GE(range.y, 1u);
-      const uint32_t g = groups.groupOf(range.x);
-      for (uint32_t i = range.x; i < range.x + range.y; ++i) ASSERT_EQ(groups.groupOf(i), g);
-      // Either the whole group or its representative.
-      const bool whole = range.x == groups.groups()[g].first && range.y == groups.groups()[g].count;
-      EXPECT_TRUE(whole || (range.x == groups.vplCount() + g && range.y == 1));
-      ++seen[g];
+      if (range.x < n) {
+        ASSERT_LE(range.x + range.y, n);
+        for (uint32_t i = range.x; i < range.x + range.y; ++i) ++seen[i];
+      } else {
+        ASSERT_EQ(range.y, 1u);
+        const uint32_t g = groups.groupOf(range.x);
+        const VplNode* node = nodeOf[range.x];
+        if (node == nullptr) {  // a lone VPL's group slot
+          ASSERT_EQ(groups.groups()[g].count, 1u);
+          ++seen[groups.groups()[g].first];
+        } else {
+          for (uint32_t i = node->first; i < node->first + node->count; ++i) {
+            EXPECT_EQ(groups.groupOf(i), g);
+            ++seen[i];
+          }
+        }
+      }
+      ++entries;
     }
-    for (const int n : seen) EXPECT_EQ(n, 1);
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i], 1) << "VPL " << i;
   }
+  EXPECT_LT(entries, cuts.cellEntries.size() * n / 4);  // the cut is not the whole set
 }
 
-// Error of the cut at receivers against the full sum. A far group (d ≥ κ·s from its
+// Error of the cut at receivers against the full sum. A far node (d ≥ κ·s from its
 // flux-weighted centroid to any point of the cell) differs from its members' sum by the
 // second-order term of the kernel cosθ_y·cosθ_x/d² around the centroid: O((s/d)²) ≤ O(1/κ²) of
-// its light (docs/vpl.md, "Culling"); near groups are exact. So the cut's relative error at a
-// receiver is bounded by c/κ², and the test holds it to c = 1 at κ = 2 and 4, and to 2% at the
-// renderer's κ = 4 (1/16 = 6.25% with c = 1; measured 0.8%, 10% at κ = 2).
+// its light (docs/vpl.md, "Culling"); near leaves are exact. So the cut's relative error at a
+// receiver is bounded by c/κ²; the test holds it to c = 1 at κ = 2, 4 and 8 (κ = 8: ≤ 1.6%).
+// Measured: 10.3%, 1.8%, 0.65% with 126, 297, 831 of the 3000 lights per receiver.
 TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
   const Room room = makeRoom(3000, 2);
   const float r = vplClampDistance(room.area, room.vpls.size());
   const VplGroups groups(room.vpls, 64);
-  for (const float kappa : {2.0f, 4.0f}) {
+  for (const float kappa : {2.0f, 4.0f, 8.0f}) {
     const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {kappa, 16});
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -141,9 +170,6 @@ TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
     }
     ASSERT_GT(receivers, 150);
     EXPECT_LE(worst, 1.0 / (kappa * kappa)) << "kappa " << kappa;
-    if (kappa == 4.0f) {
-      EXPECT_LE(worst, 0.02);
-    }
     // The cut must evaluate fewer lights than the VPLs (else it is no culling).
     EXPECT_LT(evaluated / receivers, 0.8 * static_cast<double>(room.vpls.size()));
     std::printf(
