@@ -3,30 +3,16 @@
 // "Visibility"). Depth is distance from the map origin / far.
 #include "shadow_common.glsl"
 
-const int MAX_VPL_SHADOW_GROUPS = 64;      // kMaxVplShadowGroups
-const float VPL_SHADOW_HORIZON_LIFT = 1.5;  // kVplShadowHorizonLiftTexels
+const int MAX_VPL_SHADOW_GROUPS = 64;  // kMaxVplShadowGroups
 
 uniform sampler2DArrayShadow uVplShadowMap;
 uniform int uVplShadowEnabled;  // 0: every group sees everything (visibility 1)
 uniform int uVplShadowCount;    // groups with a map
-// Per group: xyz the map origin (metres, the representative lifted along its normal), w its
-// unit normal packed by vplShadowPackNormal (octahedral, 12 + 12 bits, an integer < 2^24).
-uniform vec4 uVplShadowGroup[MAX_VPL_SHADOW_GROUPS];
+// Per group: the map origin (metres): the group's VPL lifted along its normal.
+uniform vec3 uVplShadowOrigin[MAX_VPL_SHADOW_GROUPS];
 // x: texel edge per metre of distance (2/resolution, at a face's centre), y: far (m),
 // z: origin offset (m), w: resolution (texels per face side)
 uniform vec4 uVplShadowParams;
-
-vec3 vplShadowUnpackNormal(float code) {
-  float qx = floor(code / 4096.0);
-  float qy = code - qx * 4096.0;
-  vec2 o = vec2(qx, qy) / 4095.0 * 2.0 - 1.0;
-  vec3 n = vec3(o, 1.0 - abs(o.x) - abs(o.y));
-  if (n.z < 0.0) {
-    vec2 s = vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-    n.xy = (1.0 - abs(n.yx)) * s;
-  }
-  return normalize(n);
-}
 
 // Face of GL's cube order (+X, −X, +Y, −Y, +Z, −Z) that direction d falls in (major axis), and
 // d's texture coordinates in it, as cubeFaceShadowView renders the face: forward F, up U,
@@ -54,13 +40,11 @@ vec3 vplShadowFaceUv(vec3 d) {
   return vec3(ndc * 0.5 + 0.5, float(face));
 }
 
-// 1 = group `group`'s representative sees p (receiver with unit geometric normal ng, facing
-// the VPL), 0 = occluded; the bilinear 2×2 comparison in between.
+// 1 = group `group`'s cube sees p (receiver with unit geometric normal ng, facing the VPL),
+// 0 = occluded; the bilinear 2×2 comparison in between.
 float vplVisibility(int group, vec3 p, vec3 ng) {
   if (uVplShadowEnabled == 0 || group < 0 || group >= uVplShadowCount) return 1.0;
-  vec4 g = uVplShadowGroup[group];
-  vec3 origin = g.xyz;
-  vec3 n = vplShadowUnpackNormal(g.w);
+  vec3 origin = uVplShadowOrigin[group];
   vec3 toVpl = origin - p;
   float distance = length(toVpl);
   if (distance <= 0.0) return 1.0;
@@ -68,11 +52,6 @@ float vplVisibility(int group, vec3 p, vec3 ng) {
   vec2 bias = shadowBias(w, ng, toVpl / distance, 0.0);
   vec3 d = p + ng * bias.x - origin;
   float reference = (length(d) - bias.y) / uVplShadowParams.y;
-  // Lift the lookup at least VPL_SHADOW_HORIZON_LIFT texels above the VPL's horizon: nearer
-  // to it the 2×2 footprint reaches texels below the horizon, which see the VPL's own surface.
-  float lift = length(d) * VPL_SHADOW_HORIZON_LIFT * uVplShadowParams.x;
-  float height = dot(d, n);
-  if (height < lift) d += n * (lift - height);
   vec3 uvFace = vplShadowFaceUv(d);
   float layer = float(group * 6) + uvFace.z;
   return texture(uVplShadowMap, vec4(uvFace.xy, layer, reference));

@@ -19,12 +19,6 @@ const glm::vec3 kFaceForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
 const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
                               {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
 
-glm::vec2 signNotZero(glm::vec2 v) {
-  return {v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f};
-}
-
-constexpr float kOctahedralSteps = 4095.0f;  // 12 bits per coordinate
-
 }  // namespace
 
 uint32_t vplShadowFaces(glm::vec3 normal) {
@@ -42,33 +36,10 @@ uint32_t vplShadowFaces(glm::vec3 normal) {
   return faces;
 }
 
-float vplShadowPackNormal(glm::vec3 normal) {
-  const float l1 = std::abs(normal.x) + std::abs(normal.y) + std::abs(normal.z);
-  if (!(l1 > 0.0f)) normal = {0.0f, 0.0f, 1.0f};
-  glm::vec3 n = normal / (l1 > 0.0f ? l1 : 1.0f);
-  glm::vec2 o(n.x, n.y);
-  if (n.z < 0.0f) o = (1.0f - glm::abs(glm::vec2(o.y, o.x))) * signNotZero(o);
-  const glm::vec2 q = glm::round((glm::clamp(o, -1.0f, 1.0f) * 0.5f + 0.5f) * kOctahedralSteps);
-  return q.x * 4096.0f + q.y;
-}
-
-glm::vec3 vplShadowUnpackNormal(float packed) {
-  const float qx = std::floor(packed / 4096.0f);
-  const float qy = packed - qx * 4096.0f;
-  const glm::vec2 o = glm::vec2(qx, qy) / kOctahedralSteps * 2.0f - 1.0f;
-  glm::vec3 n(o.x, o.y, 1.0f - std::abs(o.x) - std::abs(o.y));
-  if (n.z < 0.0f) {
-    const glm::vec2 folded = (1.0f - glm::abs(glm::vec2(n.y, n.x))) * signNotZero({n.x, n.y});
-    n.x = folded.x;
-    n.y = folded.y;
-  }
-  return glm::normalize(n);
-}
-
 VplShadowMaps::VplShadowMaps(const VplShadowSettings& settings,
                              const std::filesystem::path& shaderDir)
     : settings_(settings),
-      depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag") {
+      depth_(shaderDir / "shadow_depth.vert", shaderDir / "vpl_shadow_depth.frag") {
   if (settings_.resolution <= 0)
     throw std::invalid_argument("VPL shadow map resolution " +
                                 std::to_string(settings_.resolution) + " (must be positive)");
@@ -111,16 +82,18 @@ ShadowDrawCount VplShadowMaps::render(const GpuScene& scene) {
                       : (sceneBox.empty() ? 1e-3f : 1e-3f * glm::length(sceneBox.hi - sceneBox.lo));
   // One reach for every cube (the depth is distance / far_ in all of them).
   far_ = 1e-3f;
-  groupUniforms_.clear();
+  origins_.clear();
   for (const Vpl& vpl : representatives_) {
     const glm::vec3 origin = vpl.position + originOffset_ * vpl.normal;
     far_ = std::max(far_, farDistance(origin, sceneBox));
-    groupUniforms_.emplace_back(origin, vplShadowPackNormal(vpl.normal));
+    origins_.push_back(origin);
   }
   ShadowDrawCount count;
   for (int group = 0; group < groups; ++group) {
-    const glm::vec3 origin(groupUniforms_[static_cast<std::size_t>(group)]);
-    const uint32_t faces = vplShadowFaces(representatives_[static_cast<std::size_t>(group)].normal);
+    const glm::vec3 origin = origins_[static_cast<std::size_t>(group)];
+    const glm::vec3 normal = representatives_[static_cast<std::size_t>(group)].normal;
+    const uint32_t faces = vplShadowFaces(normal);
+    depth_.set("uVplNormal", normal);
     for (int face = 0; face < 6; ++face) {
       target_.bind(*maps_, 6 * group + face);
       if (!(faces & (1u << face))) {
@@ -146,10 +119,10 @@ void VplShadowMaps::bind(gl::Program& program, int firstTextureUnit) const {
                            std::to_string(gl::Texture2D::maxFragmentUnits() - 1));
   maps_->bind(firstTextureUnit);
   program.set("uVplShadowMap", firstTextureUnit);
-  const bool on = settings_.enabled && !groupUniforms_.empty();
+  const bool on = settings_.enabled && !origins_.empty();
   program.set("uVplShadowEnabled", on ? 1 : 0);
-  program.set("uVplShadowCount", on ? static_cast<int>(groupUniforms_.size()) : 0);
-  if (on) program.set("uVplShadowGroup", std::span<const glm::vec4>(groupUniforms_));
+  program.set("uVplShadowCount", on ? static_cast<int>(origins_.size()) : 0);
+  if (on) program.set("uVplShadowOrigin", std::span<const glm::vec3>(origins_));
   program.set("uVplShadowParams",
               glm::vec4(2.0f / static_cast<float>(settings_.resolution), far_, originOffset_,
                         static_cast<float>(settings_.resolution)));

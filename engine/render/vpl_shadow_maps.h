@@ -6,14 +6,13 @@
 // Layout: GL 3.3 core has no cube-map arrays, so all cubes share one depth32F
 // GL_TEXTURE_2D_ARRAY, layer 6·group + face, faces in GL's cube order (+X, −X, +Y, −Y, +Z, −Z)
 // with the frames of cubeFaceShadowView; the shader picks the face by the major axis. Depth
-// is distance / far (shaders/shadow_depth.frag), one `far` for every group, so the per-group
-// uniform is one vec4: the map origin (xyz) and the VPL normal packed in w (vplShadowPackNormal).
+// is distance / far, one `far` for every group, so the per-group uniform is the map origin.
 //
 // Bias: a VPL sits on its surface, so its map origin is lifted by `originOffset` along its
-// normal (the surface then lies below the map's horizon instead of through it), receivers use
-// the point maps' normal offset and slope-scaled depth bias (shadow_common.glsl), and lookups
-// closer than kHorizonLiftTexels to the VPL's horizon are lifted to it (the 2×2 comparison
-// footprint would otherwise reach the VPL's own surface; docs/vpl.md "Visibility").
+// normal, and the map holds only what lies in front of the VPL's tangent plane through that
+// origin (shaders/vpl_shadow_depth.frag: nothing behind it can occlude a receiver the VPL
+// lights), so the VPL's own surface never enters its map; receivers use the point maps' normal
+// offset and slope-scaled depth bias (shadow_common.glsl). docs/vpl.md "Visibility".
 #pragma once
 
 #include <cstdint>
@@ -42,16 +41,10 @@ struct VplShadowSettings {
 
 // Must match MAX_VPL_SHADOW_GROUPS in shaders/vpl_shadows.glsl.
 constexpr int kMaxVplShadowGroups = 64;
-// Must match VPL_SHADOW_HORIZON_LIFT in shaders/vpl_shadows.glsl (texels of a face).
-constexpr float kVplShadowHorizonLiftTexels = 1.5f;
 
 // Bit f set: cube face f (GL order) reaches the hemisphere dot(ω, normal) > 0 and is rendered.
 // The face opposite an axis-aligned normal is the one skipped.
 uint32_t vplShadowFaces(glm::vec3 normal);
-// The unit normal as one float: octahedral coordinates quantised to 12 bits each,
-// u·4096 + v < 2²⁴, exact in a float. Decoded by vplShadowUnpackNormal (and the shader).
-float vplShadowPackNormal(glm::vec3 normal);
-glm::vec3 vplShadowUnpackNormal(float packed);
 
 class VplShadowMaps {
  public:
@@ -85,7 +78,7 @@ class VplShadowMaps {
   gl::DepthTarget target_;
   std::optional<gl::DepthTextureArray> maps_;
   std::vector<Vpl> representatives_;
-  std::vector<glm::vec4> groupUniforms_;   // per group: origin xyz, packed normal
+  std::vector<glm::vec3> origins_;         // per group: the map origin, metres
   std::vector<glm::mat4> renderedModels_;  // per instance, at the last render
   bool dirty_ = true;
   float far_ = 1.0f;  // metres: depth = distance / far

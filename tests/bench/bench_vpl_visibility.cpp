@@ -3,10 +3,10 @@
 // clamped as baker/vpl/vpl_gather.h) with
 //   exact   V = a ray between the receiver and every VPL (vpl_gather.h with the ray kernel),
 //   none    V = 1 (what the renderer draws without VPL shadows),
-//   groups  V = the visibility of the VPL's group representative, exact: the K runtime VPLs of
-//           reduceVpls(vpls, K), each VPL in the group of its nearest representative of the
-//           same dominant normal axis (what K shadow cubes give at best; the maps' own error
-//           is tested in tests/render/vpl_shadow_test.cpp),
+//   groups  V = the visibility of the VPL's group, exact rays from one point of the group: the
+//           renderer's K groups (bake/vpl_groups.h), seen from the centroid or from the member
+//           nearest it (what K shadow cubes give at best; the maps' own error is tested in
+//           tests/render/vpl_shadow_test.cpp),
 // against PathTracer::irradiance with PathSet::IndirectOnly (the same light: reflected at least
 // once). Receivers are grouped by region: floor in the shadow of the blocks (the light's
 // centre occluded), floor behind the tall block, open floor.
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
       }
       auto gather = [&](std::span<const float> visibility) {
         return luminance(glm::vec3(
-            test::groupGather(vpls, groups.group, visibility, rc.position, rc.normal, r)));
+            test::groupGather(groups.vpls, groups.group, visibility, rc.position, rc.normal, r)));
       };
       rc.groups = gather(repVisible);
       rc.groupsMember = gather(memberVisible);

@@ -1,57 +1,41 @@
 // Per-group VPL visibility on the CPU, for the VPL shadow-map test and bench_vpl_visibility:
-// K groups from reduceVpls (each VPL in the group of the nearest representative with the same
-// dominant normal axis: an emulation of the renderer's grouping), each group seen from its
-// member nearest the centroid (nearestVpl), and the clamped gather of baker/vpl/vpl_gather.h
-// with every VPL weighted by its group's visibility.
+// the renderer's K groups (bake/vpl_groups.h), each seen either from its representative (the
+// centroid) or from its member nearest the centroid (nearestVpl, where the renderer puts the
+// group's shadow cube), and the clamped gather of baker/vpl/vpl_gather.h with every VPL
+// weighted by its group's visibility.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "bake/vpl.h"
+#include "bake/vpl_groups.h"
 #include "ray/ray_kernel.h"
-#include "vpl/vpl_reduce.h"
 
 namespace bounce::test {
 
 struct VplGroupsCpu {
-  std::vector<Vpl> representatives;  // centroids (reduceVpls)
-  std::vector<Vpl> origins;          // per group: its member nearest the centroid
+  std::vector<Vpl> vpls;             // the VPLs, group by group (VplGroups::vpls)
   std::vector<int> group;            // per VPL
+  std::vector<Vpl> representatives;  // per group: the centroid
+  std::vector<Vpl> origins;          // per group: its member nearest the centroid
 };
 
-inline int dominantAxisGroup(glm::vec3 n) {
-  const glm::vec3 a = glm::abs(n);
-  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-  return 2 * axis + (n[axis] < 0.0f ? 1 : 0);
-}
-
 inline VplGroupsCpu groupVplsCpu(std::span<const Vpl> vpls, std::size_t k) {
+  const VplGroups groups(vpls, k);
   VplGroupsCpu g;
-  g.representatives = reduceVpls(vpls, k);
-  g.group.assign(vpls.size(), 0);
-  std::vector<std::vector<Vpl>> members(g.representatives.size());
-  for (std::size_t i = 0; i < vpls.size(); ++i) {
-    float best = std::numeric_limits<float>::max();
-    for (std::size_t r = 0; r < g.representatives.size(); ++r) {
-      if (dominantAxisGroup(g.representatives[r].normal) != dominantAxisGroup(vpls[i].normal))
-        continue;
-      const glm::vec3 d = g.representatives[r].position - vpls[i].position;
-      if (glm::dot(d, d) < best) {
-        best = glm::dot(d, d);
-        g.group[i] = static_cast<int>(r);
-      }
-    }
-    members[static_cast<std::size_t>(g.group[i])].push_back(vpls[i]);
+  g.vpls.assign(groups.vpls().begin(), groups.vpls().end());
+  for (std::size_t i = 0; i < g.vpls.size(); ++i) g.group.push_back(int(groups.groupOf(i)));
+  g.representatives.assign(groups.representatives().begin(), groups.representatives().end());
+  for (std::size_t r = 0; r < groups.groupCount(); ++r) {
+    const VplGroup& group = groups.groups()[r];
+    g.origins.push_back(
+        nearestVpl(groups.vpls().subspan(group.first, group.count), g.representatives[r].position));
   }
-  for (std::size_t r = 0; r < g.representatives.size(); ++r)
-    g.origins.push_back(members[r].empty() ? g.representatives[r]
-                                           : nearestVpl(members[r], g.representatives[r].position));
   return g;
 }
 

@@ -1,0 +1,106 @@
+#include "render/vpl_pass.h"
+
+#include <limits>
+#include <string>
+
+#include "gl/texture.h"
+
+#include "render/texture_units.h"
+
+namespace bounce {
+namespace {
+
+// Cells first, then the entries; entry offsets count from texel 0 (shaders/vpl.glsl).
+std::vector<glm::uvec2> cutTexels(const VplLightCuts& cuts) {
+  std::vector<glm::uvec2> texels;
+  texels.reserve(cuts.cellEntries.size() + cuts.entries.size());
+  const auto base = static_cast<uint32_t>(cuts.cellEntries.size());
+  for (const glm::uvec2 cell : cuts.cellEntries) texels.emplace_back(base + cell.x, cell.y);
+  texels.insert(texels.end(), cuts.entries.begin(), cuts.entries.end());
+  return texels;
+}
+
+std::vector<glm::vec4> lightTexels(const VplGroups& groups) {
+  std::vector<glm::vec4> texels;
+  const std::span<const Vpl> lights = groups.lights();
+  texels.reserve(3 * lights.size());
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    texels.emplace_back(lights[i].position, static_cast<float>(groups.groupOf(i)));
+    texels.emplace_back(lights[i].normal, 0.0f);
+    texels.emplace_back(lights[i].flux, 0.0f);
+  }
+  return texels;
+}
+
+}  // namespace
+
+VplPass::VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings& shadows,
+                 std::vector<std::string>& warnings) {
+  lights_.emplace(std::span<const glm::vec4>{});
+  cutTable_.emplace(std::span<const glm::uvec2>{});  // cell 0: no entries
+  if (TextureUnit::kVplShadow < gl::Texture2D::maxFragmentUnits())
+    shadows_.emplace(shadows, shaderDir);
+  else
+    warnings.push_back("the driver gives fragment shaders " +
+                       std::to_string(gl::Texture2D::maxFragmentUnits()) +
+                       " texture units: VPLs cast no shadows (they need unit " +
+                       std::to_string(TextureUnit::kVplShadow) + ")");
+}
+
+void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
+                     const VplRenderSettings& settings) {
+  groups_ = vpls.empty() ? VplGroups() : VplGroups(vpls, settings.groups);
+  VplLightCutSettings cutSettings;
+  cutSettings.kappa = settings.culling ? settings.kappa : std::numeric_limits<float>::infinity();
+  cutSettings.maxCellsPerAxis = settings.culling ? settings.maxCellsPerAxis : 1;
+  const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lo;
+  const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.hi;
+  cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
+  clampDistance_ = clampDistance;
+  lights_.reset();
+  lights_.emplace(std::span<const glm::vec4>(lightTexels(groups_)));
+  cutTable_.reset();
+  cutTable_.emplace(std::span<const glm::uvec2>(cutTexels(cuts_)));
+  if (shadows_) {
+    // A group's cube sits at its member nearest the centroid: a centroid can lie inside an
+    // object (docs/vpl.md "Visibility").
+    std::vector<Vpl> origins;
+    for (std::size_t g = 0; g < groups_.groupCount(); ++g) {
+      const VplGroup& group = groups_.groups()[g];
+      origins.push_back(nearestVpl(groups_.vpls().subspan(group.first, group.count),
+                                   groups_.representatives()[g].position));
+    }
+    shadows_->setRepresentatives(origins);
+  }
+  attached_ = true;
+}
+
+ShadowDrawCount VplPass::renderShadows(const GpuScene& scene) {
+  if (!attached_ || !shadows_) return {};
+  return shadows_->render(scene);
+}
+
+void VplPass::setShadowsEnabled(bool enabled) {
+  if (shadows_) shadows_->setEnabled(enabled);
+}
+
+void VplPass::bind(gl::Program& program) const {
+  program.set("uVplLights", TextureUnit::kVplLights);
+  program.set("uVplCuts", TextureUnit::kVplCuts);
+  program.set("uVplGridOrigin", cuts_.origin);
+  program.set("uVplCellSize", cuts_.cellSize);
+  program.set("uVplGridCells", cuts_.cells);
+  program.set("uVplClampDistance", clampDistance_);
+  lights_->bind(TextureUnit::kVplLights);
+  cutTable_->bind(TextureUnit::kVplCuts);
+  if (shadows_) shadows_->bind(program, TextureUnit::kVplShadow);
+}
+
+void VplPass::setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const {
+  const std::span<const GpuInstance> instances = scene.instances();
+  const bool receiver =
+      attached_ && index < instances.size() && instances[index].mobility == Mobility::Dynamic;
+  program.set("uVplReceiver", receiver ? 1 : 0);
+}
+
+}  // namespace bounce

@@ -1,0 +1,73 @@
+// The VPL stage of the lit pass (shaders/vpl.glsl): groups a bake's virtual point lights
+// (bake/vpl_groups.h: K ≤ 64 groups, each with a representative), builds the per-cell lightcuts
+// over the static scene's bounds, uploads the light table and the cuts as texture buffers (no
+// fixed cap on the VPL count) and tells the forward shader, per draw, whether the instance takes
+// its indirect light from the VPLs (dynamic instances; every surface in the vpl modes). Without
+// VPLs it binds empty stand-ins. GL calls only through engine/gl.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "bake/vpl_groups.h"
+#include "gl/shader.h"
+#include "gl/texture_buffer.h"
+#include "render/frustum.h"
+#include "render/gpu_scene.h"
+#include "render/vpl_shadow_maps.h"
+
+namespace bounce {
+
+struct VplRenderSettings {
+  std::size_t groups = kMaxVplGroups;  // K, coarse groups (≤ kMaxVplGroups)
+  bool culling = true;                 // false: every VPL at every fragment (one cell, all near)
+  float kappa = 4.0f;                  // far-group distance in group radii (vpl_groups.h)
+  int maxCellsPerAxis = 16;
+  // Visibility: one shadow cube per group (render/vpl_shadow_maps.h); shadows.enabled = false
+  // draws every VPL unoccluded.
+  VplShadowSettings shadows;
+};
+
+class VplPass {
+ public:
+  // Compiles the VPL shadow maps' depth program from `shaderDir`; appends to `warnings` when the
+  // driver has no texture unit for them (they are then off).
+  VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings& shadows,
+          std::vector<std::string>& warnings);
+
+  // Groups and uploads `vpls` (W per channel, bake/vpl.h) with clamp distance r (m) over
+  // `bounds` (the static scene, metres).
+  void attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
+              const VplRenderSettings& settings);
+  bool attached() const { return attached_; }
+
+  // Per frame, before the lit pass: redraws the groups' shadow cubes when something moved.
+  ShadowDrawCount renderShadows(const GpuScene& scene);
+  // Visibility on or off (off: every VPL unoccluded), e.g. to measure what it buys.
+  void setShadowsEnabled(bool enabled);
+  bool shadowsEnabled() const { return shadows_ && shadows_->enabled(); }
+  // Per frame: textures, grid, clamp distance, shadow cubes.
+  void bind(gl::Program& program) const;
+  // Per draw: whether instance `index` (into GpuScene::instances) is lit by the VPLs in the
+  // full and indirect modes (a dynamic instance, when VPLs are attached).
+  void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const;
+
+  const VplGroups& groups() const { return groups_; }
+  const VplLightCuts& cuts() const { return cuts_; }
+  float clampDistance() const { return clampDistance_; }
+
+ private:
+  VplGroups groups_;
+  VplLightCuts cuts_;
+  float clampDistance_ = 0.0f;
+  std::optional<gl::TextureBuffer> lights_;
+  std::optional<gl::TextureBuffer> cutTable_;
+  std::optional<VplShadowMaps> shadows_;  // empty when the driver lacks kVplShadow
+  bool attached_ = false;
+};
+
+}  // namespace bounce
