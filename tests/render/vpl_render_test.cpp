@@ -6,6 +6,7 @@
 // cut (vplCutIrradiance); a dynamic instance in indirect mode gets the same VPL light.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -129,6 +130,12 @@ TEST(VplRender, CulledFrameIsTheCpuCut) {
   const VplGroups& groups = renderer.vpls().groups();
   const VplLightCuts& cuts = renderer.vpls().cuts();
   ASSERT_GT(groups.groupCount(), 1u);
+  // The cut is in use (not the one-cell fallback) and leaves VPLs out somewhere.
+  ASSERT_GT(cuts.cellEntries.size(), 1u);
+  std::size_t fewest = s.vpls.size();
+  for (std::size_t c = 0; c < cuts.cellEntries.size(); ++c)
+    fewest = std::min(fewest, cuts.lightsEvaluated(c));
+  EXPECT_LT(fewest, s.vpls.size() / 2);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
