@@ -24,8 +24,10 @@ namespace bounce {
 
 struct VplRenderSettings {
   std::size_t groups = kMaxVplGroups;  // K, coarse groups (≤ kMaxVplGroups)
-  bool culling = true;                 // false: every VPL at every fragment (one cell, all near)
-  float kappa = 4.0f;                  // far-group distance in group radii (vpl_groups.h)
+  // false: every VPL at every fragment (one cell, all near). Also what culling falls back to
+  // when the cut would keep more than half the VPLs (few VPLs: nothing to gain).
+  bool culling = true;
+  float kappa = 4.0f;  // far-group distance in group radii (vpl_groups.h)
   int maxCellsPerAxis = 16;
   // Visibility: one shadow cube per group (render/vpl_shadow_maps.h); shadows.enabled = false
   // draws every VPL unoccluded.
