@@ -11,10 +11,13 @@
 #include <cmath>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
 #include "render/vpl_shadow_maps.h"
 #include "render/vpl_visibility_probe.h"
+
+#include "lightmap_scenes.h"
 #include "scene/load.h"
 #include "shadow_scenes.h"
 #include "vpl/vpl_gather.h"
@@ -353,6 +356,72 @@ TEST(VplShadow, CornellMapsMatchRaysFromTheSamePoints) {
               diffNone / sumRays);
   EXPECT_LE(diffMaps, 0.03 * sumRays);
   EXPECT_GE(diffNone, 0.15 * sumRays);
+}
+
+// The renderer end to end (vpl mode): VPLs on a ceiling patch over a floor, a dynamic box
+// between. The box's shadow darkens the floor; moved out of the room, the frame equals the
+// frame without VPL shadows (the cubes were redrawn, nothing shadows); moved back, the first
+// frame returns exactly.
+TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
+  testContext();
+  Scene scene;
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, grey("floor"));
+  addBox(scene, {0.0f, 0.15f, -0.1f}, {0.2f, 0.2f, 0.1f}, grey("box"));
+  const std::size_t box = scene.instances.size() - 1;
+  scene.instances[box].mobility = Mobility::Dynamic;
+  Bake bake;
+  bake.layout.width = bake.layout.height = 1;
+  bake.layout.texelSize = 1.0f;
+  bake.irradiance = Image(1, 1);
+  std::vector<Vpl> vpls;
+  for (int i = 0; i < 64; ++i) {
+    Vpl v;
+    v.position = {0.2f + 0.02f * static_cast<float>(i % 8), 0.4f,
+                  -0.07f + 0.02f * static_cast<float>(i / 8)};
+    v.normal = {0.0f, -1.0f, 0.0f};
+    v.flux = glm::vec3(1e-3f);
+    vpls.push_back(v);
+  }
+  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
+  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", 0.02f}};
+  bake.manifestJson = manifest.dump();
+  bake.vpls = vpls;
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+  // The reference frames come from a second renderer without VPL shadows, so that nothing but
+  // the box's move can make the first one redraw its cubes.
+  settings.vpls.shadows.enabled = false;
+  ForwardRenderer reference(scene, gl::shaderDirectory(), settings, &bake);
+  const Camera camera = downCamera(1.0f);
+  constexpr int kSize = 32;
+  const Image shadowed = renderer.renderImage(camera, kSize, kSize);
+  const Image unshadowed = reference.renderImage(camera, kSize, kSize);
+  // Floor pixels (not the box's own) darkened to below half by the box: its shadow is there.
+  int dark = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t i = shadowed.index(x, y);
+      if (shadowed.pixels[i].g < 0.5f * unshadowed.pixels[i].g) ++dark;
+    }
+  EXPECT_GE(dark, 10);
+
+  const glm::mat4 away = glm::translate(glm::mat4(1.0f), glm::vec3(5.0f, 0.0f, 0.0f));
+  renderer.setInstanceTransform(box, away);
+  reference.setInstanceTransform(box, away);
+  const Image movedAway = renderer.renderImage(camera, kSize, kSize);
+  const Image movedAwayUnshadowed = reference.renderImage(camera, kSize, kSize);
+  for (std::size_t i = 0; i < movedAway.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(movedAway.pixels[i][c], movedAwayUnshadowed.pixels[i][c],
+                  1e-4f * movedAwayUnshadowed.pixels[i][c] + 1e-9f)
+          << "pixel " << i << ": the box left, its VPL shadow stayed";
+
+  renderer.setInstanceTransform(box, glm::mat4(1.0f));
+  const Image back = renderer.renderImage(camera, kSize, kSize);
+  for (std::size_t i = 0; i < back.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_EQ(back.pixels[i][c], shadowed.pixels[i][c]) << "pixel " << i;
 }
 
 }  // namespace
