@@ -579,6 +579,13 @@ if os.path.isdir(VALID):
     bake_case("vpls_normal_long", "error", "normal is not a unit vector", vpls=vpls_with(28, "<3f", 0.0, 2.0, 0.0))
     bake_case("vpls_flux_negative", "error", "flux is negative or not finite", vpls=vpls_with(40, "<f", -1.0))
     bake_case("vpls_cut", "error", "vpls: truncated", vpls=vpls[:10])
+    # Seeds of fuzz_bake (tests/fuzz/fuzz_bake.cpp): a byte picking the file, then its content.
+    for i, f in enumerate(("bake.json", "layout.bin", "lightmap.exr", "vpls")):
+        write("bake_fuzz_seeds/valid_%s" % f.replace(".", "_"), bytes([i]) + bake_file(f), None, None)
+    for name, i, f in (("layout_cut", 1, "layout.bin"), ("vpls_normal_long", 3, "vpls"),
+                       ("manifest_other_scene", 0, "bake.json")):
+        with open(os.path.join(ROOT, "bake", name + ".bake", f), "rb") as src:
+            write("bake_fuzz_seeds/%s" % name, bytes([i]) + src.read(), None, None)
 else:
     print("bake/valid.bake is missing: bake it first (command above); bake cases skipped")
 
