@@ -2,7 +2,8 @@
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With --bake: M cycles the
-//   modes (full, direct, indirect, lightmap, charts), C toggles the chart/texel-density view.
+//   modes (full, direct, indirect, lightmap, charts, and with the bake's VPLs vpl, vpl-clamp),
+//   C toggles the chart/texel-density view.
 //   The title shows the camera, the mode, the frame time, the speed and the exposure.
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
@@ -58,7 +59,7 @@ class Viewer {
         scene_(std::move(scene)),
         bake_(std::move(bake)),
         window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}},
+        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}, {}},
                   bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
         exposure_(options.exposure) {
@@ -123,14 +124,20 @@ class Viewer {
     fly_.emplace(cameras_[index]);
   }
 
-  // The modes in the order M steps through them; without a bake only direct.
+  // The modes in the order M steps through them; without a bake only direct; the VPL modes
+  // (vpl, vpl-clamp) only when the bake has VPLs.
   void nextMode() {
     if (!renderer_.hasBake()) return;
     const std::vector<std::string> names = bounce::renderModeNames();
     const std::string current(bounce::renderModeName(renderer_.settings().mode));
     std::size_t i = 0;
     while (i < names.size() && names[i] != current) ++i;
-    setMode(*bounce::parseRenderMode(names[(i + 1) % names.size()]));
+    for (std::size_t step = 1; step <= names.size(); ++step) {
+      const bounce::RenderMode next = *bounce::parseRenderMode(names[(i + step) % names.size()]);
+      if (bounce::renderModeNeedsVpls(next) && !renderer_.hasVpls()) continue;
+      setMode(next);
+      return;
+    }
   }
 
   void toggleCharts() {
@@ -146,6 +153,8 @@ class Viewer {
                  std::string(bounce::renderModeName(mode)).c_str(),
                  mode == bounce::RenderMode::Lightmap
                      ? " (pixels are E/pi: the baked irradiance on a white surface)"
+                 : mode == bounce::RenderMode::VplClamp
+                     ? " (red: the VPLs' E/pi on a white surface; green: what their clamp removed)"
                      : "");
   }
 
@@ -253,7 +262,8 @@ int main(int argc, char** argv) {
                  "bake folder (bounce-bake's output) for this scene: adds its baked light");
   app.add_option("--mode", options.mode,
                  "start in this mode: full (direct + baked indirect; the default with --bake), "
-                 "direct (the default without), indirect, lightmap (E/pi), charts")
+                 "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
+                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   CLI11_PARSE(app, argc, argv);
   try {
