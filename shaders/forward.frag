@@ -2,7 +2,8 @@
 // One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface,
 //   L_o = ρ/π · (E_punctual + E_area + E_baked) + L_e,
 // into a linear float target; E_baked is the lightmap's irradiance on static surfaces, and the
-// mode picks the terms (lightmap.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
+// mode picks the terms (lightmap.glsl); dynamic instances (and every surface in the vpl mode)
+// get their indirect light from the virtual point lights instead (vpl.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
 // path tracer does; L_e the surface's own emission (front face; both when double-sided).
 // Punctual lights are shadowed by their maps (shadows.glsl); area lights by theirs
 // (shadow_area.glsl: percentage-closer soft shadows).
@@ -10,6 +11,8 @@
 #include "shadows.glsl"
 #include "area_light.glsl"
 #include "lightmap.glsl"
+#include "vpl.glsl"
+#include "vpl_shadows.glsl"
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
@@ -36,5 +39,8 @@ void main() {
   vec3 direct = vec3(0.0);
   if (modeUsesDirectLight())
     direct = punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n, ng);
-  fragRadiance = vec4(shadeForMode(albedo, direct, uEmission, vLightmapUv), 1.0);
+  vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
+  if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
+  fragRadiance =
+      vec4(shadeForMode(albedo, direct, uEmission, vLightmapUv, vplClamped, vplRemoved), 1.0);
 }

@@ -4,29 +4,42 @@
 // that reflected at least once (plus the direct light of baked-only lights), one texel per atlas
 // texel, read bilinearly at the fragment's atlas UV (v = 0 is the top row, as stored). A
 // Lambertian surface of reflectance ρ reflects it as radiance ρ/π · E (W/(sr·m²)). Dynamic
-// instances have no atlas region and get none.
+// instances have no atlas region: with VPLs (vpl.glsl) they get E_vpl instead, without none.
 //
 // Modes (must match lightingModeIndex in engine/render/lightmap_pass.cpp):
-//   full      ρ/π · (E_direct + E_baked) + L_e
+//   full      ρ/π · (E_direct + E_indirect) + L_e
 //   direct    ρ/π · E_direct + L_e                (real-time direct light only)
-//   indirect  ρ/π · E_baked                       (compare with bounce-trace --indirect-only)
+//   indirect  ρ/π · E_indirect                    (compare with bounce-trace --indirect-only)
 //   lightmap  E_baked / π                         (the radiance of a white, ρ = 1, surface)
 //   charts    chart colour × a checker of lightmap texels (dynamic instances grey)
+//   vpl       ρ/π · E_vpl on every surface        (the VPLs instead of the lightmap)
+//   vpl-clamp (lum(E_vpl), lum(E_removed), 0) / π: what the VPLs give and what their clamp
+//             removed, for a white surface (luminance; the clamp report sums these)
+// E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
 const int LIGHTING_FULL = 0;
 const int LIGHTING_DIRECT = 1;
 const int LIGHTING_INDIRECT = 2;
 const int LIGHTING_LIGHTMAP = 3;
 const int LIGHTING_CHARTS = 4;
+const int LIGHTING_VPL = 5;
+const int LIGHTING_VPL_CLAMP = 6;
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region
 uniform sampler2D uLightmap;         // E, W/m², RGB32F, bilinear, clamped at the borders
 uniform sampler2D uLightmapCharts;   // chart colour per texel, nearest (black: uncovered)
 uniform vec2 uLightmapSize;          // atlas width, height in texels
+uniform bool uVplReceiver;           // this draw: a dynamic instance lit by the VPLs
 
 // Whether the mode needs the live direct light at all.
 bool modeUsesDirectLight() {
   return uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_DIRECT;
+}
+
+// Whether this draw evaluates the VPLs (vpl.glsl).
+bool modeUsesVpls() {
+  if (uLightingMode == LIGHTING_VPL || uLightingMode == LIGHTING_VPL_CLAMP) return true;
+  return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT);
 }
 
 vec3 bakedIrradiance(vec2 atlasUv) {
@@ -40,11 +53,27 @@ vec3 chartView(vec2 atlasUv) {
   return texture(uLightmapCharts, atlasUv).rgb * checker;
 }
 
-// Outgoing radiance for the current mode. `directIrradiance` is the live direct E (W/m²).
-vec3 shadeForMode(vec3 albedo, vec3 directIrradiance, vec3 emission, vec2 atlasUv) {
+// E_indirect (W/m²): the lightmap's, or the VPLs' on a dynamic instance.
+vec3 indirectIrradiance(vec2 atlasUv, vec3 vplIrradiance) {
+  return uVplReceiver ? vplIrradiance : bakedIrradiance(atlasUv);
+}
+
+float luminance(vec3 c) {
+  return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// Outgoing radiance for the current mode. `directIrradiance` is the live direct E (W/m²);
+// `vplIrradiance` the VPLs' clamped E and `vplRemoved` what the clamp removed (W/m²; zero
+// unless modeUsesVpls()).
+vec3 shadeForMode(vec3 albedo, vec3 directIrradiance, vec3 emission, vec2 atlasUv,
+                  vec3 vplIrradiance, vec3 vplRemoved) {
   if (uLightingMode == LIGHTING_DIRECT) return albedo / PI * directIrradiance + emission;
-  if (uLightingMode == LIGHTING_INDIRECT) return albedo / PI * bakedIrradiance(atlasUv);
+  if (uLightingMode == LIGHTING_INDIRECT)
+    return albedo / PI * indirectIrradiance(atlasUv, vplIrradiance);
   if (uLightingMode == LIGHTING_LIGHTMAP) return bakedIrradiance(atlasUv) / PI;
   if (uLightingMode == LIGHTING_CHARTS) return chartView(atlasUv);
-  return albedo / PI * (directIrradiance + bakedIrradiance(atlasUv)) + emission;
+  if (uLightingMode == LIGHTING_VPL) return albedo / PI * vplIrradiance;
+  if (uLightingMode == LIGHTING_VPL_CLAMP)
+    return vec3(luminance(vplIrradiance), luminance(vplRemoved), 0.0) / PI;
+  return albedo / PI * (directIrradiance + indirectIrradiance(atlasUv, vplIrradiance)) + emission;
 }

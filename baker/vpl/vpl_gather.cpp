@@ -47,19 +47,4 @@ VplIrradiance gatherVplIrradiance(std::span<const Vpl> vpls, glm::vec3 position,
   return out;
 }
 
-float vplClampDistance(double surfaceArea, std::size_t vplCount) {
-  if (vplCount == 0 || !(surfaceArea > 0.0)) return 0.0f;
-  return static_cast<float>(
-      std::sqrt(surfaceArea / (std::numbers::pi * static_cast<double>(vplCount))));
-}
-
-double surfaceArea(const WorldGeometry& geometry) {
-  double area = 0.0;
-  for (std::size_t t = 0; t < geometry.triangleCount(); ++t) {
-    const double a = 0.5 * glm::length(glm::dvec3(geometry.triangleCross(t)));
-    if (std::isfinite(a)) area += a;
-  }
-  return area;
-}
-
 }  // namespace bounce

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/vpl.h"
+#include "bake/vpl_clamp.h"  // vplClampDistance, surfaceArea (moved to engine/bake)
 #include "ray/ray_kernel.h"
 #include "scene/world_geometry.h"
 
@@ -26,10 +27,5 @@ struct VplIrradiance {
 // kernel: visibility between x and each VPL (nullptr: every VPL visible). r = 0: no clamp.
 VplIrradiance gatherVplIrradiance(std::span<const Vpl> vpls, glm::vec3 position, glm::vec3 normal,
                                   const RayKernel* kernel, float clampDistance);
-
-// r = sqrt(A/(π·N)), metres; 0 when N = 0.
-float vplClampDistance(double surfaceArea, std::size_t vplCount);
-// Σ triangle areas, m².
-double surfaceArea(const WorldGeometry& geometry);
 
 }  // namespace bounce

@@ -2,6 +2,7 @@
 // EXR and/or tone-mapped sRGB PNG files. Thin: flags -> library -> files; errors -> exit 1.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -35,6 +36,8 @@ struct Options {
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
   std::vector<std::string> moves;  // NAME X Y Z, repeated
+  std::size_t vplGroups = bounce::kMaxVplGroups;
+  bool noVplCulling = false;
   float shadowFilterRadius = 1.5f;
 };
 
@@ -48,6 +51,8 @@ bounce::RendererSettings rendererSettings(const Options& options) {
   settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
                                                                : bounce::ShadowFilter::Poisson;
   settings.shadows.filterRadius = options.shadowFilterRadius;
+  settings.vpls.groups = options.vplGroups;
+  settings.vpls.culling = !options.noVplCulling;
   return settings;
 }
 
@@ -119,6 +124,19 @@ int run(const Options& options) {
                  options.frames - 1, ms(repeatStart, Clock::now()) / (options.frames - 1));
   }
 
+  const bool dynamicInstances = std::any_of(
+      scene.instances.begin(), scene.instances.end(),
+      [](const bounce::Instance& i) { return i.mobility == bounce::Mobility::Dynamic; });
+  if (renderer.hasVpls() && (bounce::renderModeNeedsVpls(settings.mode) || dynamicInstances)) {
+    const bounce::VplClampReport clamp =
+        renderer.measureVplClamp(camera, options.width, options.height);
+    std::fprintf(stderr,
+                 "bounce-render: VPL clamp removed %.2f%% of the VPL irradiance over the frame "
+                 "(%zu VPLs in %zu groups, r = %.4g m; every visible surface, luminance)\n",
+                 100.0 * clamp.removedFraction(), clamp.vplCount,
+                 renderer.vpls().groups().groupCount(), static_cast<double>(clamp.clampDistance));
+  }
+
   // All outputs or none (image_io.h): a failing --out leaves no other one behind.
   std::vector<bounce::ImageOutput> outputs;
   for (const std::string& out : options.outputs) outputs.push_back({out, &image, options.exposure});
@@ -162,8 +180,15 @@ int main(int argc, char** argv) {
                  "what to draw: full (direct + baked indirect; the default with --bake), direct "
                  "(real-time direct light only; the default without), indirect (only the baked "
                  "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
-                 "(lightmap charts and texels)")
+                 "(lightmap charts and texels), vpl (indirect light of every surface from the "
+                 "bake's VPLs, rho/pi*E_vpl), vpl-clamp (red: the VPLs' E/pi on a white surface, "
+                 "green: what their clamp removed)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
+  app.add_option("--vpl-groups", options.vplGroups,
+                 "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")
+      ->check(CLI::Range(std::size_t{1}, bounce::kMaxVplGroups));
+  app.add_flag("--no-vpl-culling", options.noVplCulling,
+               "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-shadows", options.noShadows,
                "draw every light unshadowed (punctual and area lights)");
   app.add_option("--shadow-resolution", options.shadowResolution,

@@ -2,7 +2,8 @@
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With --bake: M cycles the
-//   modes (full, direct, indirect, lightmap, charts), C toggles the chart/texel-density view.
+//   modes (full, direct, indirect, lightmap, charts, and with the bake's VPLs vpl, vpl-clamp),
+//   C toggles the chart/texel-density view.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
 //   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
 //   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
@@ -66,7 +67,7 @@ class Viewer {
         scene_(std::move(scene)),
         bake_(std::move(bake)),
         window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}},
+        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}, {}},
                   bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
         selection_(scene_),
@@ -140,14 +141,20 @@ class Viewer {
     fly_.emplace(cameras_[index]);
   }
 
-  // The modes in the order M steps through them; without a bake only direct.
+  // The modes in the order M steps through them; without a bake only direct; the VPL modes
+  // (vpl, vpl-clamp) only when the bake has VPLs.
   void nextMode() {
     if (!renderer_.hasBake()) return;
     const std::vector<std::string> names = bounce::renderModeNames();
     const std::string current(bounce::renderModeName(renderer_.settings().mode));
     std::size_t i = 0;
     while (i < names.size() && names[i] != current) ++i;
-    setMode(*bounce::parseRenderMode(names[(i + 1) % names.size()]));
+    for (std::size_t step = 1; step <= names.size(); ++step) {
+      const bounce::RenderMode next = *bounce::parseRenderMode(names[(i + step) % names.size()]);
+      if (bounce::renderModeNeedsVpls(next) && !renderer_.hasVpls()) continue;
+      setMode(next);
+      return;
+    }
   }
 
   void toggleCharts() {
@@ -163,6 +170,8 @@ class Viewer {
                  std::string(bounce::renderModeName(mode)).c_str(),
                  mode == bounce::RenderMode::Lightmap
                      ? " (pixels are E/pi: the baked irradiance on a white surface)"
+                 : mode == bounce::RenderMode::VplClamp
+                     ? " (red: the VPLs' E/pi on a white surface; green: what their clamp removed)"
                      : "");
   }
 
@@ -295,7 +304,8 @@ int main(int argc, char** argv) {
                  "bake folder (bounce-bake's output) for this scene: adds its baked light");
   app.add_option("--mode", options.mode,
                  "start in this mode: full (direct + baked indirect; the default with --bake), "
-                 "direct (the default without), indirect, lightmap (E/pi), charts")
+                 "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
+                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--move", options.moves,
                  "NAME X Y Z: start with the dynamic instance NAME's world translation at (X, Y, "

@@ -128,6 +128,9 @@ void Program::set(const std::string& name, glm::vec2 v) {
 void Program::set(const std::string& name, glm::vec3 v) {
   glUniform3f(location(name), v.x, v.y, v.z);
 }
+void Program::set(const std::string& name, glm::ivec3 v) {
+  glUniform3i(location(name), v.x, v.y, v.z);
+}
 void Program::set(const std::string& name, glm::vec4 v) {
   glUniform4f(location(name), v.x, v.y, v.z, v.w);
 }

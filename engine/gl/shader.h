@@ -36,6 +36,7 @@ class Program {
   void set(const std::string& name, float value);
   void set(const std::string& name, glm::vec2 value);
   void set(const std::string& name, glm::vec3 value);
+  void set(const std::string& name, glm::ivec3 value);
   void set(const std::string& name, glm::vec4 value);
   void set(const std::string& name, const glm::mat3& value);
   void set(const std::string& name, const glm::mat4& value);

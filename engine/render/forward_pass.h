@@ -1,5 +1,6 @@
 // The lit forward pass: every instance with its own model matrix, shaded by shaders/forward.frag
-// (emission + punctual lights with their shadow maps + area lights) into a linear float target:
+// (emission + punctual lights with their shadow maps + area lights, the lightmap or the VPLs for
+// indirect light) into a linear float target:
 // outgoing radiance, W/(sr·m²).
 #pragma once
 
@@ -11,6 +12,7 @@
 #include "render/lightmap_pass.h"
 #include "render/punctual_lights.h"
 #include "render/shadow_pass.h"
+#include "render/vpl_pass.h"
 
 namespace bounce {
 
@@ -20,8 +22,8 @@ class ForwardPass {
 
   // Clears `target` to black and draws the scene seen through `viewProjection`.
   void draw(const GpuScene& scene, const PunctualLights& lights, const ShadowPass& shadows,
-            const LightmapPass& lightmap, RenderMode mode, const glm::mat4& viewProjection,
-            gl::RenderTarget& target);
+            const LightmapPass& lightmap, const VplPass& vpls, RenderMode mode,
+            const glm::mat4& viewProjection, gl::RenderTarget& target);
 
  private:
   gl::Program program_;

@@ -1,8 +1,10 @@
 #include "render/forward_renderer.h"
 
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include "bake/vpl_clamp.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
@@ -17,6 +19,7 @@ struct ForwardRenderer::Passes {
   PunctualLights lights;
   ShadowPass shadows;
   LightmapPass lightmap;
+  VplPass vpls;
   ForwardPass forward;
 
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
@@ -27,12 +30,24 @@ struct ForwardRenderer::Passes {
         forward(shaderDir) {}
 };
 
+namespace {
+
+void requireLight(RenderMode mode, bool hasBake, bool hasVpls) {
+  if (renderModeNeedsBake(mode) && !hasBake)
+    throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
+                                "' needs a bake (--bake DIR)");
+  if (renderModeNeedsVpls(mode) && !hasVpls)
+    throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
+                                "' draws virtual point lights, but the bake has none (no 'vpls' "
+                                "file: bake with bounce-bake --vpls N, N > 0)");
+}
+
+}  // namespace
+
 ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
                                  const RendererSettings& settings, const Bake* bake)
-    : settings_(settings) {
-  if (renderModeNeedsBake(settings.mode) && !bake)
-    throw std::invalid_argument("mode '" + std::string(renderModeName(settings.mode)) +
-                                "' needs a bake (--bake DIR)");
+    : settings_(settings), scene_(scene) {
+  requireLight(settings.mode, bake != nullptr, bake && bake->vpls && !bake->vpls->empty());
   passes_ = std::make_unique<Passes>(scene, shaderDir, settings, warnings_);
   if (bake) setBake(*bake);
   if (scene.lights.empty() && passes_->scene.emitterCount() == 0)
@@ -58,18 +73,54 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 }
 
 void ForwardRenderer::setBake(const Bake& bake) {
-  passes_->lightmap.attach(bake, passes_->scene);
-  passes_->lights.setBakedDirectInLightmap(true);
+  Passes& p = *passes_;
+  p.lightmap.attach(bake, p.scene);
+  p.lights.setBakedDirectInLightmap(true);
+  if (bake.vpls && !bake.vpls->empty()) {
+    const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifestJson);
+    const float r = fromManifest ? *fromManifest
+                                 : vplClampDistance(staticSurfaceArea(scene_), bake.vpls->size());
+    // The grid covers the static surfaces (where the VPLs and most receivers are).
+    Box statics;
+    for (const GpuInstance& instance : p.scene.instances())
+      if (instance.mobility == Mobility::Static && !instance.worldBox.empty()) {
+        statics.add(instance.worldBox.lo);
+        statics.add(instance.worldBox.hi);
+      }
+    p.vpls.attach(*bake.vpls, r, statics.empty() ? p.scene.bounds() : statics, settings_.vpls);
+  }
 }
 
 bool ForwardRenderer::hasBake() const {
   return passes_->lightmap.attached();
 }
 
+bool ForwardRenderer::hasVpls() const {
+  return passes_->vpls.attached();
+}
+
+const VplPass& ForwardRenderer::vpls() const {
+  return passes_->vpls;
+}
+
+VplClampReport ForwardRenderer::measureVplClamp(const Camera& camera, int width, int height) {
+  const RenderMode mode = settings_.mode;
+  setMode(RenderMode::VplClamp);
+  const Image image = renderImage(camera, width, height);
+  settings_.mode = mode;
+  VplClampReport report;
+  // The view holds (lum E_vpl, lum E_removed, 0)/π (shaders/lightmap.glsl).
+  for (const glm::vec3& pixel : image.pixels) {
+    report.irradiance += std::numbers::pi * static_cast<double>(pixel.r);
+    report.removed += std::numbers::pi * static_cast<double>(pixel.g);
+  }
+  report.vplCount = passes_->vpls.groups().vplCount();
+  report.clampDistance = passes_->vpls.clampDistance();
+  return report;
+}
+
 void ForwardRenderer::setMode(RenderMode mode) {
-  if (renderModeNeedsBake(mode) && !hasBake())
-    throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
-                                "' needs a bake (--bake DIR)");
+  requireLight(mode, hasBake(), hasVpls());
   settings_.mode = mode;
 }
 
@@ -79,8 +130,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
                    cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
-  p.forward.draw(p.scene, p.lights, p.shadows, p.lightmap, settings_.mode, cameraViewProjection,
-                 target);
+  p.forward.draw(p.scene, p.lights, p.shadows, p.lightmap, p.vpls, settings_.mode,
+                 cameraViewProjection, target);
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height) {

@@ -22,13 +22,27 @@
 #include "image/image.h"
 #include "render/render_mode.h"
 #include "render/shadow_settings.h"
+#include "render/vpl_pass.h"
 #include "scene/scene.h"
 
 namespace bounce {
 
+// What the VPL clamp removed over a frame (render mode vpl-clamp, every visible surface).
+struct VplClampReport {
+  double irradiance = 0.0;  // Σ over pixels of luminance(E_vpl) clamped, W/m²
+  double removed = 0.0;     // Σ over pixels of luminance(E_unclamped − E_vpl), W/m²
+  std::size_t vplCount = 0;
+  float clampDistance = 0.0f;  // r, m
+  // removed / (irradiance + removed): the share of the unclamped VPL irradiance the clamp took.
+  double removedFraction() const {
+    return irradiance + removed > 0.0 ? removed / (irradiance + removed) : 0.0;
+  }
+};
+
 struct RendererSettings {
   RenderMode mode = RenderMode::Direct;
   ShadowSettings shadows;
+  VplRenderSettings vpls;
 };
 
 class ForwardRenderer {
@@ -60,12 +74,23 @@ class ForwardRenderer {
   void setCascadeCamera(std::optional<Camera> camera) { cascadeCamera_ = std::move(camera); }
 
   // Adds the baked light of `bake` (read by readBake for this scene): uploads the lightmap and
-  // gives its static instances their atlas UVs. Modes other than Direct need one.
+  // gives its static instances their atlas UVs; with bake.vpls, groups and uploads the VPLs
+  // (clamp distance: bake.json "vpls"."clampDistance", else sqrt(A/(π·N)) over the static
+  // surfaces). Modes other than Direct need a bake; the vpl modes need its VPLs.
   void setBake(const Bake& bake);
   bool hasBake() const;
+  bool hasVpls() const;
   // Switches what the lit pass draws; throws std::invalid_argument for a mode that needs a bake
-  // when none is set.
+  // (or VPLs) when none is set.
   void setMode(RenderMode mode);
+
+  // The VPLs as drawn: K groups with their representatives (groups().representatives(): one
+  // Vpl per group, the positions VPL shadow maps are rendered from), the per-cell cuts and the
+  // clamp distance. Empty before a bake with VPLs.
+  const VplPass& vpls() const;
+  // Renders the vpl-clamp view of `camera` at width x height and sums it (needs VPLs; the mode
+  // is restored).
+  VplClampReport measureVplClamp(const Camera& camera, int width, int height);
 
   const RendererSettings& settings() const { return settings_; }
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
@@ -78,6 +103,7 @@ class ForwardRenderer {
  private:
   struct Passes;
   RendererSettings settings_;
+  const Scene& scene_;
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;
   std::unique_ptr<Passes> passes_;

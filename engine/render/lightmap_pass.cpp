@@ -21,6 +21,10 @@ int lightingModeIndex(RenderMode mode) {
       return 3;
     case RenderMode::Charts:
       return 4;
+    case RenderMode::Vpl:
+      return 5;
+    case RenderMode::VplClamp:
+      return 6;
   }
   return 1;
 }

@@ -5,8 +5,9 @@
 namespace bounce {
 namespace {
 
-constexpr std::array kModes = {RenderMode::Full, RenderMode::Direct, RenderMode::Indirect,
-                               RenderMode::Lightmap, RenderMode::Charts};
+constexpr std::array kModes = {RenderMode::Full,     RenderMode::Direct, RenderMode::Indirect,
+                               RenderMode::Lightmap, RenderMode::Charts, RenderMode::Vpl,
+                               RenderMode::VplClamp};
 
 }  // namespace
 
@@ -22,12 +23,20 @@ std::string_view renderModeName(RenderMode mode) {
       return "lightmap";
     case RenderMode::Charts:
       return "charts";
+    case RenderMode::Vpl:
+      return "vpl";
+    case RenderMode::VplClamp:
+      return "vpl-clamp";
   }
   return "direct";
 }
 
 bool renderModeNeedsBake(RenderMode mode) {
   return mode != RenderMode::Direct;
+}
+
+bool renderModeNeedsVpls(RenderMode mode) {
+  return mode == RenderMode::Vpl || mode == RenderMode::VplClamp;
 }
 
 std::optional<RenderMode> parseRenderMode(std::string_view name) {

@@ -1,5 +1,6 @@
 // What the lit pass draws. Direct light is drawn live (punctual and area lights, shadowed);
-// modes that add baked or VPL indirect light slot in here.
+// indirect light comes from the lightmap (static surfaces) or the VPLs (dynamic instances; every
+// surface in the vpl modes).
 #pragma once
 
 #include <optional>
@@ -15,10 +16,15 @@ enum class RenderMode {
   Indirect,  // only the baked indirect ρ/π·E (needs a bake; compare: bounce-trace --indirect-only)
   Lightmap,  // the baked irradiance itself, shown as E/π: a white (ρ = 1) surface (needs a bake)
   Charts,    // lightmap charts, each its colour, × a checker of texels (needs a bake)
+  Vpl,       // indirect light of every surface from the VPLs, ρ/π·E_vpl (needs a bake with VPLs)
+  VplClamp,  // (lum E_vpl, lum E_removed, 0)/π: the VPLs and what their clamp removed, white
+             // surfaces (needs VPLs; bounce-render's clamp report reads it)
 };
 
-// Whether the mode reads the lightmap (and so needs a bake).
+// Whether the mode reads the lightmap or the VPLs (and so needs a bake).
 bool renderModeNeedsBake(RenderMode mode);
+// Whether the mode draws every surface from the VPLs (and so needs a bake with VPLs).
+bool renderModeNeedsVpls(RenderMode mode);
 
 // "direct", …: the names the tools' --mode accepts.
 std::string_view renderModeName(RenderMode mode);

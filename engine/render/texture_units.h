@@ -14,6 +14,8 @@ struct TextureUnit {
   static constexpr int kAreaShadow0 = 9;        // reserved: area-light maps (shadow_area.glsl)
   static constexpr int kLightmap = 12;          // sampler2D: baked irradiance (lightmap.glsl)
   static constexpr int kLightmapCharts = 13;    // sampler2D: chart colours (lightmap.glsl)
+  static constexpr int kVplLights = 14;         // samplerBuffer: the VPL light table (vpl.glsl)
+  static constexpr int kVplCuts = 15;           // usamplerBuffer: per-cell lightcuts (vpl.glsl)
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

@@ -1,4 +1,4 @@
-#include "vpl/vpl_reduce.h"
+#include "bake/vpl_reduce.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,10 +37,12 @@ struct Cluster {
   }
 };
 
-Vpl merge(std::span<const Vpl> vpls, const Cluster& c) {
+}  // namespace
+
+Vpl mergeVpls(std::span<const Vpl> vpls, std::span<const uint32_t> members) {
   glm::dvec3 flux(0.0), position(0.0), normal(0.0), plain(0.0);
   double total = 0.0;
-  for (uint32_t i : c.members) {
+  for (uint32_t i : members) {
     const Vpl& v = vpls[i];
     const double w = weight(v);
     flux += glm::dvec3(v.flux);
@@ -52,16 +54,14 @@ Vpl merge(std::span<const Vpl> vpls, const Cluster& c) {
   Vpl out;
   out.flux = glm::vec3(flux);
   out.position =
-      glm::vec3(total > 0.0 ? position / total : plain / static_cast<double>(c.members.size()));
+      glm::vec3(total > 0.0 ? position / total : plain / static_cast<double>(members.size()));
   const double len = glm::length(normal);
-  out.normal = len > 0.0 ? glm::vec3(normal / len) : vpls[c.members.front()].normal;
+  out.normal = len > 0.0 ? glm::vec3(normal / len) : vpls[members.front()].normal;
   return out;
 }
 
-}  // namespace
-
-std::vector<Vpl> reduceVpls(std::span<const Vpl> vpls, std::size_t k) {
-  if (k >= vpls.size()) return {vpls.begin(), vpls.end()};
+std::vector<std::vector<uint32_t>> groupVpls(std::span<const Vpl> vpls, std::size_t k) {
+  if (vpls.empty()) return {};
   std::vector<Cluster> clusters(6);
   for (uint32_t i = 0; i < vpls.size(); ++i)
     clusters[normalGroup(vpls[i].normal)].members.push_back(i);
@@ -95,9 +95,17 @@ std::vector<Vpl> reduceVpls(std::span<const Vpl> vpls, std::size_t k) {
     right.measure(vpls);
     clusters.push_back(std::move(right));
   }
-  std::vector<Vpl> out;
+  std::vector<std::vector<uint32_t>> out;
   out.reserve(clusters.size());
-  for (const Cluster& c : clusters) out.push_back(merge(vpls, c));
+  for (Cluster& c : clusters) out.push_back(std::move(c.members));
+  return out;
+}
+
+std::vector<Vpl> reduceVpls(std::span<const Vpl> vpls, std::size_t k) {
+  if (k >= vpls.size()) return {vpls.begin(), vpls.end()};
+  std::vector<Vpl> out;
+  for (const std::vector<uint32_t>& members : groupVpls(vpls, k))
+    out.push_back(mergeVpls(vpls, members));
   return out;
 }
 

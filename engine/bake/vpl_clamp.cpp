@@ -1,0 +1,50 @@
+#include "bake/vpl_clamp.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <nlohmann/json.hpp>
+
+namespace bounce {
+
+float vplClampDistance(double surfaceArea, std::size_t vplCount) {
+  if (vplCount == 0 || !(surfaceArea > 0.0)) return 0.0f;
+  return static_cast<float>(
+      std::sqrt(surfaceArea / (std::numbers::pi * static_cast<double>(vplCount))));
+}
+
+double surfaceArea(const WorldGeometry& geometry) {
+  double area = 0.0;
+  for (std::size_t t = 0; t < geometry.triangleCount(); ++t) {
+    const double a = 0.5 * glm::length(glm::dvec3(geometry.triangleCross(t)));
+    if (std::isfinite(a)) area += a;
+  }
+  return area;
+}
+
+double staticSurfaceArea(const Scene& scene) {
+  const WorldGeometry geometry = flatten(scene);
+  double area = 0.0;
+  for (std::size_t t = 0; t < geometry.triangleCount(); ++t) {
+    const uint32_t instance = geometry.triangleInstance[t];
+    if (instance < scene.instances.size() && scene.instances[instance].mobility != Mobility::Static)
+      continue;
+    const double a = 0.5 * glm::length(glm::dvec3(geometry.triangleCross(t)));
+    if (std::isfinite(a)) area += a;
+  }
+  return area;
+}
+
+std::optional<float> manifestVplClampDistance(const std::string& manifestJson) {
+  const nlohmann::json manifest = nlohmann::json::parse(manifestJson, nullptr, false);
+  if (!manifest.is_object()) return std::nullopt;
+  const auto vpls = manifest.find("vpls");
+  if (vpls == manifest.end() || !vpls->is_object()) return std::nullopt;
+  const auto r = vpls->find("clampDistance");
+  if (r == vpls->end() || !r->is_number()) return std::nullopt;
+  const double value = r->get<double>();
+  if (!std::isfinite(value) || value < 0.0) return std::nullopt;
+  return static_cast<float>(value);
+}
+
+}  // namespace bounce

@@ -1,0 +1,27 @@
+// The clamp distance of a VPL set (docs/vpl.md, "The clamp"): the geometry term 1/d² of every
+// VPL is capped at 1/r² with
+//     r = sqrt(A / (π·N))                                    [m]
+// A the scene's surface area (m²) and N the VPL count: the radius of the disc each VPL covers
+// when N are spread evenly over A. Within r a VPL is replaced by (at most) that disc's light.
+// GL-free: the baker writes r into bake.json "vpls"."clampDistance", the renderer reads it.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "scene/world_geometry.h"
+
+namespace bounce {
+
+// r = sqrt(A/(π·N)), metres; 0 when N = 0 or A ≤ 0.
+float vplClampDistance(double surfaceArea, std::size_t vplCount);
+// Σ triangle areas, m² (non-finite areas skipped).
+double surfaceArea(const WorldGeometry& geometry);
+// Σ triangle areas of the static instances (the surfaces VPLs are generated on), m².
+double staticSurfaceArea(const Scene& scene);
+// bake.json's "vpls"."clampDistance" (m) when present, finite and ≥ 0; nullopt otherwise
+// (also for text that is not JSON).
+std::optional<float> manifestVplClampDistance(const std::string& manifestJson);
+
+}  // namespace bounce

@@ -1,0 +1,214 @@
+#include "bake/vpl_groups.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "bake/vpl_reduce.h"
+
+namespace bounce {
+
+namespace {
+
+// Largest distance from `centre` to lights[first, first + count).
+float radiusAround(std::span<const Vpl> lights, uint32_t first, uint32_t count, glm::vec3 centre) {
+  float radius = 0.0f;
+  for (uint32_t i = first; i < first + count; ++i)
+    radius = std::max(radius, glm::length(lights[i].position - centre));
+  return radius;
+}
+
+// Splits lights[first, first + count) at the median of its box's longest axis, recursively,
+// appending the nodes (a parent before its children); returns the subtree's root.
+int32_t buildTree(std::vector<Vpl>& lights, uint32_t first, uint32_t count,
+                  std::vector<VplNode>& nodes) {
+  const auto index = static_cast<int32_t>(nodes.size());
+  nodes.push_back({first, count, first, 0.0f, -1, -1});
+  if (count <= kVplLeafSize) return index;
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (uint32_t i = first; i < first + count; ++i) {
+    lo = glm::min(lo, lights[i].position);
+    hi = glm::max(hi, lights[i].position);
+  }
+  const glm::vec3 e = hi - lo;
+  const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+  const uint32_t half = count / 2;
+  const auto begin = lights.begin() + first;
+  std::nth_element(begin, begin + half, begin + count, [axis](const Vpl& a, const Vpl& b) {
+    return a.position[axis] < b.position[axis];
+  });
+  const int32_t left = buildTree(lights, first, half, nodes);
+  const int32_t right = buildTree(lights, first + half, count - half, nodes);
+  nodes[static_cast<std::size_t>(index)].left = left;
+  nodes[static_cast<std::size_t>(index)].right = right;
+  return index;
+}
+
+}  // namespace
+
+VplGroups::VplGroups(std::span<const Vpl> vpls, std::size_t k) : vplCount_(vpls.size()) {
+  if (k == 0) throw std::invalid_argument("VplGroups: k = 0 groups");
+  const std::vector<std::vector<uint32_t>> clusters = groupVpls(vpls, std::min(k, kMaxVplGroups));
+  lights_.reserve(vpls.size() + clusters.size());
+  for (const std::vector<uint32_t>& members : clusters) {
+    VplGroup group;
+    group.first = static_cast<uint32_t>(lights_.size());
+    group.count = static_cast<uint32_t>(members.size());
+    for (const uint32_t i : members) lights_.push_back(vpls[i]);
+    groups_.push_back(group);
+  }
+  for (VplGroup& group : groups_)
+    group.root = static_cast<uint32_t>(buildTree(lights_, group.first, group.count, nodes_));
+  // Representatives: the groups' first (N + g), then every other node of more than one VPL.
+  std::vector<uint32_t> members;
+  const auto represent = [&](VplNode& node) {
+    members.resize(node.count);
+    for (uint32_t i = 0; i < node.count; ++i) members[i] = node.first + i;
+    const Vpl representative = mergeVpls(std::span(lights_).first(vplCount_), members);
+    node.representative = static_cast<uint32_t>(lights_.size());
+    node.radius = radiusAround(lights_, node.first, node.count, representative.position);
+    lights_.push_back(representative);
+  };
+  for (VplGroup& group : groups_) {
+    VplNode& root = nodes_[group.root];
+    if (root.count > 1) {
+      represent(root);
+    } else {  // a lone VPL still gets its group slot N + g
+      root.representative = static_cast<uint32_t>(lights_.size());
+      lights_.push_back(lights_[root.first]);
+    }
+    group.radius = root.radius;
+  }
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    const bool isRoot =
+        std::any_of(groups_.begin(), groups_.end(), [&](const VplGroup& g) { return g.root == n; });
+    if (!isRoot && nodes_[n].count > 1) represent(nodes_[n]);
+  }
+  lightGroup_.assign(lights_.size(), 0);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    for (uint32_t i = groups_[g].first; i < groups_[g].first + groups_[g].count; ++i)
+      lightGroup_[i] = static_cast<uint32_t>(g);
+    lightGroup_[vplCount_ + g] = static_cast<uint32_t>(g);
+  }
+  for (const VplNode& node : nodes_)
+    if (node.count > 1) lightGroup_[node.representative] = lightGroup_[node.first];
+}
+
+std::size_t VplLightCuts::cellOf(glm::vec3 p) const {
+  const glm::ivec3 c =
+      glm::clamp(glm::ivec3(glm::floor((p - origin) / cellSize)), glm::ivec3(0), cells - 1);
+  return static_cast<std::size_t>(c.x) +
+         static_cast<std::size_t>(cells.x) *
+             (static_cast<std::size_t>(c.y) +
+              static_cast<std::size_t>(cells.y) * static_cast<std::size_t>(c.z));
+}
+
+std::size_t VplLightCuts::lightsEvaluated(std::size_t cell) const {
+  std::size_t n = 0;
+  const glm::uvec2 range = cellEntries[cell];
+  for (uint32_t e = range.x; e < range.x + range.y; ++e) n += entries[e].y;
+  return n;
+}
+
+VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 hi,
+                               const VplLightCutSettings& settings) {
+  VplLightCuts cuts;
+  lo = glm::min(lo, hi);
+  const glm::vec3 extent = glm::max(hi - lo, glm::vec3(0.0f));
+  const float longest = std::max({extent.x, extent.y, extent.z});
+  const int perAxis = std::max(1, settings.maxCellsPerAxis);
+  // Cubic cells: the longest axis gets perAxis of them.
+  const float size = longest > 0.0f ? longest / static_cast<float>(perAxis) : 1.0f;
+  cuts.origin = lo;
+  for (int a = 0; a < 3; ++a) {
+    cuts.cells[a] = std::clamp(static_cast<int>(std::ceil(extent[a] / size)), 1, perAxis);
+    cuts.cellSize[a] = extent[a] > 0.0f ? extent[a] / static_cast<float>(cuts.cells[a]) : size;
+  }
+  const float halfDiagonal = 0.5f * glm::length(cuts.cellSize);
+  const std::span<const Vpl> lights = groups.lights();
+  const std::span<const VplNode> nodes = groups.nodes();
+  const auto n = static_cast<uint32_t>(groups.vplCount());
+  std::vector<int32_t> stack;
+  const std::size_t cellCount = static_cast<std::size_t>(cuts.cells.x) *
+                                static_cast<std::size_t>(cuts.cells.y) *
+                                static_cast<std::size_t>(cuts.cells.z);
+  cuts.cellEntries.reserve(cellCount);
+  for (int z = 0; z < cuts.cells.z; ++z)
+    for (int y = 0; y < cuts.cells.y; ++y)
+      for (int x = 0; x < cuts.cells.x; ++x) {
+        const glm::vec3 centre = lo + (glm::vec3(x, y, z) + 0.5f) * cuts.cellSize;
+        const auto first = static_cast<uint32_t>(cuts.entries.size());
+        // Appends a range, merged with the previous one when they are consecutive VPLs.
+        const auto add = [&](uint32_t begin, uint32_t count) {
+          if (cuts.entries.size() > first && begin < n) {
+            glm::uvec2& last = cuts.entries.back();
+            if (last.x + last.y == begin && last.x < n) {
+              last.y += count;
+              return;
+            }
+          }
+          cuts.entries.emplace_back(begin, count);
+        };
+        for (const VplGroup& group : groups.groups()) {
+          stack.assign(1, static_cast<int32_t>(group.root));
+          while (!stack.empty()) {
+            const VplNode& node = nodes[static_cast<std::size_t>(stack.back())];
+            stack.pop_back();
+            const float distance =
+                glm::length(lights[node.representative].position - centre) - halfDiagonal;
+            if (node.count == 1 || distance > settings.kappa * node.radius)
+              add(node.representative, 1u);
+            else if (node.left < 0)
+              add(node.first, node.count);
+            else {
+              stack.push_back(node.right);  // left first: consecutive ranges merge
+              stack.push_back(node.left);
+            }
+          }
+        }
+        cuts.cellEntries.emplace_back(first, static_cast<uint32_t>(cuts.entries.size()) - first);
+      }
+  return cuts;
+}
+
+namespace {
+
+void addLight(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n, double r2, VplIrradianceSum& sum) {
+  const glm::dvec3 d = glm::dvec3(vpl.position) - x;
+  const double d2 = glm::dot(d, d);
+  if (!(d2 > 0.0)) return;
+  const double dist = std::sqrt(d2);
+  const double cosX = glm::dot(n, d) / dist;
+  const double cosY = -glm::dot(glm::dvec3(vpl.normal), d) / dist;
+  if (cosX <= 0.0 || cosY <= 0.0) return;
+  // I(ω) = Φ/π · cosθ_y (W/sr); E = I · cosθ_x / max(d², r²).
+  const glm::dvec3 intensity = glm::dvec3(vpl.flux) * (cosY / std::numbers::pi);
+  sum.irradiance += intensity * (cosX / std::max(d2, r2));
+  sum.removed += intensity * (cosX / d2 - cosX / std::max(d2, r2));
+}
+
+}  // namespace
+
+VplIrradianceSum vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
+                                  glm::vec3 n, float clampDistance) {
+  VplIrradianceSum sum;
+  const double r2 = static_cast<double>(clampDistance) * clampDistance;
+  const std::span<const Vpl> lights = groups.lights();
+  const glm::uvec2 range = cuts.cellEntries[cuts.cellOf(p)];
+  for (uint32_t e = range.x; e < range.x + range.y; ++e)
+    for (uint32_t i = cuts.entries[e].x; i < cuts.entries[e].x + cuts.entries[e].y; ++i)
+      addLight(lights[i], glm::dvec3(p), glm::dvec3(n), r2, sum);
+  return sum;
+}
+
+VplIrradianceSum vplIrradianceSum(std::span<const Vpl> lights, glm::vec3 p, glm::vec3 n,
+                                  float clampDistance) {
+  VplIrradianceSum sum;
+  const double r2 = static_cast<double>(clampDistance) * clampDistance;
+  for (const Vpl& vpl : lights) addLight(vpl, glm::dvec3(p), glm::dvec3(n), r2, sum);
+  return sum;
+}
+
+}  // namespace bounce

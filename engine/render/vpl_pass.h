@@ -1,0 +1,58 @@
+// The VPL stage of the lit pass (shaders/vpl.glsl): groups a bake's virtual point lights
+// (bake/vpl_groups.h: K ≤ 64 groups, each with a representative), builds the per-cell lightcuts
+// over the static scene's bounds, uploads the light table and the cuts as texture buffers (no
+// fixed cap on the VPL count) and tells the forward shader, per draw, whether the instance takes
+// its indirect light from the VPLs (dynamic instances; every surface in the vpl modes). Without
+// VPLs it binds empty stand-ins. GL calls only through engine/gl.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "bake/vpl_groups.h"
+#include "gl/shader.h"
+#include "gl/texture_buffer.h"
+#include "render/frustum.h"
+#include "render/gpu_scene.h"
+
+namespace bounce {
+
+struct VplRenderSettings {
+  std::size_t groups = kMaxVplGroups;  // K, coarse groups (≤ kMaxVplGroups)
+  bool culling = true;                 // false: every VPL at every fragment (one cell, all near)
+  float kappa = 4.0f;                  // far-group distance in group radii (vpl_groups.h)
+  int maxCellsPerAxis = 16;
+};
+
+class VplPass {
+ public:
+  VplPass();
+
+  // Groups and uploads `vpls` (W per channel, bake/vpl.h) with clamp distance r (m) over
+  // `bounds` (the static scene, metres).
+  void attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
+              const VplRenderSettings& settings);
+  bool attached() const { return attached_; }
+
+  // Per frame: textures, grid, clamp distance.
+  void bind(gl::Program& program) const;
+  // Per draw: whether instance `index` (into GpuScene::instances) is lit by the VPLs in the
+  // full and indirect modes (a dynamic instance, when VPLs are attached).
+  void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const;
+
+  const VplGroups& groups() const { return groups_; }
+  const VplLightCuts& cuts() const { return cuts_; }
+  float clampDistance() const { return clampDistance_; }
+
+ private:
+  VplGroups groups_;
+  VplLightCuts cuts_;
+  float clampDistance_ = 0.0f;
+  std::optional<gl::TextureBuffer> lights_;
+  std::optional<gl::TextureBuffer> cutTable_;
+  bool attached_ = false;
+};
+
+}  // namespace bounce

@@ -1,0 +1,61 @@
+// Virtual point lights (engine/render/vpl_pass.h, docs/vpl.md): the irradiance E (W/m²) they
+// give a surface at world point p with unit shading normal n and geometric normal ng,
+//   E(p) = Σ_i Φ_i/π · max(cosθ_y,0) · max(cosθ_x,0) / max(d², r²) · V_i(p)
+// with Φ_i the VPL's flux (W per channel, its surface's albedo included), θ_y the angle at the
+// VPL between its normal and p, θ_x the angle at p between n and the VPL, d the distance (m),
+// r the clamp distance (m) and V_i the visibility of the VPL's group (vplVisibility, defined in
+// vpl_shadows.glsl). A Lambertian surface of albedo ρ reflects ρ/π · E. The lights summed are
+// those of p's grid cell (bake/vpl_groups.h): near groups member by member, far ones as their
+// representative. Must match vplCutIrradiance (engine/bake/vpl_groups.cpp).
+//
+// uVplLights: 3 RGBA32F texels per light: (position m, group), (unit normal, 0), (Φ W, 0);
+//             the N VPLs group by group, then the K representatives.
+// uVplCuts:   RG32UI: per cell (first entry, entry count), cells x fastest, then the entries,
+//             each a range of lights (first, count); entry indices count from texel 0.
+
+// Visibility (0..1) of VPL group `group` (0..K−1) from p; defined in vpl_shadows.glsl.
+float vplVisibility(int group, vec3 p, vec3 ng);
+
+uniform samplerBuffer uVplLights;
+uniform usamplerBuffer uVplCuts;
+uniform vec3 uVplGridOrigin;   // m
+uniform vec3 uVplCellSize;     // m
+uniform ivec3 uVplGridCells;   // cells per axis
+uniform float uVplClampDistance;  // r, m
+
+// E (clamped, as above) and what the clamp removed: Σ Φ/π·cos·cos·(1/d² − 1/max(d², r²))·V.
+void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 removed) {
+  clamped = vec3(0.0);
+  removed = vec3(0.0);
+  ivec3 c = clamp(ivec3(floor((p - uVplGridOrigin) / uVplCellSize)), ivec3(0), uVplGridCells - 1);
+  int cell = c.x + uVplGridCells.x * (c.y + uVplGridCells.y * c.z);
+  uvec2 cellEntries = texelFetch(uVplCuts, cell).xy;
+  float r2 = uVplClampDistance * uVplClampDistance;
+  for (uint e = cellEntries.x; e < cellEntries.x + cellEntries.y; ++e) {
+    uvec2 range = texelFetch(uVplCuts, int(e)).xy;
+    for (uint i = range.x; i < range.x + range.y; ++i) {
+      int t = 3 * int(i);
+      vec4 positionGroup = texelFetch(uVplLights, t);
+      vec3 d = positionGroup.xyz - p;
+      float d2 = dot(d, d);
+      if (!(d2 > 0.0)) continue;
+      float invD = inversesqrt(d2);
+      float cosX = dot(n, d) * invD;
+      float cosY = -dot(texelFetch(uVplLights, t + 1).xyz, d) * invD;
+      if (cosX <= 0.0 || cosY <= 0.0) continue;
+      float v = vplVisibility(int(positionGroup.w), p, ng);
+      if (v <= 0.0) continue;
+      // I(ω) = Φ/π · cosθ_y (W/sr); E = I · cosθ_x / max(d², r²).
+      vec3 intensity = texelFetch(uVplLights, t + 2).rgb * (cosY / PI) * (cosX * v);
+      float clampedD2 = max(d2, r2);
+      clamped += intensity / clampedD2;
+      removed += intensity * ((clampedD2 - d2) / (d2 * clampedD2));
+    }
+  }
+}
+
+vec3 vplIrradiance(vec3 p, vec3 n, vec3 ng) {
+  vec3 clamped, removed;
+  vplIrradianceParts(p, n, ng, clamped, removed);
+  return clamped;
+}

@@ -1,0 +1,173 @@
+// The renderer's VPL term (shaders/vpl.glsl) against the CPU gather (baker/vpl/vpl_gather.h) at
+// every pixel of a small offscreen frame (OSMesa): a floor seen from above, lit by VPLs on a
+// wall beside it (some millimetres above the floor, inside the clamp distance) and on a tilted
+// panel over it, with unequal coloured fluxes. vpl mode: L = ρ/π · E_vpl, clamped and unclamped;
+// vpl-clamp mode: the removed part; with culling, the GPU cut equals the CPU mirror of the same
+// cut (vplCutIrradiance); a dynamic instance in indirect mode gets the same VPL light.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/vpl_groups.h"
+#include "lightmap_scenes.h"
+#include "test_scenes.h"
+#include "vpl/vpl_gather.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979;
+constexpr int kSize = 32;
+const glm::vec3 kAlbedo{0.8f, 0.5f, 0.9f};
+
+struct VplScene {
+  Scene scene;
+  Camera camera = downCamera(1.0f);
+  std::vector<Vpl> vpls;
+};
+
+VplScene vplScene(Mobility floorMobility) {
+  VplScene s;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = kAlbedo;
+  addQuad(s.scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+  s.scene.instances[0].mobility = floorMobility;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  // A wall at x = −0.45 facing +x, from 2 mm to 0.4 m above the floor: the lowest VPLs lie
+  // within the clamp distance of the floor pixels next to the wall.
+  for (int i = 0; i < 150; ++i) {
+    Vpl v;
+    v.position = {-0.45f, 0.002f + 0.4f * u(rng) * u(rng), -0.45f + 0.9f * u(rng)};
+    v.normal = {1, 0, 0};
+    v.flux = glm::vec3(0.9f, 0.2f, 0.1f) * (1e-3f * (0.2f + u(rng)));
+    s.vpls.push_back(v);
+  }
+  // A panel 0.3 m up, tilted 30° about x, facing down.
+  const glm::vec3 n = glm::normalize(glm::vec3(0.0f, -std::cos(0.52f), std::sin(0.52f)));
+  for (int i = 0; i < 100; ++i) {
+    Vpl v;
+    v.position = {-0.2f + 0.5f * u(rng), 0.3f + 0.1f * u(rng), -0.2f + 0.3f * u(rng)};
+    v.normal = n;
+    v.flux = glm::vec3(0.1f, 0.4f, 0.8f) * (1e-3f * (0.2f + u(rng)));
+    s.vpls.push_back(v);
+  }
+  return s;
+}
+
+Bake vplBake(const VplScene& s, float clampDistance) {
+  Bake bake;
+  bake.layout.width = bake.layout.height = 1;
+  bake.layout.texelSize = 1.0f;
+  bake.irradiance = Image(1, 1);
+  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(s.scene));
+  manifest["vpls"] = {{"count", s.vpls.size()}, {"clampDistance", clampDistance}};
+  bake.manifestJson = manifest.dump();
+  bake.vpls = s.vpls;
+  return bake;
+}
+
+Image renderVpls(const VplScene& s, const Bake& bake, RenderMode mode, bool culling) {
+  testContext();
+  RendererSettings settings;
+  settings.mode = mode;
+  settings.vpls.culling = culling;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &bake);
+  return renderer.renderImage(s.camera, kSize, kSize);
+}
+
+// |a − b| ≤ 1e-4·|b| + 1e-7 per channel (float evaluation of the same sum in another order).
+void expectClose(glm::vec3 gpu, glm::dvec3 cpu, int x, int y, const char* what) {
+  for (int c = 0; c < 3; ++c)
+    ASSERT_NEAR(gpu[c], cpu[c], 1e-4 * std::abs(cpu[c]) + 1e-7)
+        << what << " pixel (" << x << ", " << y << ") channel " << c;
+}
+
+class VplRender : public testing::TestWithParam<float> {};
+
+TEST_P(VplRender, EveryPixelIsReflectanceOverPiTimesTheCpuGather) {
+  const float r = GetParam();
+  const VplScene s = vplScene(Mobility::Static);
+  const Bake bake = vplBake(s, r);
+  const Image image = renderVpls(s, bake, RenderMode::Vpl, false);
+  const Image clampView = renderVpls(s, bake, RenderMode::VplClamp, false);
+  double removedTotal = 0.0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
+      const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
+      const std::size_t i = static_cast<std::size_t>(y) * kSize + x;
+      expectClose(image.pixels[i], glm::dvec3(kAlbedo) / kPi * e.irradiance, x, y, "vpl");
+      const glm::dvec3 lum(0.2126, 0.7152, 0.0722);
+      expectClose(clampView.pixels[i],
+                  glm::dvec3(glm::dot(lum, e.irradiance), glm::dot(lum, e.removed), 0.0) / kPi, x,
+                  y, "vpl-clamp");
+      removedTotal += glm::dot(lum, e.removed);
+    }
+  // The clamped case must remove something (VPLs within r of the floor), the other nothing.
+  if (r > 0.0f)
+    EXPECT_GT(removedTotal, 0.0);
+  else
+    EXPECT_EQ(removedTotal, 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(ClampedAndUnclamped, VplRender, testing::Values(0.05f, 0.0f));
+
+TEST(VplRender, CulledFrameIsTheCpuCut) {
+  const VplScene s = vplScene(Mobility::Static);
+  const float r = 0.05f;
+  const Bake bake = vplBake(s, r);
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &bake);
+  const Image image = renderer.renderImage(s.camera, kSize, kSize);
+  const VplGroups& groups = renderer.vpls().groups();
+  const VplLightCuts& cuts = renderer.vpls().cuts();
+  ASSERT_GT(groups.groupCount(), 1u);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
+      const VplIrradianceSum e = vplCutIrradiance(groups, cuts, p, {0, 1, 0}, r);
+      expectClose(image.pixels[static_cast<std::size_t>(y) * kSize + x],
+                  glm::dvec3(kAlbedo) / kPi * e.irradiance, x, y, "culled vpl");
+    }
+}
+
+// A dynamic instance takes its indirect light from the VPLs in the indirect mode: the same
+// frame as the vpl mode.
+TEST(VplRender, DynamicInstanceInIndirectModeGetsTheVpls) {
+  const VplScene s = vplScene(Mobility::Dynamic);
+  const Bake bake = vplBake(s, 0.05f);
+  const Image vpl = renderVpls(s, bake, RenderMode::Vpl, true);
+  const Image indirect = renderVpls(s, bake, RenderMode::Indirect, true);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < vpl.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(indirect.pixels[i][c], vpl.pixels[i][c]) << i;
+    sum += vpl.pixels[i].r;
+  }
+  EXPECT_GT(sum, 0.0);
+}
+
+TEST(VplRender, VplModeWithoutVplsNamesTheReason) {
+  VplScene s = vplScene(Mobility::Static);
+  s.vpls.clear();
+  Bake bake = vplBake(s, 0.05f);
+  bake.vpls.reset();
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  try {
+    ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &bake);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("virtual point lights"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace bounce::test
