@@ -35,6 +35,10 @@ TEST(ContentScripts, CornellBoxDynamicIsReproducible) {
                     "cornell_box_dynamic/cornell_box_dynamic.gltf");
 }
 
+TEST(ContentScripts, VplCornerIsReproducible) {
+  expectRegenerates("vpl_corner/make_vpl_corner.py", "vpl_corner/vpl_corner.gltf");
+}
+
 TEST(ContentScripts, PointOverPlaneIsReproducible) {
   expectRegenerates("point_over_plane/make_point_over_plane.py",
                     "point_over_plane/point_over_plane.gltf");
