@@ -389,9 +389,12 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
 
 // Measurement 1 of issue 8 through the tools: bounce-render --mode indirect (the dynamic sphere
 // gets ρ/π·E_vpl from the bake's VPLs) against bounce-trace --indirect-only, both with --move.
-// DISABLED until the renderer's VPL term (branch gpuvpl) is merged; with the bake's VPLs alone
-// it cannot pass at these positions unless the renderer also takes the sphere's own shadow out
-// of the VPLs (see VplErrorBudgetAgainstThePathTracer: +20..+80% without, ~1..11% with).
+// DISABLED: with gpuvpl merged (no VPL shadows, 64 groups, lightcut) the renderer gives 43.7 /
+// 28.9 / 30.0% (bias +31 / +23 / +15%), matching the GL-free gather of the same VPLs without
+// visibility (45.0 / 28.6 / 29.8%): the GPU term is right, but the bake's VPLs light the sphere
+// from where the sphere itself shadows the room. It can pass once the renderer takes the
+// sphere's shadow out of the VPLs (first-bounce VPLs dimmed: 8-11%, VplErrorBudget…; docs/vpl.md
+// "Dynamic objects"). Run with --gtest_also_run_disabled_tests.
 TEST_F(DynamicSphere, DISABLED_RendererLightsTheSphereWithin10PercentOfThePathTracer) {
   for (std::size_t p = 0; p < std::size(kPositions); ++p) {
     const Placement& m = placements_[p];
