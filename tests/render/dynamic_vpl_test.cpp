@@ -531,5 +531,33 @@ TEST_F(VplCorner, NoPixelExceedsTheTruthByMoreThanOneClampedVpl) {
   EXPECT_GT(removedMax, 0.0) << "the clamp removed nothing at the corner";
 }
 
+// Both tools read --move through engine/scene/instance_move.h: the same refusals, naming the
+// scene, the name and the dynamic instances; and a static scene instance cannot be moved.
+TEST(MoveFlag, BothToolsRefuseStaticAndUnknownInstancesNamingTheScene) {
+  const fs::path dir = fs::temp_directory_path() / "bounce_move_flag_test";
+  fs::create_directories(dir);
+  const fs::path scene = scenePath();
+  for (const char* program : {"bounce-render", "bounce-trace"}) {
+    for (const auto& [name, expected] :
+         {std::pair<std::string, std::string>{"floor", "instance 'floor' is static"},
+          std::pair<std::string, std::string>{"lamp", "has no instance 'lamp'"}}) {
+      const fs::path log = dir / "out.log";
+      const std::string own = tool(program) + " " + quote(scene) + " --move " + name +
+                              " 0.2 0.2 0.2 --width 8 --height 8 --out " + quote(dir / "x.exr") +
+                              " > " + quote(log) + " 2>&1";
+      const int status = std::system(own.c_str());
+      EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << own;
+      std::ifstream in(log);
+      std::stringstream text;
+      text << in.rdbuf();
+      EXPECT_NE(text.str().find(scene.string()), std::string::npos) << text.str();
+      EXPECT_NE(text.str().find(expected), std::string::npos) << text.str();
+      EXPECT_NE(text.str().find("dynamic instances: 'sphere'"), std::string::npos) << text.str();
+      EXPECT_FALSE(fs::exists(dir / "x.exr")) << program << " wrote an image";
+    }
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace bounce
