@@ -19,18 +19,18 @@
 // standard error from the per-pixel sample variances); asserted ≤ 3.5% at kSpp, a third of the
 // 10% allowed, so the measure is the renderer's error. What the renderer's error is made of:
 //   - VPL noise: N VPLs (the bake's count rule: cap 4096 or 1% relative error on the total flux;
-//     4095 VPLs from ~1700 light paths here) are one random set: 4-10% on the sphere (measured
+//     4095 VPLs from ~1700 light paths here) are one random set: 3-11% on the sphere (measured
 //     below with VPLs that know the sphere), a few % at 4N;
 //   - clamp bias: VPLs closer than r = sqrt(A/(πN)) (bake.json's clampDistance, 1.2 cm here)
 //     are capped, biasing low; the positions keep the sphere ≥ 2 cm from every surface: small;
 //   - the sphere's own shadow: the bake leaves it out, so VPLs stand where the sphere shadows the
-//     room (the floor or block under it); the tracer sees that shadow: +14..+38% here unless the
+//     room (the floor or block under it); the tracer sees that shadow: +13..+39% here unless the
 //     renderer dims those VPLs (first-bounce VPLs by the sphere's shadow from the light bring it
-//     to ~0..10%, VplErrorBudgetAgainstThePathTracer);
+//     to 7..11%, VplErrorBudgetAgainstThePathTracer);
 //   - visibility: blocks between a VPL and the sphere (VPL shadow maps approximate it): 2-8%;
 //   - culling: VPLs left out or merged per tile (the renderer's lightcut) bias either way.
 //
-// Runtime (release): the suite's set-up traces 3 × 32² pixels × 2560 spp (~7 s CPU), the GL-free
+// Runtime (release): the suite's set-up traces 3 × 24² pixels × 2560 spp (~4 s CPU), the GL-free
 // test ~2 s; the renderer test ~1 s more.
 #include <gtest/gtest.h>
 
@@ -65,7 +65,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kSize = 32;        // pixels per side
+constexpr int kSize = 24;        // pixels per side
 constexpr int kBlock = 4;        // pixels per side of a compared block
 constexpr int kSpp = 2560;       // tracer samples per pixel: its noise adds ≤ 3.5% (asserted)
 constexpr float kRadius = 0.1f;  // the sphere's, m (make_cornell_box_dynamic.py)
@@ -226,13 +226,13 @@ class DynamicSphere : public ::testing::Test {
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   // A wrapper (.json) around the scene whose camera looks at the sphere from the Cornell eye,
-  // the sphere filling 1/1.15 of the frame's height; then the reference trace.
+  // the sphere filling 1/1.02 of the frame's height; then the reference trace.
   static void place(std::size_t p) {
     const Position& at = kPositions[p];
     Placement& m = placements_[p];
     m.wrapper = dir_ / ("sphere" + std::to_string(p) + ".json");
     const float distance = glm::length(at.centre - kEye);
-    const float yfov = 2.0f * std::asin(1.15f * kRadius / distance);
+    const float yfov = 2.0f * std::asin(1.02f * kRadius / distance);
     const nlohmann::json doc = {{"model", scenePath().string()},
                                 {"camera",
                                  {{"name", "at_sphere"},
@@ -338,8 +338,8 @@ std::vector<Vpl> shadowedByDynamics(const Scene& scene, const VplSet& set) {
 //                             at the bake's count N and at 4N (clamp r/2, since r ∝ 1/√N).
 // The bake leaves the dynamic sphere out, so its VPLs also stand on the floor and blocks right
 // under the sphere, which the sphere shadows: the first two overestimate the sphere (bias
-// +14..+38% here). The others show what the VPL estimate is worth once the VPLs know the
-// sphere: VPL noise and the clamp (N ≈ 4096 VPLs from ~1700 light paths: 4-10% on the sphere;
+// +13..+39% here). The others show what the VPL estimate is worth once the VPLs know the
+// sphere: VPL noise and the clamp (N ≈ 4096 VPLs from ~1700 light paths: 3-11% on the sphere;
 // 4N: a few %). Asserted: the reference is quiet enough, and 4N VPLs traced with the sphere
 // meet the 10% (the comparison itself is sound); the rest is printed for docs/vpl.md.
 TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
@@ -380,7 +380,7 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
         compare(gather(m, many.vpls, kernel.get(), 0.5f * r), m.traced, m.stdError, m.pixels.keep);
     report("traced with the sphere, 4N", at, manyWith);
 
-    EXPECT_GE(manyWith.blocks, 20u) << at.what;
+    EXPECT_GE(manyWith.blocks, 12u) << at.what;
     EXPECT_LE(manyWith.referenceNoise, 0.035)
         << at.what << ": the tracer is too noisy at " << kSpp << " spp";
     EXPECT_LE(manyWith.error, 0.10) << at.what;
@@ -389,11 +389,11 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
 
 // Measurement 1 of issue 8 through the tools: bounce-render --mode indirect (the dynamic sphere
 // gets ρ/π·E_vpl from the bake's VPLs) against bounce-trace --indirect-only, both with --move.
-// DISABLED: with gpuvpl merged (no VPL shadows, 64 groups, lightcut) the renderer gives 43.7 /
-// 28.9 / 30.0% (bias +31 / +23 / +15%), matching the GL-free gather of the same VPLs without
-// visibility (45.0 / 28.6 / 29.8%): the GPU term is right, but the bake's VPLs light the sphere
+// DISABLED: with gpuvpl merged (no VPL shadows, 64 groups, lightcut) the renderer gives 45.1 /
+// 27.0 / 30.9% (bias +32 / +22 / +14%), matching the GL-free gather of the same VPLs without
+// visibility (45.8 / 26.7 / 30.6%): the GPU term is right, but the bake's VPLs light the sphere
 // from where the sphere itself shadows the room. It can pass once the renderer takes the
-// sphere's shadow out of the VPLs (first-bounce VPLs dimmed: 8-11%, VplErrorBudget…; docs/vpl.md
+// sphere's shadow out of the VPLs (first-bounce VPLs dimmed: 7-11%, VplErrorBudget…; docs/vpl.md
 // "Dynamic objects"). Run with --gtest_also_run_disabled_tests.
 TEST_F(DynamicSphere, DISABLED_RendererLightsTheSphereWithin10PercentOfThePathTracer) {
   for (std::size_t p = 0; p < std::size(kPositions); ++p) {
@@ -407,7 +407,7 @@ TEST_F(DynamicSphere, DISABLED_RendererLightsTheSphereWithin10PercentOfThePathTr
         0);
     const Comparison c = compare(readExr(rendered), m.traced, m.stdError, m.pixels.keep);
     report("renderer (indirect mode)", at, c);
-    EXPECT_GE(c.blocks, 20u) << at.what;
+    EXPECT_GE(c.blocks, 12u) << at.what;
     EXPECT_LE(c.referenceNoise, 0.035) << at.what;
     EXPECT_LE(c.error, 0.10) << at.what;
   }
