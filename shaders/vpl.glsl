@@ -5,11 +5,14 @@
 // VPL between its normal and p, θ_x the angle at p between n and the VPL, d the distance (m),
 // r the clamp distance (m) and V_i the visibility of the VPL's group (vplVisibility, defined in
 // vpl_shadows.glsl). A Lambertian surface of albedo ρ reflects ρ/π · E. The lights summed are
-// those of p's grid cell (bake/vpl_groups.h): near groups member by member, far ones as their
-// representative. Must match vplCutIrradiance (engine/bake/vpl_groups.cpp).
+// those of p's grid cell (bake/vpl_groups.h): the cell's cut of each group's VPL tree, near
+// leaves VPL by VPL, far nodes as their representative (flux-weighted centroid, Σ flux); every
+// light carries its group's index for the visibility. Must match vplCutIrradiance
+// (engine/bake/vpl_groups.cpp).
 //
 // uVplLights: 3 RGBA32F texels per light: (position m, group), (unit normal, 0), (Φ W, 0);
-//             the N VPLs group by group, then the K representatives.
+//             the N VPLs group by group, then the K group representatives, then the other
+//             tree nodes' representatives.
 // uVplCuts:   RG32UI: per cell (first entry, entry count), cells x fastest, then the entries,
 //             each a range of lights (first, count); entry indices count from texel 0.
 

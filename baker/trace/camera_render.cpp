@@ -10,11 +10,7 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
-#if defined(__SSE__)
-#include <pmmintrin.h>
-#include <xmmintrin.h>
-#endif
-
+#include "trace/denormals_flushed.h"
 #include "trace/path_tracer.h"
 #include "trace/progress_line.h"
 #include "trace/sobol_sampler.h"
@@ -23,26 +19,7 @@ namespace bounce {
 
 namespace {
 
-constexpr int kTileSize = 16;
-
-// Flush-to-zero and denormals-are-zero while a tile runs (as Embree asks), restored after:
-// every tile, whichever thread runs it, computes with the same float mode.
-class DenormalsFlushed {
- public:
-#if defined(__SSE__)
-  DenormalsFlushed() : saved_(_mm_getcsr()) {
-    _mm_setcsr(saved_ | 0x8040u);
-  }
-  ~DenormalsFlushed() {
-    _mm_setcsr(saved_);
-  }
-  DenormalsFlushed(const DenormalsFlushed&) = delete;
-  DenormalsFlushed& operator=(const DenormalsFlushed&) = delete;
-
- private:
-  unsigned saved_;
-#endif
-};
+constexpr int kTileSize = 16;  // pixels; each tile runs with denormals flushed
 
 }  // namespace
 

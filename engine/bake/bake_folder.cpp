@@ -8,8 +8,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -18,9 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/bake_input_file.h"
 #include "bake/vpl_file.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "scene/gltf_schema.h"  // checkJsonDepth
 #include "scene/load_error.h"
 
 namespace bounce {
@@ -144,16 +144,6 @@ std::vector<unsigned char> encodeLayout(const LightmapLayout& layout) {
     for (const glm::vec2& uv : region.cornerUv) w.f32(uv.x), w.f32(uv.y);
   }
   return w.bytes();
-}
-
-std::vector<unsigned char> readWholeFile(const fs::path& file) {
-  if (!fs::exists(file)) throw LoadError(file, "missing");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw LoadError(file, std::string("cannot open: ") + std::strerror(errno));
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
-  if (in.bad()) throw LoadError(file, "read failed");
-  return bytes;
 }
 
 LightmapLayout decodeLayout(const fs::path& file, std::vector<unsigned char> bytes) {
@@ -342,8 +332,10 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
 
   Bake bake;
   const fs::path manifestFile = dir / kManifestName;
-  const std::vector<unsigned char> manifestBytes = readWholeFile(manifestFile);
+  const std::vector<unsigned char> manifestBytes =
+      readBakeInputFile(manifestFile, kMaxBakeManifestBytes);
   bake.manifestJson.assign(manifestBytes.begin(), manifestBytes.end());
+  checkJsonDepth(manifestFile, bake.manifestJson);  // before the recursive parser
   const Manifest manifest = parseManifest(
       bake.manifestJson, [&](const std::string& why) { throw LoadError(manifestFile, why); });
   if (manifest.formatVersion != kBakeFormatVersion)
@@ -357,7 +349,7 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                       ")");
 
   const fs::path layoutFile = dir / kLayoutName;
-  bake.layout = decodeLayout(layoutFile, readWholeFile(layoutFile));
+  bake.layout = decodeLayout(layoutFile, readBakeInputFile(layoutFile));
   checkLayoutAgainstScene(layoutFile, bake.layout, scene);
 
   const fs::path lightmapFile = dir / kLightmapName;

@@ -4,10 +4,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
 
+#include "bake/bake_input_file.h"
 #include "image/atomic_file.h"
 #include "scene/load_error.h"
 
@@ -98,13 +97,7 @@ void writeVplFile(const std::filesystem::path& file, std::span<const Vpl> vpls) 
 }
 
 std::vector<Vpl> readVplFile(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw LoadError(file, "missing");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw LoadError(file, std::string("cannot open: ") + std::strerror(errno));
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
-  if (in.bad()) throw LoadError(file, "read failed");
-  return decodeVpls(file, bytes);
+  return decodeVpls(file, readBakeInputFile(file));
 }
 
 }  // namespace bounce

@@ -87,7 +87,7 @@ class VplGroups {
 };
 
 struct VplLightCutSettings {
-  float kappa = 4.0f;  // far when the cell is more than κ group radii away; ∞: no culling
+  float kappa = 4.0f;  // far when the cell is more than κ node radii away; ∞: no culling
   int maxCellsPerAxis = 16;
 };
 

@@ -45,6 +45,24 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lo;
   const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.hi;
   cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
+  // The cut table must fit one texture buffer (GL 3.3 promises only 65536 texels): coarser grids
+  // until it does (fewer cells, the same κ: fewer texels, more lights per cell).
+  const std::size_t limit = gl::TextureBuffer::maxTexels();
+  while (cuts_.cellEntries.size() + cuts_.entries.size() > limit &&
+         cutSettings.maxCellsPerAxis > 1) {
+    cutSettings.maxCellsPerAxis /= 2;
+    cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
+  }
+  if (settings.culling && !vpls.empty()) {
+    // A cut that keeps more than half the VPLs costs more than it saves (its per-cell lists
+    // are read through the texture cache; docs/vpl.md, "Frame time"): one cell, every VPL.
+    double evaluated = 0.0;
+    for (std::size_t c = 0; c < cuts_.cellEntries.size(); ++c)
+      evaluated += static_cast<double>(cuts_.lightsEvaluated(c));
+    if (evaluated / static_cast<double>(cuts_.cellEntries.size()) >
+        0.5 * static_cast<double>(vpls.size()))
+      cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
+  }
   clampDistance_ = clampDistance;
   lights_.reset();
   lights_.emplace(std::span<const glm::vec4>(lightTexels(groups_)));

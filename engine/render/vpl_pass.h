@@ -1,9 +1,9 @@
 // The VPL stage of the lit pass (shaders/vpl.glsl): groups a bake's virtual point lights
-// (bake/vpl_groups.h: K ≤ 64 groups, each with a representative), builds the per-cell lightcuts
-// over the static scene's bounds, uploads the light table and the cuts as texture buffers (no
-// fixed cap on the VPL count) and tells the forward shader, per draw, whether the instance takes
-// its indirect light from the VPLs (dynamic instances; every surface in the vpl modes). Without
-// VPLs it binds empty stand-ins. GL calls only through engine/gl.
+// (bake/vpl_groups.h: K ≤ 64 groups, each with a representative and a tree), builds the per-cell
+// lightcuts over the static scene's bounds, uploads the light table and the cuts as texture
+// buffers (no fixed cap on the VPL count) and tells the forward shader, per draw, whether the
+// instance takes its indirect light from the VPLs (dynamic instances; every surface in the vpl
+// modes). Without VPLs it binds empty stand-ins. GL calls only through engine/gl.
 #pragma once
 
 #include <cstddef>
@@ -21,8 +21,10 @@ namespace bounce {
 
 struct VplRenderSettings {
   std::size_t groups = kMaxVplGroups;  // K, coarse groups (≤ kMaxVplGroups)
-  bool culling = true;                 // false: every VPL at every fragment (one cell, all near)
-  float kappa = 4.0f;                  // far-group distance in group radii (vpl_groups.h)
+  // false: every VPL at every fragment (one cell, all near). Also what culling falls back to
+  // when the cut would keep more than half the VPLs (few VPLs: nothing to gain).
+  bool culling = true;
+  float kappa = 4.0f;  // a tree node is far beyond κ node radii (vpl_groups.h)
   int maxCellsPerAxis = 16;
 };
 

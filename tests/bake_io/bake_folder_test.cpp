@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <bit>
 #include <csignal>
@@ -339,6 +341,33 @@ TEST_F(BakeRejection, MissingFiles) {
     fs::remove(dir_ / file);
     expectRefused(file, "missing");
   }
+}
+
+// A FIFO (or a device, a directory) in place of a bake file is refused before it is opened:
+// opening a FIFO for reading blocks until a writer appears. The alarm turns the hang the bug
+// gives into a failure within 20 s instead of CTest's timeout.
+TEST_F(BakeRejection, FilesThatAreNotRegularAreRefusedWithoutBlocking) {
+  Bake withVpls = testBake(scene_);
+  withVpls.vpls = std::vector<Vpl>{{{0, 1, 0}, {0, -1, 0}, {0.1f, 0.2f, 0.3f}}};
+  for (const char* file : {"bake.json", "layout.bin", "lightmap.exr", "vpls"}) {
+    writeBake(dir_, withVpls);
+    fs::remove(dir_ / file);
+    ASSERT_EQ(::mkfifo((dir_ / file).c_str(), 0600), 0) << file;
+    ::alarm(20);
+    expectRefused(file, "is a FIFO");
+    ::alarm(0);
+  }
+  writeBake(dir_, withVpls);
+  fs::remove(dir_ / "layout.bin");
+  fs::create_directory(dir_ / "layout.bin");
+  expectRefused("layout.bin", "is a directory");
+}
+
+// bake.json nested 100000 deep would overflow the stack inside the recursive JSON parser.
+TEST_F(BakeRejection, ManifestNestedTooDeep) {
+  std::ofstream(dir_ / "bake.json")
+      << "{\"x\": " << std::string(100000, '[') << std::string(100000, ']') << "}";
+  expectRefused("bake.json", "JSON nests arrays/objects deeper than 64");
 }
 
 TEST_F(BakeRejection, ManifestNotJson) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_folder.h"
 #include "image/image_io.h"
 #include "scene/load.h"
 #include "support/scene_invariants.h"
@@ -68,6 +69,7 @@ TEST_P(Corpus, LoadsOrFailsAsTheManifestSays) {
   const Entry& e = GetParam();
   const fs::path path = kCorpus / e.file;
   const bool exr = path.extension() == ".exr";
+  const bool bakeFolder = path.extension() == ".bake";
   try {
     const auto props = properties(e.detail);
     auto expectProperty = [&](const std::string& key, std::size_t value) {
@@ -75,7 +77,13 @@ TEST_P(Corpus, LoadsOrFailsAsTheManifestSays) {
         EXPECT_EQ(static_cast<long>(value), props.at(key)) << key;
       }
     };
-    if (exr) {
+    if (bakeFolder) {  // against the scene it was baked for
+      const Scene scene = loadScene(kCorpus / "bake" / "scene.gltf");
+      const Bake bake = readBake(path, scene);
+      expectProperty("width", static_cast<std::size_t>(bake.irradiance.width));
+      expectProperty("height", static_cast<std::size_t>(bake.irradiance.height));
+      expectProperty("vpls", bake.vpls ? bake.vpls->size() : 0);
+    } else if (exr) {
       const Image image = readExr(path);
       std::size_t nonFinite = 0;
       for (const glm::vec3& p : image.pixels)

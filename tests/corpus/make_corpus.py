@@ -467,6 +467,128 @@ def with_chunk_count(count):  # tinyexr sized its offset table from chunkCount u
 write("exr/chunk_count_huge.exr", exr(2, 2, tamper=with_chunk_count(1 << 30)), "error", "chunkCount 1073741824 exceeds the 2 scanlines")
 write("exr/window_pixels_over_limit.exr", exr(2, 2, window=(0, 0, 3, 1 << 28)), "error", "exceeds bounce's limit of 67108864 pixels")
 
+# ---------------------------------------------------------------- bake folders -------------
+# readBake (engine/bake/bake_folder.h) against tests/corpus/bake/scene.gltf: a floor and a wall
+# (two static instances) and a point light. bake/valid.bake is bounce-bake's own output,
+# committed; regenerate it (after a format or scene-hash change) with
+#   build/release/bin/bounce-bake tests/corpus/bake/scene.gltf -o tests/corpus/bake/valid.bake \
+#     --texel-budget 64 --spp 16 --vpls 16 --quiet
+# Every other folder is valid.bake with one file tampered. Rows: "<folder> error <reason>".
+def bake_scene():
+    quads = [  # (corners, normal) floor 2 m x 2 m at y = 0; wall at x = -1
+        ([(-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)], (0, 1, 0)),
+        ([(-1, 0, -1), (-1, 2, -1), (-1, 2, 1), (-1, 0, 1)], (1, 0, 0)),
+    ]
+    binary, views, accessors, meshes, nodes = b"", [], [], [], []
+    for i, (corners, normal) in enumerate(quads):
+        for data, kind, count in ((struct.pack("<12f", *sum(corners, ())), "VEC3", 4),
+                                  (struct.pack("<12f", *(normal * 4)), "VEC3", 4),
+                                  (struct.pack("<6H", 0, 1, 2, 0, 2, 3) + b"\0\0", "SCALAR", 6)):
+            views.append({"buffer": 0, "byteOffset": len(binary), "byteLength": len(data) if kind != "SCALAR" else 12})
+            accessor = {"bufferView": len(views) - 1, "componentType": 5126 if kind == "VEC3" else 5123,
+                        "count": count, "type": kind}
+            if len(accessors) % 3 == 0:
+                accessor["min"] = [min(c[k] for c in corners) for k in range(3)]
+                accessor["max"] = [max(c[k] for c in corners) for k in range(3)]
+            accessors.append(accessor)
+            binary += data
+        meshes.append({"primitives": [{"attributes": {"POSITION": 3 * i, "NORMAL": 3 * i + 1},
+                                       "indices": 3 * i + 2, "material": 0}]})
+        nodes.append({"name": ["floor", "wall"][i], "mesh": i})
+    nodes.append({"name": "lamp", "translation": [0, 1.5, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}], "nodes": nodes,
+           "meshes": meshes, "accessors": accessors, "bufferViews": views,
+           "buffers": [{"byteLength": len(binary)}],
+           "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.6, 0.4, 1]}}],
+           "extensionsUsed": ["KHR_lights_punctual"],
+           "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5.0}]}}}
+    return gltf_bytes(doc, binary)
+
+
+write("bake/scene.gltf", bake_scene(), "ok", "triangles=4;lights=1")
+VALID = os.path.join(ROOT, "bake", "valid.bake")
+
+
+def bake_file(name):
+    with open(os.path.join(VALID, name), "rb") as f:
+        return f.read()
+
+
+def bake_case(name, expect, detail, **files):
+    """A copy of valid.bake with files replaced (bytes) or removed (None)."""
+    folder = "bake/%s.bake" % name
+    for f in ("bake.json", "layout.bin", "lightmap.exr", "vpls"):
+        path = os.path.join(ROOT, folder, f)
+        content = files.get(f.replace(".", "_"), bake_file(f))
+        if os.path.exists(path):
+            os.remove(path)
+        if content is not None:
+            write(os.path.join(folder, f), content, None, None)
+    os.makedirs(os.path.join(ROOT, folder), exist_ok=True)
+    rows.append((folder, expect, detail))
+
+
+if os.path.isdir(VALID):
+    manifest = json.loads(bake_file("bake.json"))
+    layout, vpls = bake_file("layout.bin"), bake_file("vpls")
+    rows.append(("bake/valid.bake", "ok", "width=%d;height=%d;vpls=%d" % (
+        struct.unpack_from("<ii", layout, 12) + struct.unpack_from("<I", vpls, 12))))
+
+    def manifest_with(**kv):
+        m = dict(manifest)
+        m.update(kv)
+        return json.dumps(m).encode()
+
+    def layout_with(offset, fmt, *values):
+        b = bytearray(layout)
+        struct.pack_into(fmt, b, offset, *values)
+        return bytes(b)
+
+    def vpls_with(offset, fmt, *values):
+        b = bytearray(vpls)
+        struct.pack_into(fmt, b, offset, *values)
+        return bytes(b)
+
+    bake_case("manifest_missing", "error", "bake.json: missing", bake_json=None)
+    bake_case("manifest_not_json", "error", "bake.json: not JSON", bake_json=b"{\"formatVersion\": 1,")
+    bake_case("manifest_array", "error", "bake.json: not a JSON object", bake_json=b"[1, 2]")
+    bake_case("manifest_deep", "error", "bake.json: JSON nests arrays/objects deeper than 64",
+              bake_json=b"{\"x\": " + b"[" * 100000 + b"]" * 100000 + b"}")
+    bake_case("manifest_version_string", "error", "no integer \"formatVersion\"", bake_json=manifest_with(formatVersion="1"))
+    bake_case("manifest_version_2", "error", "format version 2, this build reads version 1", bake_json=manifest_with(formatVersion=2))
+    bake_case("manifest_other_scene", "error", "bake made for another scene", bake_json=manifest_with(sceneHash="0123456789abcdef"))
+    bake_case("manifest_hash_number", "error", "no string \"sceneHash\"", bake_json=manifest_with(sceneHash=12))
+    bake_case("layout_missing", "error", "layout.bin: missing", layout_bin=None)
+    bake_case("layout_empty", "error", "layout.bin: truncated", layout_bin=b"")
+    bake_case("layout_bad_magic", "error", "bad magic: not a bounce lightmap layout", layout_bin=b"BNCLMLAX" + layout[8:])
+    bake_case("layout_version_9", "error", "layout.bin: format version 9", layout_bin=layout_with(8, "<I", 9))
+    bake_case("layout_cut", "error", "layout.bin: truncated", layout_bin=layout[:len(layout) // 2])
+    bake_case("layout_trailing", "error", "4 bytes after the last instance region", layout_bin=layout + b"\0\0\0\0")
+    bake_case("layout_width_zero", "error", "atlas size 0x", layout_bin=layout_with(12, "<i", 0))
+    bake_case("layout_texel_nan", "error", "texel size nan m is not positive", layout_bin=layout_with(20, "<f", float("nan")))
+    bake_case("layout_region_count_huge", "error", "instance regions announced", layout_bin=layout_with(36, "<I", 0xFFFFFFF0))
+    bake_case("layout_instance_out_of_range", "error", "out of range (the scene has 2 instances)", layout_bin=layout_with(40, "<I", 7))
+    bake_case("layout_corner_nan", "error", "has a non-finite corner UV", layout_bin=layout_with(48, "<f", float("inf")))
+    bake_case("lightmap_missing", "error", "lightmap.exr: missing", lightmap_exr=None)
+    bake_case("lightmap_not_exr", "error", "lightmap.exr: cannot read EXR: not an OpenEXR file", lightmap_exr=b"P6\n2 2\n255\n" + b"\0" * 12)
+    bake_case("lightmap_wrong_size", "error", "lightmap.exr: is 2x2, layout.bin says", lightmap_exr=exr(2, 2))
+    bake_case("vpls_bad_magic", "error", "vpls: bad magic", vpls=b"BNCVPLX\0" + vpls[8:])
+    bake_case("vpls_version_3", "error", "vpls: format version 3", vpls=vpls_with(8, "<I", 3))
+    bake_case("vpls_count_mismatch", "error", "VPLs announced need", vpls=vpls_with(12, "<I", 1000))
+    bake_case("vpls_position_nan", "error", "position is not finite", vpls=vpls_with(16, "<f", float("nan")))
+    bake_case("vpls_normal_long", "error", "normal is not a unit vector", vpls=vpls_with(28, "<3f", 0.0, 2.0, 0.0))
+    bake_case("vpls_flux_negative", "error", "flux is negative or not finite", vpls=vpls_with(40, "<f", -1.0))
+    bake_case("vpls_cut", "error", "vpls: truncated", vpls=vpls[:10])
+    # Seeds of fuzz_bake (tests/fuzz/fuzz_bake.cpp): a byte picking the file, then its content.
+    for i, f in enumerate(("bake.json", "layout.bin", "lightmap.exr", "vpls")):
+        write("bake_fuzz_seeds/valid_%s" % f.replace(".", "_"), bytes([i]) + bake_file(f), None, None)
+    for name, i, f in (("layout_cut", 1, "layout.bin"), ("vpls_normal_long", 3, "vpls"),
+                       ("manifest_other_scene", 0, "bake.json")):
+        with open(os.path.join(ROOT, "bake", name + ".bake", f), "rb") as src:
+            write("bake_fuzz_seeds/%s" % name, bytes([i]) + src.read(), None, None)
+else:
+    print("bake/valid.bake is missing: bake it first (command above); bake cases skipped")
+
 # ---------------------------------------------------------------- found by fuzzing ----------
 # Inputs the fuzz targets saved (docs/fuzzing.md), committed as they were found (not generated):
 # the first four made bounce's readExr leak tinyexr's header (LoadEXRFromMemory) before the fix.

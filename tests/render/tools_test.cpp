@@ -302,6 +302,38 @@ TEST_F(ToolsTest, ModesOfBakedLightNeedABake) {
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
+// --mode vpl: without VPLs in the bake a clear error; with them the frame and the clamp line.
+TEST_F(ToolsTest, VplModeNeedsVplsAndReportsTheClamp) {
+  const fs::path sceneFile =
+      fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf";
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const std::string render = tool("bounce-render") + " " + quote(sceneFile) + " --bake " +
+                             quote(dir_ / "plane.bake") +
+                             " --mode vpl --width 16 --height 16 --context osmesa --out ";
+  ToolRun r = run(render + quote(dir_ / "none.exr"));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("mode 'vpl' draws virtual point lights, but the bake has none"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "none.exr"));
+
+  bounce::Bake bake = bounce::readBake(dir_ / "plane.bake", scene);
+  bake.vpls =
+      std::vector<bounce::Vpl>{{{0.0f, 0.5f, 0.0f}, {0.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 1.0f}},
+                               {{0.3f, 0.2f, 0.1f}, {0.0f, -1.0f, 0.0f}, {0.5f, 0.2f, 0.1f}}};
+  bounce::writeBake(dir_ / "plane.bake", bake);
+  r = run(render + quote(dir_ / "vpl.exr"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("VPL clamp removed "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("of the VPL irradiance over the frame (2 VPLs in 2 groups, r = "),
+            std::string::npos)
+      << r.output;
+  double sum = 0.0;
+  for (const glm::vec3& p : bounce::readExr(dir_ / "vpl.exr").pixels) sum += p.r;
+  EXPECT_GT(sum, 0.0);
+}
+
 // The viewer with a bake under a virtual X server: indirect mode shows ρ/π·E, and the chart
 // view draws (non-black) without errors.
 TEST_F(ToolsTest, ViewerWithBakeUnderXvfb) {

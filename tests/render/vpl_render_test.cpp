@@ -6,6 +6,7 @@
 // cut (vplCutIrradiance); a dynamic instance in indirect mode gets the same VPL light.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -115,6 +116,36 @@ TEST_P(VplRender, EveryPixelIsReflectanceOverPiTimesTheCpuGather) {
     EXPECT_EQ(removedTotal, 0.0);
 }
 
+// ForwardRenderer::measureVplClamp sums the vpl-clamp view: Σ lum(E_vpl) and Σ lum(E_removed)
+// over the pixels (W/m²), as the CPU gather gives them.
+TEST(VplRender, ClampReportSumsTheFrame) {
+  const VplScene s = vplScene(Mobility::Static);
+  const float r = 0.05f;
+  const Bake bake = vplBake(s, r);
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  settings.vpls.culling = false;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &bake);
+  const VplClampReport report = renderer.measureVplClamp(s.camera, kSize, kSize);
+  EXPECT_EQ(renderer.settings().mode, RenderMode::Vpl);
+  EXPECT_EQ(report.vplCount, s.vpls.size());
+  EXPECT_EQ(report.clampDistance, r);
+  const glm::dvec3 lum(0.2126, 0.7152, 0.0722);
+  double irradiance = 0.0, removed = 0.0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const VplIrradiance e = gatherVplIrradiance(s.vpls, floorPoint(s.camera, kSize, kSize, x, y),
+                                                  {0, 1, 0}, nullptr, r);
+      irradiance += glm::dot(lum, e.irradiance);
+      removed += glm::dot(lum, e.removed);
+    }
+  EXPECT_NEAR(report.irradiance, irradiance, 1e-4 * irradiance);
+  EXPECT_NEAR(report.removed, removed, 1e-4 * removed);
+  EXPECT_NEAR(report.removedFraction(), removed / (irradiance + removed), 1e-4);
+  EXPECT_GT(report.removedFraction(), 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(ClampedAndUnclamped, VplRender, testing::Values(0.05f, 0.0f));
 
 TEST(VplRender, CulledFrameIsTheCpuCut) {
@@ -129,6 +160,12 @@ TEST(VplRender, CulledFrameIsTheCpuCut) {
   const VplGroups& groups = renderer.vpls().groups();
   const VplLightCuts& cuts = renderer.vpls().cuts();
   ASSERT_GT(groups.groupCount(), 1u);
+  // The cut is in use (not the one-cell fallback) and leaves VPLs out somewhere.
+  ASSERT_GT(cuts.cellEntries.size(), 1u);
+  std::size_t fewest = s.vpls.size();
+  for (std::size_t c = 0; c < cuts.cellEntries.size(); ++c)
+    fewest = std::min(fewest, cuts.lightsEvaluated(c));
+  EXPECT_LT(fewest, s.vpls.size() / 2);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);

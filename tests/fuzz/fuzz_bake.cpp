@@ -1,0 +1,98 @@
+// libFuzzer target: the bake-folder reader (engine/bake/bake_folder.h). The input's first byte
+// picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls; modulo 4),
+// the rest of the input is that file's content; the other three are those of
+// tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf. Allowed outcomes:
+// a Bake that the renderer can use blindly (lightmap size = layout size, one region per static
+// instance with 3 UVs per triangle, finite UVs; VPLs finite with unit normals and non-negative
+// flux), or a LoadError naming a file of the folder. Anything else aborts.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "bake/bake_folder.h"
+#include "fuzz_input_file.h"
+#include "scene/load.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+const char* const kFiles[4] = {"bake.json", "layout.bin", "lightmap.exr", "vpls"};
+
+struct ValidBake {
+  bounce::Scene scene;
+  std::vector<char> files[4];
+};
+
+const ValidBake& valid() {
+  static const ValidBake v = [] {
+    const fs::path corpus = fs::path(BOUNCE_SOURCE_DIR) / "tests" / "corpus" / "bake";
+    ValidBake out{bounce::loadScene(corpus / "scene.gltf"), {}};
+    for (int i = 0; i < 4; ++i) {
+      std::ifstream in(corpus / "valid.bake" / kFiles[i], std::ios::binary);
+      out.files[i].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      if (out.files[i].empty()) std::abort();  // the seed bake is missing: nothing to fuzz
+    }
+    return out;
+  }();
+  return v;
+}
+
+[[noreturn]] void finding(const std::string& what) {
+  std::fprintf(stderr, "fuzz_bake: %s\n", what.c_str());
+  std::abort();
+}
+
+void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
+  const bounce::LightmapLayout& layout = bake.layout;
+  if (bake.irradiance.width != layout.width || bake.irradiance.height != layout.height ||
+      bake.irradiance.pixels.size() !=
+          static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height))
+    finding("lightmap size disagrees with the layout");
+  for (const bounce::InstanceLightmapUv& region : layout.instances) {
+    if (region.instance >= scene.instances.size()) finding("region of a missing instance");
+    const bounce::Instance& instance = scene.instances[region.instance];
+    if (instance.mobility != bounce::Mobility::Static) finding("region of a dynamic instance");
+    if (region.cornerUv.size() != 3 * scene.meshes.at(instance.mesh).triangleCount())
+      finding("region corner count is not 3 per triangle");
+    for (const glm::vec2& uv : region.cornerUv)
+      if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) finding("non-finite corner UV");
+  }
+  if (bake.vpls)
+    for (const bounce::Vpl& v : *bake.vpls) {
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(v.position[k]) || !std::isfinite(v.flux[k]) || v.flux[k] < 0.0f)
+          finding("VPL with a non-finite position or a negative/non-finite flux");
+      if (std::abs(glm::length(v.normal) - 1.0f) > 1e-3f) finding("VPL normal not unit");
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const ValidBake& v = valid();
+  const int which = data[0] % 4;
+  const fs::path dir = bounce::fuzz::writeInput(data, 0, "unused").parent_path() / "f.bake";
+  fs::create_directories(dir);
+  for (int i = 0; i < 4; ++i) {
+    std::ofstream out(dir / kFiles[i], std::ios::binary | std::ios::trunc);
+    if (i == which)
+      out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+    else
+      out.write(v.files[i].data(), static_cast<std::streamsize>(v.files[i].size()));
+  }
+  try {
+    checkUsable(bounce::readBake(dir, v.scene), v.scene);
+  } catch (const bounce::LoadError& e) {
+    if (std::strstr(e.what(), dir.c_str()) == nullptr)
+      finding(std::string("LoadError does not name a file of the folder: ") + e.what());
+  }
+  return 0;
+}
