@@ -79,14 +79,16 @@ class GltfWriter:
         self.doc["materials"].append(m)
         return len(self.doc["materials"]) - 1
 
-    def mesh(self, name, triangles, material):
-        """triangles: list of 3 points each, counter-clockwise seen from the front."""
+    def mesh(self, name, triangles, material, corner_normals=None):
+        """triangles: list of 3 points each, counter-clockwise seen from the front.
+        corner_normals: optional unit shading normals, 3 per triangle (smooth surfaces);
+        without them each corner gets its triangle's flat normal."""
         positions, normals = [], []
-        for tri in triangles:
+        for i, tri in enumerate(triangles):
             n = triangle_normal(tri)
-            for p in tri:
+            for k, p in enumerate(tri):
                 positions.append(p)
-                normals.append(n)
+                normals.append(corner_normals[i][k] if corner_normals else n)
         pos = self._accessor(positions, "VEC3", True)
         nor = self._accessor(normals, "VEC3", False)
         self.doc["meshes"].append({"name": name, "primitives": [

@@ -92,6 +92,19 @@ std::string settingsHash(const nlohmann::json& settings) {
   return hex;
 }
 
+// `layout` (instance indices into `scene`) renumbered for staticScene(scene), which keeps the
+// static instances in order: the lightmap bake runs in the static scene, the folder keeps the
+// file scene's numbering.
+bounce::LightmapLayout staticLayout(const bounce::Scene& scene, bounce::LightmapLayout layout) {
+  std::vector<uint32_t> renumbered(scene.instances.size(), 0);
+  uint32_t next = 0;
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].mobility != bounce::Mobility::Dynamic) renumbered[i] = next++;
+  for (bounce::InstanceLightmapUv& region : layout.instances)
+    region.instance = renumbered.at(region.instance);
+  return layout;
+}
+
 int run(const Options& o) {
   auto clock = std::chrono::steady_clock::now();
   const auto start = clock;
@@ -110,8 +123,13 @@ int run(const Options& o) {
     throw std::runtime_error(o.scene.string() + " has no static surfaces to bake");
   const double atlasSeconds = since(clock);
 
+  // Dynamic instances are left out of the whole bake, lightmap and VPLs alike: they have no
+  // lightmap region, and where they stand at load time neither shadows nor lights the static
+  // surfaces' baked light, which therefore holds wherever they are moved (sceneContentHash
+  // leaves their transforms out). Their own indirect light comes from the VPLs at run time.
+  const bounce::Scene statics = bounce::staticScene(scene);
   const bounce::RayBackend backend = bounce::parseRayBackend(o.backend);
-  const bounce::WorldGeometry geometry = bounce::flatten(scene);
+  const bounce::WorldGeometry geometry = bounce::flatten(statics);
   const auto kernel = bounce::makeRayKernel(geometry, backend);
   const double kernelSeconds = since(clock);
 
@@ -124,7 +142,7 @@ int run(const Options& o) {
   settings.irradiance.progress = !o.quiet && (o.progress || bounce::stderrIsTerminal());
   settings.denoise = o.denoise == "on";
   const bounce::LightmapBake bake =
-      bounce::bakeLightmap(scene, geometry, *kernel, atlas.layout, settings);
+      bounce::bakeLightmap(statics, geometry, *kernel, staticLayout(scene, atlas.layout), settings);
   const double bakeSeconds = since(clock);
   if (!bake.irradiance.allFinite())
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
@@ -137,12 +155,9 @@ int run(const Options& o) {
     vplSettings.relativeError = o.vplError;
     vplSettings.seed = o.seed;
     vplSettings.threads = o.threads;
-    // VPL paths run in the static scene (baker/vpl/vpl_generate.h: staticScene).
-    const bounce::Scene statics = bounce::staticScene(scene);
-    const bounce::WorldGeometry staticGeometry = bounce::flatten(statics);
-    const auto staticKernel = bounce::makeRayKernel(staticGeometry, backend);
-    vpls = bounce::generateVpls(statics, staticGeometry, *staticKernel, vplSettings);
-    vplArea = bounce::surfaceArea(staticGeometry);
+    // VPL paths run in the static scene too (baker/vpl/vpl_generate.h: staticScene).
+    vpls = bounce::generateVpls(statics, geometry, *kernel, vplSettings);
+    vplArea = bounce::surfaceArea(geometry);
   }
   const double vplSeconds = since(clock);
 

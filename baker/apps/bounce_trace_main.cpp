@@ -13,6 +13,7 @@
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/framing.h"
+#include "scene/instance_move.h"
 #include "scene/load.h"
 #include "scene/world_geometry.h"
 #include "trace/camera_render.h"
@@ -44,10 +45,12 @@ struct Options {
   float clamp = 0.0f;
   bool progress = false;
   bool quiet = false;
+  std::vector<std::string> moves;  // NAME X Y Z, repeated
 };
 
 int run(const Options& o) {
-  const bounce::Scene scene = bounce::loadScene(o.scene);
+  bounce::Scene scene = bounce::loadScene(o.scene);
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(o.moves));
   for (const std::string& warning : scene.warnings)
     std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
   // Without a camera in the file, frame the scene as bounce-render does (square unless the
@@ -189,6 +192,12 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
+  app.add_option("--move", o.moves,
+                 "NAME X Y Z: place the dynamic instance NAME (glTF node name, extras.bounce."
+                 "mobility = dynamic) with its world translation at (X, Y, Z) metres; repeatable. "
+                 "bounce-render, bounce-trace and bounce-view place it the same way")
+      ->expected(4)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(o);

@@ -69,13 +69,13 @@ def quad_triangles(quad, facing):
     return out
 
 
-def main():
-    out_dir = os.path.dirname(os.path.abspath(__file__))
+def build(generator):
+    """The Cornell box (room, light, blocks, camera) in a GltfWriter, ready to extend."""
     room_centre = [278.0 * MM, 274.4 * MM, 279.6 * MM]
     inward = lambda c: sub(room_centre, c)  # noqa: E731  room surfaces face the interior
     down = lambda c: [0.0, -1.0, 0.0]       # noqa: E731
 
-    gltf = GltfWriter("bounce content/cornell_box/make_cornell_box.py")
+    gltf = GltfWriter(generator)
     white = gltf.material("white", WHITE)
     red = gltf.material("red", RED)
     green = gltf.material("green", GREEN)
@@ -111,6 +111,12 @@ def main():
     # which puts world +x (the red wall) on the image's left.
     gltf.node({"name": "camera", "camera": 0, "rotation": [0.0, 1.0, 0.0, 0.0],
                "translation": [c * MM for c in CAMERA_POSITION]})
+    return gltf
+
+
+def main():
+    out_dir = os.path.dirname(os.path.abspath(__file__))
+    gltf = build("bounce content/cornell_box/make_cornell_box.py")
     gltf.write(sys.argv[1] if len(sys.argv) > 1 else os.path.join(out_dir, "cornell_box.gltf"))
 
 

@@ -16,6 +16,7 @@
 #include "render/forward_renderer.h"
 #include "render/view.h"
 #include "scene/framing.h"
+#include "scene/instance_move.h"
 #include "scene/load.h"
 
 namespace {
@@ -34,6 +35,7 @@ struct Options {
   bool noShadows = false;
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
+  std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::size_t vplGroups = bounce::kMaxVplGroups;
   bool noVplCulling = false;
   bool noVplShadows = false;
@@ -57,7 +59,8 @@ bounce::RendererSettings rendererSettings(const Options& options) {
 }
 
 int run(const Options& options) {
-  const bounce::Scene scene = bounce::loadScene(options.scene);
+  bounce::Scene scene = bounce::loadScene(options.scene);
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
   for (const std::string& warning : scene.warnings)
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
   const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -203,6 +206,12 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")
       ->check(CLI::Range(0.0f, 64.0f));
+  app.add_option("--move", options.moves,
+                 "NAME X Y Z: place the dynamic instance NAME (glTF node name, extras.bounce."
+                 "mobility = dynamic) with its world translation at (X, Y, Z) metres; repeatable. "
+                 "bounce-render, bounce-trace and bounce-view place it the same way")
+      ->expected(4)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(options);

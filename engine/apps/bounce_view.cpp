@@ -4,7 +4,12 @@
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With --bake: M cycles the
 //   modes (full, direct, indirect, lightmap, charts, and with the bake's VPLs vpl, vpl-clamp),
 //   C toggles the chart/texel-density view.
-//   The title shows the camera, the mode, the frame time, the speed and the exposure.
+//   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
+//   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
+//   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
+//   them at start as in bounce-render and bounce-trace.
+//   The title shows the camera, the mode, the frame time, the speed, the exposure and the
+//   selected object with its position.
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
 
@@ -25,7 +30,9 @@
 #include "render/forward_renderer.h"
 #include "render/tonemap_pass.h"
 #include "render/view.h"
+#include "scene/dynamic_selection.h"
 #include "scene/framing.h"
+#include "scene/instance_move.h"
 #include "scene/load.h"
 
 namespace {
@@ -43,6 +50,7 @@ struct Options {
   std::string screenshot;
   std::string mode;  // default: full with a bake, direct without
   std::string bake;
+  std::vector<std::string> moves;  // NAME X Y Z, repeated
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -62,6 +70,8 @@ class Viewer {
         renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}, {}},
                   bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
+        selection_(scene_),
+        objectSpeed_(bounce::objectSpeed(scene_)),
         exposure_(options.exposure) {
     std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
                  window_.renderer().c_str());
@@ -106,12 +116,19 @@ class Viewer {
       window_.swapBuffers();
       if (now - titleShown > std::chrono::milliseconds(250)) {
         titleShown = now;
-        char title[256];
+        char object[160] = "";
+        if (!selection_.empty()) {
+          const glm::vec3 at = selection_.translation(scene_);
+          std::snprintf(object, sizeof object,
+                        " — moving '%s' (G: next of %zu) at (%.3f, %.3f, %.3f) m",
+                        selection_.name(scene_).c_str(), selection_.count(), at.x, at.y, at.z);
+        }
+        char title[512];
         std::snprintf(title, sizeof title,
-                      "bounce-view — %s — camera '%s' — %s — %.1f ms — %.2f m/s — %+.1f EV",
+                      "bounce-view — %s — camera '%s' — %s — %.1f ms — %.2f m/s — %+.1f EV%s",
                       options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(),
                       std::string(bounce::renderModeName(renderer_.settings().mode)).c_str(),
-                      frameMs, speed_, exposure_);
+                      frameMs, speed_, exposure_, object);
         window_.setTitle(title);
       }
     }
@@ -174,6 +191,7 @@ class Viewer {
       if (key == Key::RightBracket) exposure_ += 0.5f;
       if (key == Key::M) nextMode();
       if (key == Key::C) toggleCharts();
+      if (key == Key::G) selectNextObject();
     }
     speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
     const auto axis = [&](Key plus, Key minus) {
@@ -182,6 +200,8 @@ class Viewer {
     const glm::vec3 direction(axis(Key::D, Key::A), axis(Key::E, Key::Q), axis(Key::W, Key::S));
     const float boost = window_.isDown(Key::LeftShift) ? 4.0f : 1.0f;
     fly_->move(direction * speed_ * boost * dt);
+    moveObject(glm::vec3(axis(Key::L, Key::J), axis(Key::O, Key::U), axis(Key::I, Key::K)) *
+               objectSpeed_ * boost * dt);
     const glm::dvec2 cursor = window_.cursorPosition();
     const bool looking = window_.isDown(bounce::gl::MouseButton::Left) ||
                          window_.isDown(bounce::gl::MouseButton::Right);
@@ -192,6 +212,25 @@ class Viewer {
                  -static_cast<float>(delta.y) * kRadiansPerPixel);
     }
     cursor_ = cursor;
+  }
+
+  void selectNextObject() {
+    selection_.selectNext();
+    if (!selection_.empty())
+      std::fprintf(stderr, "bounce-view: moving '%s'\n", selection_.name(scene_).c_str());
+  }
+
+  // `screen`: (right, up, away from the camera) in metres, moved along the world axes nearest
+  // to the camera's right, up and forward.
+  void moveObject(const glm::vec3& screen) {
+    if (selection_.empty() || screen == glm::vec3(0.0f)) return;
+    const bounce::Camera camera = fly_->camera();
+    const glm::vec3 right = glm::vec3(camera.cameraToWorld[0]);
+    const glm::vec3 delta = bounce::nearestAxis(right) * screen.x +
+                            bounce::nearestAxis(camera.up()) * screen.y +
+                            bounce::nearestAxis(camera.forward()) * screen.z;
+    for (const std::size_t i : selection_.move(scene_, delta))
+      renderer_.setInstanceTransform(i, scene_.instances[i].transform);
   }
 
   void draw() {
@@ -221,6 +260,8 @@ class Viewer {
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;
+  bounce::DynamicSelection selection_;
+  float objectSpeed_ = 1.0f;  // m/s
   std::unique_ptr<bounce::gl::RenderTarget> target_;
   std::vector<bounce::Camera> cameras_;
   std::size_t cameraIndex_ = 0;
@@ -241,7 +282,8 @@ int main(int argc, char** argv) {
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits. With --bake: M cycles the modes, C toggles the chart view.",
+      "exposure, Esc quits. With --bake: M cycles the modes, C toggles the chart view. Dynamic "
+      "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
       ->required();
@@ -265,9 +307,15 @@ int main(int argc, char** argv) {
                  "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
                  "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
+  app.add_option("--move", options.moves,
+                 "NAME X Y Z: start with the dynamic instance NAME's world translation at (X, Y, "
+                 "Z) metres; repeatable (as in bounce-render and bounce-trace)")
+      ->expected(4)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   CLI11_PARSE(app, argc, argv);
   try {
     bounce::Scene scene = bounce::loadScene(options.scene);
+    bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
     std::optional<bounce::Bake> bake;
     if (!options.bake.empty()) bake = bounce::readBake(options.bake, scene);
     const bounce::RenderMode mode =

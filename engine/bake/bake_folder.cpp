@@ -299,6 +299,12 @@ std::string sceneContentHash(const Scene& scene) {
   h.u64(scene.instances.size());
   for (const Instance& instance : scene.instances) {
     h.u64(instance.mesh);
+    // A dynamic instance is in neither the lightmap nor the VPLs (the bake runs without it):
+    // the bake holds wherever it is placed (--move, the viewer), so its transform is left out.
+    if (instance.mobility == Mobility::Dynamic) {
+      h.u64(static_cast<uint64_t>(instance.mobility));
+      continue;
+    }
     for (int c = 0; c < 4; ++c) {
       const glm::vec4 column = instance.transform[c];
       h.f32(column.x), h.f32(column.y), h.f32(column.z), h.f32(column.w);

@@ -37,7 +37,8 @@ struct Bake {
 };
 
 // Hash of everything in the scene that changes a bake (geometry, instances and their mobility,
-// materials, lights), hex. Cameras and warnings do not count.
+// materials, lights), hex. Cameras and warnings do not count, nor where a dynamic instance
+// stands (bounce-bake leaves dynamic instances out of the lightmap and the VPLs).
 std::string sceneContentHash(const Scene& scene);
 
 // Reads <dir>; throws LoadError naming the file and the reason when a file is missing or

@@ -39,6 +39,13 @@ enum class Key {
   Digit9,
   M,  // bounce-view: next render mode
   C,  // bounce-view: chart view on/off
+  G,  // bounce-view: select the next dynamic object
+  I,  // bounce-view: move the selected object away from the camera
+  K,  //   ... towards the camera
+  J,  //   ... left
+  L,  //   ... right
+  U,  //   ... down
+  O,  //   ... up
 };
 
 enum class MouseButton { Left, Right };

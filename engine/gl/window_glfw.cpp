@@ -23,7 +23,7 @@ GLADapiproc glfwProc(const char* name) {
   return glfwGetProcAddress(name);
 }
 
-constexpr std::array<std::pair<Key, int>, 25> kKeyCodes = {{
+constexpr std::array<std::pair<Key, int>, 32> kKeyCodes = {{
     {Key::W, GLFW_KEY_W},
     {Key::A, GLFW_KEY_A},
     {Key::S, GLFW_KEY_S},
@@ -49,6 +49,13 @@ constexpr std::array<std::pair<Key, int>, 25> kKeyCodes = {{
     {Key::Digit9, GLFW_KEY_9},
     {Key::M, GLFW_KEY_M},
     {Key::C, GLFW_KEY_C},
+    {Key::G, GLFW_KEY_G},
+    {Key::I, GLFW_KEY_I},
+    {Key::K, GLFW_KEY_K},
+    {Key::J, GLFW_KEY_J},
+    {Key::L, GLFW_KEY_L},
+    {Key::U, GLFW_KEY_U},
+    {Key::O, GLFW_KEY_O},
 }};
 
 int glfwKey(Key key) {

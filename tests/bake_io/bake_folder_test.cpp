@@ -293,6 +293,12 @@ TEST(SceneContentHash, SameContentSameHashAnyChangeAnotherHash) {
     change(s);
     EXPECT_NE(h, sceneContentHash(s)) << what;
   }
+  // Where a dynamic instance stands is no part of the bake (it is baked without it): moving it
+  // (--move, the viewer) keeps the bake current.
+  Scene moved = testScene();
+  ASSERT_EQ(moved.instances[1].mobility, Mobility::Dynamic);
+  moved.instances[1].transform[3] = glm::vec4(0.3f, 2.0f, -1.0f, 1.0f);
+  EXPECT_EQ(h, sceneContentHash(moved));
 }
 
 // ---- every rejection names the file and the reason

@@ -30,6 +30,15 @@ TEST(ContentScripts, CornellBoxIsReproducible) {
   expectRegenerates("cornell_box/make_cornell_box.py", "cornell_box/cornell_box.gltf");
 }
 
+TEST(ContentScripts, CornellBoxDynamicIsReproducible) {
+  expectRegenerates("cornell_box_dynamic/make_cornell_box_dynamic.py",
+                    "cornell_box_dynamic/cornell_box_dynamic.gltf");
+}
+
+TEST(ContentScripts, VplCornerIsReproducible) {
+  expectRegenerates("vpl_corner/make_vpl_corner.py", "vpl_corner/vpl_corner.gltf");
+}
+
 TEST(ContentScripts, PointOverPlaneIsReproducible) {
   expectRegenerates("point_over_plane/make_point_over_plane.py",
                     "point_over_plane/point_over_plane.gltf");
