@@ -10,17 +10,16 @@
 // light carries its group's index for the visibility. Must match vplCutIrradiance
 // (engine/bake/vpl_groups.cpp).
 //
-// uVplLights: 3 RGBA32F texels per light: (position m, group), (unit normal, 0), (Φ W, 0);
-//             the N VPLs group by group, then the K group representatives, then the other
-//             tree nodes' representatives.
-// uVplCuts:   RG32UI: per cell (first entry, entry count), cells x fastest, then the entries,
-//             each a range of lights (first, count); entry indices count from texel 0.
+// The light table's VPL sections (light_table.glsl, engine/render/light_table.h):
+//   lights: 3 texels per light: (position m, group), (unit normal, 0), (Φ W, 0); the N VPLs
+//           group by group, then the K group representatives, then the other tree nodes'
+//           representatives;
+//   cuts:   per cell (first entry, entry count), cells x fastest, then the entries, each a
+//           range of lights (first, count); entry indices count from the section's first texel.
 
 // Visibility (0..1) of VPL group `group` (0..K−1) from p; defined in vpl_shadows.glsl.
 float vplVisibility(int group, vec3 p, vec3 ng);
 
-uniform samplerBuffer uVplLights;
-uniform usamplerBuffer uVplCuts;
 uniform vec3 uVplGridOrigin;   // m
 uniform vec3 uVplCellSize;     // m
 uniform ivec3 uVplGridCells;   // cells per axis
@@ -32,24 +31,23 @@ void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 remo
   removed = vec3(0.0);
   ivec3 c = clamp(ivec3(floor((p - uVplGridOrigin) / uVplCellSize)), ivec3(0), uVplGridCells - 1);
   int cell = c.x + uVplGridCells.x * (c.y + uVplGridCells.y * c.z);
-  uvec2 cellEntries = texelFetch(uVplCuts, cell).xy;
+  uvec2 cellEntries = vplCutRange(cell);
   float r2 = uVplClampDistance * uVplClampDistance;
   for (uint e = cellEntries.x; e < cellEntries.x + cellEntries.y; ++e) {
-    uvec2 range = texelFetch(uVplCuts, int(e)).xy;
+    uvec2 range = vplCutRange(int(e));
     for (uint i = range.x; i < range.x + range.y; ++i) {
-      int t = 3 * int(i);
-      vec4 positionGroup = texelFetch(uVplLights, t);
+      vec4 positionGroup = vplTexel(int(i), 0);
       vec3 d = positionGroup.xyz - p;
       float d2 = dot(d, d);
       if (!(d2 > 0.0)) continue;
       float invD = inversesqrt(d2);
       float cosX = dot(n, d) * invD;
-      float cosY = -dot(texelFetch(uVplLights, t + 1).xyz, d) * invD;
+      float cosY = -dot(vplTexel(int(i), 1).xyz, d) * invD;
       if (cosX <= 0.0 || cosY <= 0.0) continue;
       float v = vplVisibility(int(positionGroup.w), p, ng);
       if (v <= 0.0) continue;
       // I(ω) = Φ/π · cosθ_y (W/sr); E = I · cosθ_x / max(d², r²).
-      vec3 intensity = texelFetch(uVplLights, t + 2).rgb * (cosY / PI) * (cosX * v);
+      vec3 intensity = vplTexel(int(i), 2).rgb * (cosY / PI) * (cosX * v);
       float clampedD2 = max(d2, r2);
       clamped += intensity / clampedD2;
       removed += intensity * ((clampedD2 - d2) / (d2 * clampedD2));

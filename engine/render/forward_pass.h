@@ -9,8 +9,8 @@
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
+#include "render/light_table.h"
 #include "render/lightmap_pass.h"
-#include "render/punctual_lights.h"
 #include "render/shadow_pass.h"
 #include "render/vpl_pass.h"
 
@@ -21,7 +21,7 @@ class ForwardPass {
   explicit ForwardPass(const std::filesystem::path& shaderDir);
 
   // Clears `target` to black and draws the scene seen through `viewProjection`.
-  void draw(const GpuScene& scene, const PunctualLights& lights, const ShadowPass& shadows,
+  void draw(const GpuScene& scene, const LightTable& lights, const ShadowPass& shadows,
             const LightmapPass& lightmap, const VplPass& vpls, RenderMode mode,
             const glm::mat4& viewProjection, gl::RenderTarget& target);
 

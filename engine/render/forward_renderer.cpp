@@ -18,6 +18,7 @@ struct ForwardRenderer::Passes {
   GpuScene scene;
   PunctualLights lights;
   ShadowPass shadows;
+  LightTable lightTable;
   LightmapPass lightmap;
   VplPass vpls;
   ForwardPass forward;
@@ -25,10 +26,12 @@ struct ForwardRenderer::Passes {
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
          const RendererSettings& settings, std::vector<std::string>& warnings)
       : scene(source, warnings),
-        lights(source, warnings),
+        lights(source),
         shadows(scene, lights, settings.shadows, shaderDir, warnings),
         vpls(shaderDir, settings.vpls.shadows, warnings),
-        forward(shaderDir) {}
+        forward(shaderDir) {
+    lightTable.setPunctual(lights.texels(shadows.lightSlots()));
+  }
 };
 
 namespace {
@@ -77,6 +80,7 @@ void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
   p.lightmap.attach(bake, p.scene);
   p.lights.setBakedDirectInLightmap(true);
+  p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {
     const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifestJson);
     const float r = fromManifest ? *fromManifest
@@ -89,6 +93,7 @@ void ForwardRenderer::setBake(const Bake& bake) {
         statics.add(instance.worldBox.hi);
       }
     p.vpls.attach(*bake.vpls, r, statics.empty() ? p.scene.bounds() : statics, settings_.vpls);
+    p.lightTable.setVpls(p.vpls.lightTexels(), p.vpls.cutTexels());
   }
 }
 
@@ -137,7 +142,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
                    cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
   p.vpls.renderShadows(p.scene);
-  p.forward.draw(p.scene, p.lights, p.shadows, p.lightmap, p.vpls, settings_.mode,
+  p.lightTable.update();
+  p.forward.draw(p.scene, p.lightTable, p.shadows, p.lightmap, p.vpls, settings_.mode,
                  cameraViewProjection, target);
 }
 

@@ -1,39 +1,35 @@
-// The scene's point, spot and directional lights as the uniform arrays of shaders/lights.glsl.
+// The scene's point, spot and directional lights as their section of the light table
+// (render/light_table.h, shaders/light_table.glsl): every light, no cap.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "gl/shader.h"
 #include "scene/scene.h"
 
 namespace bounce {
 
-// Must match MAX_PUNCTUAL_LIGHTS in shaders/lights.glsl.
-constexpr std::size_t kMaxPunctualLights = 32;
-
 class PunctualLights {
  public:
-  // The first kMaxPunctualLights of `scene.lights` (a warning says when there are more).
-  PunctualLights(const Scene& scene, std::vector<std::string>& warnings);
+  explicit PunctualLights(const Scene& scene);
 
-  std::size_t size() const { return type_.size(); }
-  // The scene light that uniform slot `i` holds (slot i = Scene::lights[i]).
+  std::size_t size() const { return lights_.size(); }
+  // The scene light at table index `i` (= Scene::lights[i]).
   const Light& light(std::size_t i) const { return lights_[i]; }
-  void set(gl::Program& program) const;
+  // 4 texels per light (light_table.h), light i's shadow map slot among its kind's maps being
+  // shadowSlots[i] (−1: unshadowed; render/shadow_pass.h).
+  std::vector<glm::vec4> texels(std::span<const int> shadowSlots) const;
   // Lights marked Light::bakeDirect have their direct light in the lightmap once a bake is
-  // attached: then they are drawn with zero power (they still occupy their slots). Without a
-  // bake they are drawn live like the others.
+  // attached: then they are drawn with zero power (they keep their place in the table).
+  // Without a bake they are drawn live like the others.
   void setBakedDirectInLightmap(bool inLightmap) { bakedDirectInLightmap_ = inLightmap; }
 
  private:
   bool bakedDirectInLightmap_ = false;
   std::vector<Light> lights_;
-  std::vector<int> type_;
-  std::vector<glm::vec3> position_, direction_, power_;
-  std::vector<glm::vec2> cosCone_;
 };
 
 }  // namespace bounce

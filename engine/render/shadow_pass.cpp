@@ -45,7 +45,6 @@ void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Cam
 }
 
 void ShadowPass::bind(gl::Program& forward) const {
-  forward.set("uLightShadow", std::span<const int>(lightSlot_));
   forward.set("uShadowFilter", settings_.filter == ShadowFilter::Poisson ? 1 : 0);
   spot_.bind(forward);
   point_.bind(forward);

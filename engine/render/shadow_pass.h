@@ -2,7 +2,8 @@
 // light can reach what the camera sees (spot: spot_shadow_maps.h; point: point_shadow_maps.h;
 // directional: cascades fitted to the camera, directional_shadow_maps.h; area lights: cubes for
 // soft shadows, area_shadow_maps.h), then hands the maps to the lit pass. Which light has which map
-// is uLightShadow[i] in shaders/shadows.glsl: the slot among its kind's maps, or −1 (unshadowed).
+// is lightSlots()[i], stored with the light in the light table (render/light_table.h): the slot
+// among its kind's maps, or −1 (unshadowed).
 #pragma once
 
 #include <filesystem>
@@ -30,6 +31,8 @@ class ShadowPass {
   void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
+  // Per punctual light: its map's slot among its kind's maps, −1 for none.
+  std::span<const int> lightSlots() const { return lightSlot_; }
   // What the last render() drew (culling's effect).
   const ShadowDrawCount& lastFrame() const { return lastFrame_; }
 

@@ -14,11 +14,10 @@ struct TextureUnit {
   static constexpr int kAreaShadow0 = 9;        // reserved: area-light maps (shadow_area.glsl)
   static constexpr int kLightmap = 12;          // sampler2D: baked irradiance (lightmap.glsl)
   static constexpr int kLightmapCharts = 13;    // sampler2D: chart colours (lightmap.glsl)
-  static constexpr int kVplLights = 14;         // samplerBuffer: the VPL light table (vpl.glsl)
-  static constexpr int kVplCuts = 15;           // usamplerBuffer: per-cell lightcuts (vpl.glsl)
+  static constexpr int kLightTable = 14;        // samplerBuffer: every light (render/light_table.h)
   // sampler2DArrayShadow: the VPL groups' shadow cubes (vpl_shadows.glsl). Beyond the 16 units
   // GL 3.3 guarantees: VplPass turns VPL shadows off, with a warning, on a driver without it.
-  static constexpr int kVplShadow = 16;
+  static constexpr int kVplShadow = 15;  // sampler2DArrayShadow: VPL group cubes (vpl_shadows.glsl)
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

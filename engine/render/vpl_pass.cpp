@@ -1,5 +1,6 @@
 #include "render/vpl_pass.h"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -10,17 +11,21 @@
 namespace bounce {
 namespace {
 
-// Cells first, then the entries; entry offsets count from texel 0 (shaders/vpl.glsl).
-std::vector<glm::uvec2> cutTexels(const VplLightCuts& cuts) {
-  std::vector<glm::uvec2> texels;
+// Cells first, then the entries; entry offsets count from the section's first texel
+// (shaders/vpl.glsl). Ranges as floats, exact below 2^24 (render/light_table.h).
+std::vector<glm::vec4> cutSection(const VplLightCuts& cuts) {
+  std::vector<glm::vec4> texels;
   texels.reserve(cuts.cellEntries.size() + cuts.entries.size());
   const auto base = static_cast<uint32_t>(cuts.cellEntries.size());
-  for (const glm::uvec2 cell : cuts.cellEntries) texels.emplace_back(base + cell.x, cell.y);
-  texels.insert(texels.end(), cuts.entries.begin(), cuts.entries.end());
+  const auto range = [](uint32_t first, uint32_t count) {
+    return glm::vec4(static_cast<float>(first), static_cast<float>(count), 0.0f, 0.0f);
+  };
+  for (const glm::uvec2 cell : cuts.cellEntries) texels.push_back(range(base + cell.x, cell.y));
+  for (const glm::uvec2 entry : cuts.entries) texels.push_back(range(entry.x, entry.y));
   return texels;
 }
 
-std::vector<glm::vec4> lightTexels(const VplGroups& groups) {
+std::vector<glm::vec4> lightSection(const VplGroups& groups) {
   std::vector<glm::vec4> texels;
   const std::span<const Vpl> lights = groups.lights();
   texels.reserve(3 * lights.size());
@@ -36,8 +41,6 @@ std::vector<glm::vec4> lightTexels(const VplGroups& groups) {
 
 VplPass::VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings& shadows,
                  std::vector<std::string>& warnings) {
-  lights_.emplace(std::span<const glm::vec4>{});
-  cutTable_.emplace(std::span<const glm::uvec2>{});  // cell 0: no entries
   if (TextureUnit::kVplShadow < gl::Texture2D::maxFragmentUnits())
     shadows_.emplace(shadows, shaderDir);
   else
@@ -58,7 +61,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
   // The cut table must fit one texture buffer (GL 3.3 promises only 65536 texels): coarser grids
   // until it does (fewer cells, the same κ: fewer texels, more lights per cell).
-  const std::size_t limit = gl::TextureBuffer::maxTexels();
+  const std::size_t limit =
+      std::min(kMaxLightTableTexels, gl::TextureBuffer::maxTexels()) - 3 * groups_.lights().size();
   while (cuts_.cellEntries.size() + cuts_.entries.size() > limit &&
          cutSettings.maxCellsPerAxis > 1) {
     cutSettings.maxCellsPerAxis /= 2;
@@ -75,10 +79,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
       cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
   }
   clampDistance_ = clampDistance;
-  lights_.reset();
-  lights_.emplace(std::span<const glm::vec4>(lightTexels(groups_)));
-  cutTable_.reset();
-  cutTable_.emplace(std::span<const glm::uvec2>(cutTexels(cuts_)));
+  lightTexels_ = lightSection(groups_);
+  cutTexels_ = cutSection(cuts_);
   if (shadows_) {
     // A group's cube sits at its member nearest the centroid: a centroid can lie inside an
     // object (docs/vpl.md "Visibility").
@@ -103,14 +105,10 @@ void VplPass::setShadowsEnabled(bool enabled) {
 }
 
 void VplPass::bind(gl::Program& program) const {
-  program.set("uVplLights", TextureUnit::kVplLights);
-  program.set("uVplCuts", TextureUnit::kVplCuts);
   program.set("uVplGridOrigin", cuts_.origin);
   program.set("uVplCellSize", cuts_.cellSize);
   program.set("uVplGridCells", cuts_.cells);
   program.set("uVplClampDistance", clampDistance_);
-  lights_->bind(TextureUnit::kVplLights);
-  cutTable_->bind(TextureUnit::kVplCuts);
   if (shadows_) shadows_->bind(program, TextureUnit::kVplShadow);
 }
 

@@ -1,9 +1,10 @@
 // The VPL stage of the lit pass (shaders/vpl.glsl): groups a bake's virtual point lights
 // (bake/vpl_groups.h: K ≤ 64 groups, each with a representative and a tree), builds the per-cell
-// lightcuts over the static scene's bounds, uploads the light table and the cuts as texture
-// buffers (no fixed cap on the VPL count) and tells the forward shader, per draw, whether the
-// instance takes its indirect light from the VPLs (dynamic instances; every surface in the vpl
-// modes). Without VPLs it binds empty stand-ins. GL calls only through engine/gl.
+// lightcuts over the static scene's bounds, gives the lights and the cuts as the light table's
+// VPL sections (render/light_table.h: no fixed cap on the VPL count) and tells the forward
+// shader, per draw, whether the instance takes its indirect light from the VPLs (dynamic
+// instances; every surface in the vpl modes). Without VPLs its cut section is one empty cell.
+// GL calls only through engine/gl.
 #pragma once
 
 #include <cstddef>
@@ -15,9 +16,9 @@
 
 #include "bake/vpl_groups.h"
 #include "gl/shader.h"
-#include "gl/texture_buffer.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
+#include "render/light_table.h"
 #include "render/vpl_shadow_maps.h"
 
 namespace bounce {
@@ -52,11 +53,15 @@ class VplPass {
   // Visibility on or off (off: every VPL unoccluded), e.g. to measure what it buys.
   void setShadowsEnabled(bool enabled);
   bool shadowsEnabled() const { return shadows_ && shadows_->enabled(); }
-  // Per frame: textures, grid, clamp distance, shadow cubes.
+  // Per frame: grid, clamp distance, shadow cubes (the lights are in the light table).
   void bind(gl::Program& program) const;
   // Per draw: whether instance `index` (into GpuScene::instances) is lit by the VPLs in the
   // full and indirect modes (a dynamic instance, when VPLs are attached).
   void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const;
+
+  // The light table's VPL sections (render/light_table.h): 3 texels per light, then the cuts.
+  const std::vector<glm::vec4>& lightTexels() const { return lightTexels_; }
+  const std::vector<glm::vec4>& cutTexels() const { return cutTexels_; }
 
   const VplGroups& groups() const { return groups_; }
   const VplLightCuts& cuts() const { return cuts_; }
@@ -66,9 +71,9 @@ class VplPass {
   VplGroups groups_;
   VplLightCuts cuts_;
   float clampDistance_ = 0.0f;
-  std::optional<gl::TextureBuffer> lights_;
-  std::optional<gl::TextureBuffer> cutTable_;
-  std::optional<VplShadowMaps> shadows_;  // empty when the driver lacks kVplShadow
+  std::vector<glm::vec4> lightTexels_;
+  std::vector<glm::vec4> cutTexels_{glm::vec4(0.0f)};  // unattached: one cell, no entries
+  std::optional<VplShadowMaps> shadows_;               // empty when the driver lacks kVplShadow
   bool attached_ = false;
 };
 

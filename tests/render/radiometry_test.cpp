@@ -133,6 +133,53 @@ TEST(Radiometry, SpotLightFollowsSpotFalloff) {
   EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));  // far outside the outer cone: exactly dark
 }
 
+// The light table has no fixed cap (render/light_table.h): 300 lights of every kind, unequal
+// and tilted, are each drawn with their own parameters; the pixel is the sum of their closed
+// forms. (The renderer drew only the first 32 punctual lights before; a wrong stride or field
+// in the table moves every light.) Shadows off: the floor alone, nothing to occlude.
+TEST(Radiometry, HundredsOfUnequalLightsOfEveryKindAreEachDrawn) {
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  for (int i = 0; i < 300; ++i) {
+    const float a = static_cast<float>(i);
+    Light light;
+    light.type =
+        i % 30 == 29 ? LightType::Directional : (i % 5 == 4 ? LightType::Spot : LightType::Point);
+    light.position = {2.5f * std::sin(1.7f * a), 0.4f + 0.01f * a, 2.5f * std::cos(2.3f * a)};
+    light.direction = glm::normalize(glm::vec3(0.4f * std::sin(a), -1.0f, 0.3f * std::cos(a)));
+    const float scale = light.type == LightType::Directional ? 0.01f : 0.05f;
+    light.intensity = scale * glm::vec3(1.0f + (i % 7), 1.0f + (i % 11), 1.0f + (i % 3));
+    light.irradiance = light.intensity;
+    light.innerConeAngle = 0.2f + 0.001f * a;
+    light.outerConeAngle = light.innerConeAngle + 0.3f;
+    scene.lights.push_back(light);
+  }
+  const Camera camera = downCamera(2.0f);
+  testContext();
+  RendererSettings settings;
+  settings.shadows.enabled = false;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings);
+  const Image image = renderer.renderImage(camera, kSize, kSize);
+  for (const auto& [x, y] : kPixels) {
+    const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+    glm::dvec3 irradiance(0.0);  // W/m²
+    for (const Light& light : scene.lights) {
+      if (light.type == LightType::Directional) {
+        irradiance += glm::dvec3(light.irradiance) * static_cast<double>(-light.direction.y);
+        continue;
+      }
+      const glm::vec3 toLight = light.position - p;
+      const float r = glm::length(toLight);
+      float factor = toLight.y / r / (r * r);  // cosθ / r²
+      if (light.type == LightType::Spot)
+        factor *= khrSpotFactor(glm::dot(-toLight / r, light.direction), light.innerConeAngle,
+                                light.outerConeAngle);
+      irradiance += glm::dvec3(light.intensity) * static_cast<double>(factor);
+    }
+    expectNear(image.at(x, y), kAlbedo / kPi * glm::vec3(irradiance), "300 lights", x, y);
+  }
+}
+
 // Robustness: a mesh without shading normals is shaded with its geometric normal, and a
 // zero-area emissive triangle lights nothing (and puts no NaN in the image).
 TEST(Radiometry, MissingNormalsAndDegenerateEmittersStayFinite) {
