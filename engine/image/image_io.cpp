@@ -37,12 +37,12 @@ void requireSize(const std::filesystem::path& path, const Image& image) {
 // tinyexr 1.0.1's header parser assert()s (aborting the process) on two header attributes it
 // does not validate: a `type` string other than scanlineimage/tiledimage, or one that disagrees
 // with its own idea of "tiled" (the version's tiled bit and a parsed `tiles` attribute), and a
-// `tiles` attribute that is not 9 bytes. ParseEXRHeaderFromMemory converts the header even when
-// the parse failed part-way, so the first check sees whatever attributes were read before the
-// failure (found by fuzz_exr: tests/corpus/found/fuzz_exr_type_*.exr). The attributes are walked
-// here exactly as tinyexr's ReadAttribute walks them (same stopping rules, at most 1024) and
-// every `type` attribute is renamed before tinyexr sees it, so its check can never fire;
-// bounce applies the check itself. Returns the reason to refuse the file, or "".
+// `tiles` attribute that is not 9 bytes or has level mode 3. ParseEXRHeaderFromMemory converts the
+// header even when the parse failed part-way, so the first check sees whatever attributes were read
+// before the failure (found by fuzz_exr: tests/corpus/found/fuzz_exr_type_*.exr). The attributes
+// are walked here exactly as tinyexr's ReadAttribute walks them (same stopping rules, at most 1024)
+// and every `type` attribute is renamed before tinyexr sees it, so its check can never fire; bounce
+// applies the check itself. Returns the reason to refuse the file, or "".
 std::string disarmTinyexrAsserts(std::vector<unsigned char>& bytes, bool versionTiled) {
   constexpr std::size_t kMaxAttributes = 1024;  // TINYEXR_MAX_HEADER_ATTRIBUTES
   std::size_t at = 8;                           // magic + version
@@ -68,6 +68,11 @@ std::string disarmTinyexrAsserts(std::vector<unsigned char>& bytes, bool version
     if (name == "tiles" && versionTiled) {
       if (size != 9)
         return "header attribute tiles has " + std::to_string(size) + " bytes (expected 9)";
+      // Level mode (low 2 bits of the mode byte): one level, mipmap or ripmap; tinyexr
+      // assert()s on 3 when it counts the levels (CalculateNumXLevels).
+      if (const int levelMode = bytes[at + 8] & 0x3; levelMode > 2)
+        return "header attribute tiles has level mode " + std::to_string(levelMode) +
+               " (0 one level, 1 mipmap, 2 ripmap)";
       tiles = true;
     }
     if (name == "type") {

@@ -611,6 +611,9 @@ FOUND = [
     ("found/fuzz_exr_type_after_failed_attribute.exr", "error", "cannot read EXR: header attribute type 'tiledimage'"),
     ("found/fuzz_exr_type_unknown_kind.exr", "error", "cannot read EXR"),
     ("found/fuzz_exr_type_tiled_then_failed.exr", "error", "cannot read EXR: header attribute type 'tiledimage'"),
+    # A `tiles` attribute with level mode 3: tinyexr assert()ed counting the levels (round 4b).
+    ("found/fuzz_exr_tile_level_mode_a.exr", "error", "header attribute tiles has level mode 3"),
+    ("found/fuzz_exr_tile_level_mode_b.exr", "error", "header attribute tiles has level mode 3"),
 ]
 rows.extend(FOUND)
 
