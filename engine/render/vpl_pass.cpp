@@ -20,14 +20,15 @@ std::vector<glm::uvec2> cutTexels(const VplLightCuts& cuts) {
   return texels;
 }
 
-std::vector<glm::vec4> lightTexels(const VplGroups& groups) {
+// `flux`: per light-table entry, W per channel (VplGroups::lightFluxes).
+std::vector<glm::vec4> lightTexels(const VplGroups& groups, std::span<const glm::vec3> flux) {
   std::vector<glm::vec4> texels;
   const std::span<const Vpl> lights = groups.lights();
   texels.reserve(3 * lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i) {
     texels.emplace_back(lights[i].position, static_cast<float>(groups.groupOf(i)));
     texels.emplace_back(lights[i].normal, 0.0f);
-    texels.emplace_back(lights[i].flux, 0.0f);
+    texels.emplace_back(flux[i], 0.0f);
   }
   return texels;
 }
@@ -76,7 +77,7 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   }
   clampDistance_ = clampDistance;
   lights_.reset();
-  lights_.emplace(std::span<const glm::vec4>(lightTexels(groups_)));
+  setAlive(std::vector<uint8_t>(groups_.vplCount(), 1));
   cutTable_.reset();
   cutTable_.emplace(std::span<const glm::uvec2>(cutTexels(cuts_)));
   if (shadows_) {
@@ -91,6 +92,11 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
     shadows_->setRepresentatives(origins);
   }
   attached_ = true;
+}
+
+void VplPass::setAlive(std::span<const uint8_t> alive) {
+  lights_.reset();
+  lights_.emplace(std::span<const glm::vec4>(lightTexels(groups_, groups_.lightFluxes(alive))));
 }
 
 ShadowDrawCount VplPass::renderShadows(const GpuScene& scene) {
