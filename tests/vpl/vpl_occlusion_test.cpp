@@ -133,5 +133,32 @@ TEST(VplOcclusion, ABlockedSegmentDarkensItsVplAndTheRestOfItsPathOnly) {
   EXPECT_EQ(vplAliveMask(vpls, std::span(&moved, 1)), std::vector<uint8_t>(6, 1));
 }
 
+// The generator's record of the light paths: a bounce-1 VPL's segment starts at the (point)
+// light, a later one's at the previous VPL of the same path; paths are consecutive and in order.
+TEST(VplOcclusion, GeneratorRecordsEachVplsPathAndSegmentStart) {
+  Room room(false);
+  VplSettings settings = fixedPaths();
+  settings.minPaths = 1024;
+  const VplSet set =
+      generateVpls(room.world.scene, room.world.geometry, *room.world.kernel, settings);
+  ASSERT_GT(set.vpls.size(), 1024u);
+  const glm::vec3 light = room.world.scene.lights[0].position;
+  for (std::size_t i = 0; i < set.vpls.size(); ++i) {
+    const Vpl& v = set.vpls[i];
+    ASSERT_LT(v.path, set.paths);
+    if (set.bounce[i] == 1) {
+      EXPECT_EQ(v.from, light) << "VPL " << i;
+      if (i > 0) {
+        EXPECT_GT(v.path, set.vpls[i - 1].path) << "VPL " << i;
+      }
+    } else {
+      ASSERT_GT(i, 0u);
+      EXPECT_EQ(set.bounce[i], set.bounce[i - 1] + 1) << "VPL " << i;
+      EXPECT_EQ(v.path, set.vpls[i - 1].path) << "VPL " << i;
+      EXPECT_EQ(v.from, set.vpls[i - 1].position) << "VPL " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bounce
