@@ -9,18 +9,13 @@
 #include <map>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
-#include "bake/bake_folder.h"
-#include "bake/vpl_clamp.h"
+#include "generated_vpl_bake.h"
 #include "gl/context.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
-#include "ray/ray_kernel.h"
 #include "render/forward_renderer.h"
 #include "scene/framing.h"
 #include "scene/load.h"
-#include "vpl/vpl_generate.h"
 
 namespace {
 
@@ -35,22 +30,7 @@ struct Setup {
   const bounce::Bake& bake(int cap) {
     auto found = bakes.find(cap);
     if (found != bakes.end()) return found->second;
-    const bounce::Scene statics = bounce::staticScene(scene);
-    const bounce::WorldGeometry geometry = bounce::flatten(statics);
-    const auto kernel = bounce::makeRayKernel(geometry, bounce::RayBackend::Bvh);
-    bounce::VplSettings settings;
-    settings.maxVpls = cap;
-    settings.relativeError = 0.0f;
-    bounce::Bake b;
-    b.layout.width = b.layout.height = 1;
-    b.layout.texelSize = 1.0f;
-    b.irradiance = bounce::Image(1, 1);
-    b.vpls = bounce::generateVpls(statics, geometry, *kernel, settings).vpls;
-    b.manifestJson =
-        nlohmann::json{{"vpls",
-                        {{"clampDistance", bounce::vplClampDistance(bounce::surfaceArea(geometry),
-                                                                    b.vpls->size())}}}}
-            .dump();
+    bounce::Bake b = bounce::test::generatedVplBake(scene, cap);
     return bakes.emplace(cap, std::move(b)).first->second;
   }
 };
