@@ -40,6 +40,7 @@ glm::vec3 sampleUniformCone(glm::vec2 u, float cosMax) {
 // A ray leaving a light with the flux it carries (β₀, W per channel, not yet divided by N).
 struct Emission {
   Ray ray;
+  glm::vec3 point{0.0f};  // the sampled point on the light (metres), before the ray offset
   glm::vec3 flux{0.0f};
   bool valid = false;
 };
@@ -85,6 +86,7 @@ class PathStarter {
       if (!(local.z > 0.0f)) return e;
       e.ray.direction = Frame(n).toWorld(local);
       e.ray.origin = offsetRayOrigin(s.position, n, e.ray.direction);
+      e.point = s.position;
       // β₀ = Le·cosθ / (pmf_set · p_A · side · cosθ/π) = π·Le / (pmf_set · p_A · side).
       e.flux = kPi * s.radiance / (pick.pmf * s.pdfArea * sidePmf);
     } else {
@@ -118,6 +120,7 @@ class PathStarter {
         e.flux = light.irradiance * (kPi * radius * radius / pick.pmf);
       }
     }
+    if (pick.kind != LightKind::Area) e.point = e.ray.origin;
     e.ray.tmin = 0.0f;
     e.ray.tmax = std::numeric_limits<float>::infinity();
     e.valid = finiteRay(e.ray) && isFinite(e.flux) && maxComponent(e.flux) > 0.0f;
@@ -144,7 +147,8 @@ PathVpls tracePath(const Scene& scene, const WorldGeometry& geometry, const RayK
   const Emission emission = starter.start(sampler);
   if (!emission.valid) return out;
   Ray ray = emission.ray;
-  glm::vec3 beta = emission.flux;  // flux arriving at the next hit
+  glm::vec3 beta = emission.flux;   // flux arriving at the next hit
+  glm::vec3 from = emission.point;  // where the segment to the next hit starts
   for (int bounce = 1; bounce <= settings.maxBounces; ++bounce) {
     const Hit hit = kernel.intersect(ray);
     if (!hit.valid()) break;
@@ -153,7 +157,8 @@ PathVpls tracePath(const Scene& scene, const WorldGeometry& geometry, const RayK
     // The VPL re-emits what the surface reflects: Φ = β·ρ (bake/vpl.h).
     const glm::vec3 reflected = beta * point.albedo;
     if (!(maxComponent(reflected) > 0.0f) || !isFinite(reflected)) break;
-    out.vpls.push_back({point.position, point.shadingNormal, reflected});
+    out.vpls.push_back({point.position, point.shadingNormal, reflected, from, index});
+    from = point.position;
 
     const uint32_t dim = kDimFirstBounce + 2u * static_cast<uint32_t>(bounce - 1);
     beta = reflected;

@@ -5,6 +5,9 @@
 // is sample i), continued by cosine-weighted (Lambertian) reflection with Russian roulette on
 // the albedo. One VPL is left at every diffuse vertex, from the first hit (bounce 1) on, and
 // none at the lights: the set carries indirect light only (the renderer draws direct light).
+// Each VPL records its path index (the sample index; a path's VPLs are consecutive, in bounce
+// order) and where its incoming segment started (the sampled light point, else the previous
+// VPL), so that a path can be cut later where a dynamic object blocks it.
 //
 // Flux (bake/vpl.h convention, derived in docs/vpl.md): a path leaves its light carrying
 // β₀ = Le·cosθ / p(x, ω) (W, per channel), p the density of the sampled origin and direction
@@ -67,8 +70,9 @@ VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const Ray
 // The scene VPL paths run in: `scene` without its dynamic instances (Mobility::Dynamic). The VPLs
 // carry the static scene's indirect light, which dynamic objects receive wherever they are
 // moved; a dynamic object neither holds VPLs (they would stay behind when it moves) nor
-// shadows the paths (the approximation: its own effect on the room's indirect light is
-// left out). Meshes, materials and lights are kept as they are.
+// shadows the paths here: each VPL records its path and the start of its incoming segment, and
+// the renderer cuts the paths the placed objects block (bake/vpl_occlusion.h). The light the
+// dynamic objects reflect is left out. Meshes, materials and lights are kept as they are.
 Scene staticScene(const Scene& scene);
 
 }  // namespace bounce

@@ -24,6 +24,13 @@ struct Vpl {
   glm::vec3 position{0.0f};            // world, metres
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit; the side the VPL emits into
   glm::vec3 flux{0.0f};                // Φ, W per channel, albedo of its surface included
+  // The light path it ends (a VPL set is a set of light-path prefixes): `from` is where its
+  // incoming segment started (world, metres: the light's sample point for a bounce-1 VPL, the
+  // previous VPL of the path otherwise) and `path` the path's index. The VPLs of one path are
+  // consecutive and in path order; an object placed across from → position blocks this VPL and
+  // every later one of its path (bake/vpl_occlusion.h). Merged VPLs (representatives) have none.
+  glm::vec3 from{0.0f};
+  uint32_t path = 0;
 };
 
 // The VPL of `members` (not empty) nearest `point`: a point on a real surface and its normal,

@@ -15,7 +15,7 @@ namespace {
 
 constexpr char kMagic[8] = {'B', 'N', 'C', 'V', 'P', 'L', 'S', '\0'};
 constexpr std::size_t kHeaderBytes = 16;
-constexpr std::size_t kRecordBytes = 36;
+constexpr std::size_t kRecordBytes = 52;
 
 void putU32(std::vector<unsigned char>& out, std::size_t at, uint32_t v) {
   for (int i = 0; i < 4; ++i) out[at + i] = static_cast<unsigned char>(v >> (8 * i));
@@ -50,7 +50,9 @@ std::vector<unsigned char> encodeVpls(std::span<const Vpl> vpls) {
       putF32(out, at + 4 * c, vpls[i].position[c]);
       putF32(out, at + 12 + 4 * c, vpls[i].normal[c]);
       putF32(out, at + 24 + 4 * c, vpls[i].flux[c]);
+      putF32(out, at + 36 + 4 * c, vpls[i].from[c]);
     }
+    putU32(out, at + 48, vpls[i].path);
   }
   return out;
 }
@@ -81,13 +83,21 @@ std::vector<Vpl> decodeVpls(const std::filesystem::path& file,
       v.position[c] = getF32(bytes, at + 4 * c);
       v.normal[c] = getF32(bytes, at + 12 + 4 * c);
       v.flux[c] = getF32(bytes, at + 24 + 4 * c);
+      v.from[c] = getF32(bytes, at + 36 + 4 * c);
     }
+    v.path = getU32(bytes, at + 48);
     const std::string which = "VPL " + std::to_string(i) + ": ";
     if (!finite(v.position)) throw LoadError(file, which + "position is not finite");
     if (!finite(v.normal) || std::abs(glm::length(v.normal) - 1.0f) > 1e-3f)
       throw LoadError(file, which + "normal is not a unit vector");
     if (!finite(v.flux) || v.flux.r < 0.0f || v.flux.g < 0.0f || v.flux.b < 0.0f)
       throw LoadError(file, which + "flux is negative or not finite");
+    if (!finite(v.from)) throw LoadError(file, which + "path segment start is not finite");
+    if (i > 0 && v.path < vpls[i - 1].path)
+      throw LoadError(file, which + "path index " + std::to_string(v.path) +
+                                " is smaller than the previous VPL's " +
+                                std::to_string(vpls[i - 1].path) +
+                                " (a path's VPLs must be consecutive, paths in order)");
   }
   return vpls;
 }

@@ -5,13 +5,17 @@
 //   0       char[8]     magic "BNCVPLS\0"
 //   8       u32         version (= kVplFormatVersion)
 //   12      u32         count N
-//   16      N × 36      per VPL, 9 × f32: position x y z (m) | normal x y z (unit) |
-//                       flux Φ r g b (W per channel, albedo of its surface included)
-//   16+36N  —           end of file (nothing may follow)
+//   16      N × 52      per VPL, 12 × f32 then u32: position x y z (m) | normal x y z (unit) |
+//                       flux Φ r g b (W per channel, albedo of its surface included) |
+//                       from x y z (m, where its incoming light-path segment started) |
+//                       path index (u32; a path's VPLs are consecutive, in bounce order)
+//   16+52N  —           end of file (nothing may follow)
 //
+// Version 2 added `from` and the path index (bake/vpl.h); version 1 files are refused ("rebake").
 // The reader refuses (LoadError naming the file and the reason) a wrong magic or version, a
-// size that disagrees with N, a non-finite position, a normal not of unit length (±1e-3), and a
-// flux that is negative or not finite.
+// size that disagrees with N, a non-finite position or `from`, a normal not of unit length
+// (±1e-3), a flux that is negative or not finite, and a path index smaller than the previous
+// VPL's.
 #pragma once
 
 #include <filesystem>
@@ -22,7 +26,7 @@
 
 namespace bounce {
 
-inline constexpr uint32_t kVplFormatVersion = 1;
+inline constexpr uint32_t kVplFormatVersion = 2;
 inline constexpr char kVplFileName[] = "vpls";
 
 std::vector<unsigned char> encodeVpls(std::span<const Vpl> vpls);

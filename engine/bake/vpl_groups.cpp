@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "bake/vpl_reduce.h"
 
@@ -20,27 +21,28 @@ float radiusAround(std::span<const Vpl> lights, uint32_t first, uint32_t count, 
   return radius;
 }
 
-// Splits lights[first, first + count) at the median of its box's longest axis, recursively,
-// appending the nodes (a parent before its children); returns the subtree's root.
-int32_t buildTree(std::vector<Vpl>& lights, uint32_t first, uint32_t count,
-                  std::vector<VplNode>& nodes) {
+// Splits order[first, first + count) (indices into `vpls`) at the median of its box's longest
+// axis, recursively, appending the nodes (a parent before its children); returns the subtree's
+// root.
+int32_t buildTree(std::span<const Vpl> vpls, std::vector<uint32_t>& order, uint32_t first,
+                  uint32_t count, std::vector<VplNode>& nodes) {
   const auto index = static_cast<int32_t>(nodes.size());
   nodes.push_back({first, count, first, 0.0f, -1, -1});
   if (count <= kVplLeafSize) return index;
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (uint32_t i = first; i < first + count; ++i) {
-    lo = glm::min(lo, lights[i].position);
-    hi = glm::max(hi, lights[i].position);
+    lo = glm::min(lo, vpls[order[i]].position);
+    hi = glm::max(hi, vpls[order[i]].position);
   }
   const glm::vec3 e = hi - lo;
   const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
   const uint32_t half = count / 2;
-  const auto begin = lights.begin() + first;
-  std::nth_element(begin, begin + half, begin + count, [axis](const Vpl& a, const Vpl& b) {
-    return a.position[axis] < b.position[axis];
+  const auto begin = order.begin() + first;
+  std::nth_element(begin, begin + half, begin + count, [&](uint32_t a, uint32_t b) {
+    return vpls[a].position[axis] < vpls[b].position[axis];
   });
-  const int32_t left = buildTree(lights, first, half, nodes);
-  const int32_t right = buildTree(lights, first + half, count - half, nodes);
+  const int32_t left = buildTree(vpls, order, first, half, nodes);
+  const int32_t right = buildTree(vpls, order, first + half, count - half, nodes);
   nodes[static_cast<std::size_t>(index)].left = left;
   nodes[static_cast<std::size_t>(index)].right = right;
   return index;
@@ -51,16 +53,18 @@ int32_t buildTree(std::vector<Vpl>& lights, uint32_t first, uint32_t count,
 VplGroups::VplGroups(std::span<const Vpl> vpls, std::size_t k) : vplCount_(vpls.size()) {
   if (k == 0) throw std::invalid_argument("VplGroups: k = 0 groups");
   const std::vector<std::vector<uint32_t>> clusters = groupVpls(vpls, std::min(k, kMaxVplGroups));
-  lights_.reserve(vpls.size() + clusters.size());
+  order_.reserve(vpls.size());
   for (const std::vector<uint32_t>& members : clusters) {
     VplGroup group;
-    group.first = static_cast<uint32_t>(lights_.size());
+    group.first = static_cast<uint32_t>(order_.size());
     group.count = static_cast<uint32_t>(members.size());
-    for (const uint32_t i : members) lights_.push_back(vpls[i]);
+    order_.insert(order_.end(), members.begin(), members.end());
     groups_.push_back(group);
   }
   for (VplGroup& group : groups_)
-    group.root = static_cast<uint32_t>(buildTree(lights_, group.first, group.count, nodes_));
+    group.root = static_cast<uint32_t>(buildTree(vpls, order_, group.first, group.count, nodes_));
+  lights_.reserve(vpls.size() + clusters.size());
+  for (const uint32_t i : order_) lights_.push_back(vpls[i]);
   // Representatives: the groups' first (N + g), then every other node of more than one VPL.
   std::vector<uint32_t> members;
   const auto represent = [&](VplNode& node) {
@@ -94,6 +98,26 @@ VplGroups::VplGroups(std::span<const Vpl> vpls, std::size_t k) : vplCount_(vpls.
   }
   for (const VplNode& node : nodes_)
     if (node.count > 1) lightGroup_[node.representative] = lightGroup_[node.first];
+}
+
+std::vector<glm::vec3> VplGroups::lightFluxes(std::span<const uint8_t> alive) const {
+  if (alive.size() != vplCount_)
+    throw std::invalid_argument("VplGroups::lightFluxes: " + std::to_string(alive.size()) +
+                                " flags for " + std::to_string(vplCount_) + " VPLs");
+  std::vector<glm::vec3> flux(lights_.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i < vplCount_; ++i)
+    if (alive[order_[i]] != 0) flux[i] = lights_[i].flux;
+  // A representative's flux is Σ over its members (mergeVpls), now of the alive ones.
+  const auto sumOf = [&](uint32_t first, uint32_t count) {
+    glm::dvec3 sum(0.0);
+    for (uint32_t i = first; i < first + count; ++i) sum += glm::dvec3(flux[i]);
+    return glm::vec3(sum);
+  };
+  for (const VplNode& node : nodes_)
+    if (node.count > 1) flux[node.representative] = sumOf(node.first, node.count);
+  for (std::size_t g = 0; g < groups_.size(); ++g)  // lone VPLs' group slots N + g
+    flux[vplCount_ + g] = sumOf(groups_[g].first, groups_[g].count);
+  return flux;
 }
 
 std::size_t VplLightCuts::cellOf(glm::vec3 p) const {

@@ -77,9 +77,16 @@ class VplGroups {
   uint32_t groupOf(std::size_t light) const { return lightGroup_[light]; }
   std::size_t vplCount() const { return vplCount_; }
   std::size_t groupCount() const { return groups_.size(); }
+  // vpls()[i] is input VPL vplOrder()[i].
+  std::span<const uint32_t> vplOrder() const { return order_; }
+  // The flux (W per channel) of every light-table entry when only the input VPLs with
+  // alive[i] ≠ 0 (in input order, bake/vpl_occlusion.h) shine: a VPL's own flux or 0, a
+  // representative's the sum over its alive members. Positions and normals stay as built.
+  std::vector<glm::vec3> lightFluxes(std::span<const uint8_t> alive) const;
 
  private:
   std::vector<Vpl> lights_;
+  std::vector<uint32_t> order_;
   std::vector<uint32_t> lightGroup_;
   std::vector<VplGroup> groups_;
   std::vector<VplNode> nodes_;

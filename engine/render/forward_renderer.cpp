@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bake/vpl_clamp.h"
+#include "bake/vpl_occlusion.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
@@ -70,6 +71,25 @@ ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
 
 void ForwardRenderer::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   passes_->scene.setInstanceTransform(index, transform);
+  const std::span<const GpuInstance> instances = passes_->scene.instances();
+  if (index < instances.size() && instances[index].mobility == Mobility::Dynamic)
+    updateVplOcclusion();
+}
+
+void ForwardRenderer::updateVplOcclusion() {
+  Passes& p = *passes_;
+  if (!p.vpls.attached() || vpls_.empty()) return;
+  // The dynamic instances at their current places block the bake's light paths
+  // (bake/vpl_occlusion.h): the VPLs past a blocked segment go dark.
+  std::vector<VplOccluder> occluders;
+  const std::span<const GpuInstance> instances = p.scene.instances();
+  for (std::size_t i = 0; i < instances.size() && i < scene_.instances.size(); ++i)
+    if (instances[i].mobility == Mobility::Dynamic &&
+        scene_.instances[i].mesh < scene_.meshes.size())
+      occluders.push_back(
+          makeVplOccluder(scene_.meshes[scene_.instances[i].mesh], instances[i].model));
+  p.vpls.setAlive(vplAliveMask(vpls_, occluders));
+  p.lightTable.setVpls(p.vpls.lightTexels(), p.vpls.cutTexels());
 }
 
 void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv) {
@@ -93,7 +113,8 @@ void ForwardRenderer::setBake(const Bake& bake) {
         statics.add(instance.worldBox.hi);
       }
     p.vpls.attach(*bake.vpls, r, statics.empty() ? p.scene.bounds() : statics, settings_.vpls);
-    p.lightTable.setVpls(p.vpls.lightTexels(), p.vpls.cutTexels());
+    vpls_ = *bake.vpls;
+    updateVplOcclusion();  // also hands the VPL sections to the light table
   }
 }
 

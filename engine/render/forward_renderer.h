@@ -63,7 +63,9 @@ class ForwardRenderer {
   // Renders offscreen at width x height and reads the radiance back, rows top to bottom.
   Image renderImage(const Camera& camera, int width, int height);
 
-  // Moves instance `index` (object → world) without re-uploading its mesh.
+  // Moves instance `index` (object → world) without re-uploading its mesh. Moving a dynamic
+  // instance with VPLs attached recomputes which VPLs its triangles cut off
+  // (bake/vpl_occlusion.h) and re-uploads their flux.
   void setInstanceTransform(std::size_t index, const glm::mat4& transform);
   // Per-corner lightmap UVs of instance `index` (vertex attribute 3, gl/vertex_attributes.h);
   // empty removes them.
@@ -104,7 +106,11 @@ class ForwardRenderer {
 
  private:
   struct Passes;
+  // Recomputes the VPLs the dynamic instances block at their current transforms.
+  void updateVplOcclusion();
+
   RendererSettings settings_;
+  std::vector<Vpl> vpls_;  // the bake's VPLs in file order (path order), for updateVplOcclusion
   const Scene& scene_;
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;

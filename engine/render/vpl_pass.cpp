@@ -25,14 +25,15 @@ std::vector<glm::vec4> cutSection(const VplLightCuts& cuts) {
   return texels;
 }
 
-std::vector<glm::vec4> lightSection(const VplGroups& groups) {
+// `flux`: per light-table entry, W per channel (VplGroups::lightFluxes).
+std::vector<glm::vec4> lightSection(const VplGroups& groups, std::span<const glm::vec3> flux) {
   std::vector<glm::vec4> texels;
   const std::span<const Vpl> lights = groups.lights();
   texels.reserve(3 * lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i) {
     texels.emplace_back(lights[i].position, static_cast<float>(groups.groupOf(i)));
     texels.emplace_back(lights[i].normal, 0.0f);
-    texels.emplace_back(lights[i].flux, 0.0f);
+    texels.emplace_back(flux[i], 0.0f);
   }
   return texels;
 }
@@ -79,7 +80,7 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
       cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
   }
   clampDistance_ = clampDistance;
-  lightTexels_ = lightSection(groups_);
+  setAlive(std::vector<uint8_t>(groups_.vplCount(), 1));
   cutTexels_ = cutSection(cuts_);
   if (shadows_) {
     // A group's cube sits at its member nearest the centroid: a centroid can lie inside an
@@ -93,6 +94,10 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
     shadows_->setRepresentatives(origins);
   }
   attached_ = true;
+}
+
+void VplPass::setAlive(std::span<const uint8_t> alive) {
+  lightTexels_ = lightSection(groups_, groups_.lightFluxes(alive));
 }
 
 ShadowDrawCount VplPass::renderShadows(const GpuScene& scene) {

@@ -47,6 +47,10 @@ class VplPass {
   void attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
               const VplRenderSettings& settings);
   bool attached() const { return attached_; }
+  // Recomputes the light section's flux with only the VPLs with alive[i] ≠ 0 (input order of
+  // attach; bake/vpl_occlusion.h) shining; groups, cuts and positions are kept. The caller
+  // hands lightTexels() to the light table again.
+  void setAlive(std::span<const uint8_t> alive);
 
   // Per frame, before the lit pass: redraws the groups' shadow cubes when something moved.
   ShadowDrawCount renderShadows(const GpuScene& scene);

@@ -23,9 +23,13 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<Vpl> someVpls() {
-  return {{{1.5f, -2.0f, 0.25f}, {0, 0, 1}, {0.5f, 0.25f, 1e-30f}},
-          {{-1e6f, 3.0e-7f, 7.0f}, {0.6f, 0.0f, -0.8f}, {3.0e38f, 0.0f, 1.17549435e-38f}},
-          {{0, 0, 0}, {0, -1, 0}, {1, 2, 3}}};
+  return {{{1.5f, -2.0f, 0.25f}, {0, 0, 1}, {0.5f, 0.25f, 1e-30f}, {0.0f, 9.0f, -1.0f}, 0u},
+          {{-1e6f, 3.0e-7f, 7.0f},
+           {0.6f, 0.0f, -0.8f},
+           {3.0e38f, 0.0f, 1.17549435e-38f},
+           {1.5f, -2.0f, 0.25f},
+           0u},
+          {{0, 0, 0}, {0, -1, 0}, {1, 2, 3}, {-4.0f, 1e7f, 2.5f}, 4000000000u}};
 }
 
 fs::path freshDir(const std::string& name) {
@@ -53,15 +57,20 @@ std::string decodeError(const std::vector<unsigned char>& bytes) {
 TEST(VplFile, BytesFollowTheDocumentedLayout) {
   const std::vector<Vpl> vpls = someVpls();
   const std::vector<unsigned char> b = encodeVpls(vpls);
-  ASSERT_EQ(b.size(), 16u + 36u * vpls.size());
+  ASSERT_EQ(b.size(), 16u + 52u * vpls.size());
   EXPECT_EQ(std::memcmp(b.data(), "BNCVPLS\0", 8), 0);
-  EXPECT_EQ(u32At(b, 8), 1u);
+  EXPECT_EQ(u32At(b, 8), 2u);
   EXPECT_EQ(u32At(b, 12), 3u);
-  // Second VPL: position at 16 + 36, normal 12 bytes on, flux 24 bytes on; little-endian f32.
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52)), -1e6f);
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 12)), 0.6f);
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 20)), -0.8f);
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 52 + 24)), 3.0e38f);
+  // Second VPL: position at 16 + 52, normal 12 bytes on, flux 24, from 36, path 48;
+  // little-endian f32 and u32.
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68)), -1e6f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 12)), 0.6f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 20)), -0.8f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 24)), 3.0e38f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 36)), 1.5f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 44)), 0.25f);
+  EXPECT_EQ(u32At(b, 68 + 48), 0u);
+  EXPECT_EQ(u32At(b, 120 + 48), 4000000000u);
 }
 
 TEST(VplFile, RoundTripIsBitExact) {
@@ -74,6 +83,8 @@ TEST(VplFile, RoundTripIsBitExact) {
       EXPECT_EQ(back[i].position, vpls[i].position);
       EXPECT_EQ(back[i].normal, vpls[i].normal);
       EXPECT_EQ(back[i].flux, vpls[i].flux);
+      EXPECT_EQ(back[i].from, vpls[i].from);
+      EXPECT_EQ(back[i].path, vpls[i].path);
     }
   }
 }
@@ -97,14 +108,20 @@ TEST(VplFile, DamagedFilesAreRefusedWithTheFileAndTheReason) {
   } cases[] = {
       {"truncated", decodeError({good.begin(), good.begin() + 10})},
       {"bad magic", damaged([](auto& b) { b[3] = 'X'; })},
-      {"format version 2", damaged([](auto& b) { b[8] = 2; })},
-      {"4 VPLs announced need 160 bytes, the file has 124", damaged([](auto& b) { b[12] = 4; })},
-      {"the file has 125", damaged([](auto& b) { b.push_back(0); })},
-      {"VPL 1: position is not finite", damaged([&](auto& b) { putF32(b, 52 + 4, nan); })},
+      {"format version 1, this build reads version 2: rebake", damaged([](auto& b) { b[8] = 1; })},
+      {"4 VPLs announced need 224 bytes, the file has 172", damaged([](auto& b) { b[12] = 4; })},
+      {"the file has 173", damaged([](auto& b) { b.push_back(0); })},
+      {"VPL 1: position is not finite", damaged([&](auto& b) { putF32(b, 68 + 4, nan); })},
       {"VPL 0: normal is not a unit vector", damaged([&](auto& b) { putF32(b, 16 + 20, 0.9f); })},
-      {"VPL 2: flux is negative", damaged([&](auto& b) { putF32(b, 88 + 28, -1.0f); })},
+      {"VPL 2: flux is negative", damaged([&](auto& b) { putF32(b, 120 + 28, -1.0f); })},
       {"VPL 2: flux is negative or not finite",
-       damaged([&](auto& b) { putF32(b, 88 + 32, std::numeric_limits<float>::infinity()); })},
+       damaged([&](auto& b) { putF32(b, 120 + 32, std::numeric_limits<float>::infinity()); })},
+      {"VPL 1: path segment start is not finite",
+       damaged([&](auto& b) { putF32(b, 68 + 40, nan); })},
+      {"VPL 1: path index 7 is smaller than the previous VPL's 9", damaged([&](auto& b) {
+         b[16 + 48] = 9;
+         b[68 + 48] = 7;
+       })},
   };
   for (const auto& c : cases) {
     EXPECT_NE(c.message.find("dir/vpls: "), std::string::npos) << c.message;

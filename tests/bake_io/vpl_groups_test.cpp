@@ -192,5 +192,41 @@ TEST(VplGroups, NoCullingIsTheFullSum) {
   EXPECT_LT(relativeError(cut.irradiance, full.irradiance), 1e-12);
 }
 
+// VplGroups::lightFluxes (the renderer's flux upload once dynamic objects cut paths): every VPL
+// keeps its flux or gets 0 by its input index (through the grouping's reordering), and every
+// representative carries exactly the sum of its alive members; all alive is the built table.
+TEST(VplGroups, LightFluxesSumTheAliveMembersThroughTheReordering) {
+  const Room room = makeRoom(700, 5);
+  const VplGroups groups(room.vpls, 16);
+  const std::vector<uint8_t> all(room.vpls.size(), 1);
+  const std::vector<glm::vec3> full = groups.lightFluxes(all);
+  for (std::size_t i = 0; i < full.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(full[i][c], groups.lights()[i].flux[c], 1e-5f * groups.lights()[i].flux[c]);
+  std::vector<uint8_t> alive(room.vpls.size());
+  for (std::size_t i = 0; i < alive.size(); ++i) alive[i] = i % 3 == 0 ? 0 : 1;
+  const std::vector<glm::vec3> flux = groups.lightFluxes(alive);
+  for (std::size_t i = 0; i < groups.vplCount(); ++i) {
+    const uint32_t input = groups.vplOrder()[i];
+    EXPECT_EQ(groups.vpls()[i].position, room.vpls[input].position);
+    EXPECT_EQ(flux[i], alive[input] != 0 ? room.vpls[input].flux : glm::vec3(0.0f));
+  }
+  for (const VplNode& node : groups.nodes()) {
+    if (node.count <= 1) continue;
+    glm::dvec3 sum(0.0);
+    for (uint32_t i = node.first; i < node.first + node.count; ++i)
+      if (alive[groups.vplOrder()[i]] != 0) sum += glm::dvec3(room.vpls[groups.vplOrder()[i]].flux);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(flux[node.representative][c], sum[c], 1e-5 * sum[c] + 1e-12);
+  }
+  for (std::size_t g = 0; g < groups.groupCount(); ++g) {
+    glm::dvec3 sum(0.0);
+    const VplGroup& group = groups.groups()[g];
+    for (uint32_t i = group.first; i < group.first + group.count; ++i) sum += glm::dvec3(flux[i]);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(flux[groups.vplCount() + g][c], sum[c], 1e-5 * sum[c] + 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace bounce

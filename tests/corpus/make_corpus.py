@@ -579,6 +579,13 @@ if os.path.isdir(VALID):
     bake_case("vpls_normal_long", "error", "normal is not a unit vector", vpls=vpls_with(28, "<3f", 0.0, 2.0, 0.0))
     bake_case("vpls_flux_negative", "error", "flux is negative or not finite", vpls=vpls_with(40, "<f", -1.0))
     bake_case("vpls_cut", "error", "vpls: truncated", vpls=vpls[:10])
+    # Version 2 (per VPL 52 bytes: ... flux at 40, from at 52, path index at 64).
+    bake_case("vpls_version_1", "error", "format version 1, this build reads version 2: rebake",
+              vpls=vpls_with(8, "<I", 1))
+    bake_case("vpls_from_nan", "error", "path segment start is not finite",
+              vpls=vpls_with(56, "<f", float("nan")))
+    bake_case("vpls_path_decreasing", "error", "is smaller than the previous VPL's",
+              vpls=vpls_with(64, "<I", 0xFFFFFFFF))
     # Seeds of fuzz_bake (tests/fuzz/fuzz_bake.cpp): a byte picking the file, then its content.
     for i, f in enumerate(("bake.json", "layout.bin", "lightmap.exr", "vpls")):
         write("bake_fuzz_seeds/valid_%s" % f.replace(".", "_"), bytes([i]) + bake_file(f), None, None)

@@ -70,7 +70,12 @@ void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
         if (!std::isfinite(v.position[k]) || !std::isfinite(v.flux[k]) || v.flux[k] < 0.0f)
           finding("VPL with a non-finite position or a negative/non-finite flux");
       if (std::abs(glm::length(v.normal) - 1.0f) > 1e-3f) finding("VPL normal not unit");
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(v.from[k])) finding("VPL with a non-finite path segment start");
     }
+  if (bake.vpls)
+    for (std::size_t i = 1; i < bake.vpls->size(); ++i)
+      if ((*bake.vpls)[i].path < (*bake.vpls)[i - 1].path) finding("VPL path indices decrease");
 }
 
 }  // namespace

@@ -380,6 +380,10 @@ TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
                   -0.07f + 0.02f * static_cast<float>(i / 8)};
     v.normal = {0.0f, -1.0f, 0.0f};
     v.flux = glm::vec3(1e-3f);
+    // Each VPL its own path, arriving from above the ceiling patch: the box cuts none of them
+    // (bake/vpl_occlusion.h), so only the VPL shadow maps darken the floor.
+    v.from = v.position + glm::vec3(0.0f, 0.5f, 0.0f);
+    v.path = static_cast<uint32_t>(i);
     vpls.push_back(v);
   }
   nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
@@ -422,6 +426,74 @@ TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
   for (std::size_t i = 0; i < back.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
       ASSERT_EQ(back.pixels[i][c], shadowed.pixels[i][c]) << "pixel " << i;
+}
+
+}  // namespace
+}  // namespace bounce::test
+
+namespace bounce::test {
+namespace {
+
+// The light paths the dynamic box cuts (bake/vpl_occlusion.h), through the renderer: VPLs on a
+// ceiling patch whose incoming segments start at the origin, under the box, so that the box
+// blocks them. Without VPL shadows the frame is darker with the box in place; moved away
+// (setInstanceTransform), it equals the frame of a renderer built with the box already away;
+// moved back, the first frame returns exactly.
+TEST(VplShadow, RendererCutsTheVplPathsADynamicObjectBlocksWhereverItIsMoved) {
+  testContext();
+  Scene scene;
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, grey("floor"));
+  addBox(scene, {0.0f, 0.15f, -0.1f}, {0.2f, 0.2f, 0.1f}, grey("box"));
+  const std::size_t box = scene.instances.size() - 1;
+  scene.instances[box].mobility = Mobility::Dynamic;
+  Bake bake;
+  bake.layout.width = bake.layout.height = 1;
+  bake.layout.texelSize = 1.0f;
+  bake.irradiance = Image(1, 1);
+  std::vector<Vpl> vpls;
+  for (int i = 0; i < 64; ++i) {
+    Vpl v;
+    v.position = {0.2f + 0.02f * static_cast<float>(i % 8), 0.4f,
+                  -0.07f + 0.02f * static_cast<float>(i / 8)};
+    v.normal = {0.0f, -1.0f, 0.0f};
+    v.flux = glm::vec3(1e-3f);
+    v.from = glm::vec3(0.0f, 0.01f, -0.1f);
+    v.path = static_cast<uint32_t>(i);
+    vpls.push_back(v);
+  }
+  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
+  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", 0.02f}};
+  bake.manifestJson = manifest.dump();
+  bake.vpls = vpls;
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  settings.vpls.shadows.enabled = false;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+  const glm::mat4 away = glm::translate(glm::mat4(1.0f), glm::vec3(5.0f, 0.0f, 0.0f));
+  Scene movedScene = scene;
+  movedScene.instances[box].transform = away;
+  ForwardRenderer moved(movedScene, gl::shaderDirectory(), settings, &bake);
+  const Camera camera = downCamera(1.0f);
+  constexpr int kSize = 32;
+  const auto total = [](const Image& image) {
+    double sum = 0.0;
+    for (const glm::vec3& p : image.pixels) sum += static_cast<double>(p.g);
+    return sum;
+  };
+  const Image cut = renderer.renderImage(camera, kSize, kSize);
+  const Image open = moved.renderImage(camera, kSize, kSize);
+  EXPECT_LT(total(cut), 0.5 * total(open)) << "the box cut no VPL path";
+
+  renderer.setInstanceTransform(box, away);
+  const Image movedAway = renderer.renderImage(camera, kSize, kSize);
+  for (std::size_t i = 0; i < movedAway.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(movedAway.pixels[i][c], open.pixels[i][c], 1e-5f * open.pixels[i][c] + 1e-9f)
+          << "pixel " << i << ": the box left, its cut stayed";
+  renderer.setInstanceTransform(box, glm::mat4(1.0f));
+  const Image back = renderer.renderImage(camera, kSize, kSize);
+  for (std::size_t i = 0; i < back.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(back.pixels[i][c], cut.pixels[i][c]) << "pixel " << i;
 }
 
 }  // namespace
