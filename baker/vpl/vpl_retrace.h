@@ -10,6 +10,7 @@
 // settings carry (render/forward_renderer.h, RendererSettings::vplTracer), wired by the apps.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <span>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bake/bake_folder.h"
 #include "bake/vpl.h"
 #include "scene/scene.h"
 #include "vpl/vpl_generate.h"
@@ -24,8 +26,11 @@
 namespace bounce {
 
 // The count rule a bake's VPLs were traced with, from its bake.json ("vpls": cap, errorTarget;
-// "settings": seed). A manifest without "vpls" gives VplSettings{} (bounce-bake's defaults).
-VplSettings vplSettingsOfBake(const std::string& manifestJson);
+// "settings": seed; a manifest without them gives VplSettings{}, bounce-bake's defaults), for a
+// bake that holds `bakeVplCount` VPLs. The cap is held to 2·bakeVplCount + kVplBatch: a re-trace
+// makes about the bake's count (more only where paths now also bounce off the dynamic objects),
+// and a tampered cap must not make a move trace billions of paths.
+VplSettings vplSettingsOfBake(const std::string& manifestJson, std::size_t bakeVplCount);
 
 class PlacedVplTracer {
  public:
@@ -43,9 +48,9 @@ class PlacedVplTracer {
   VplSettings settings_;
 };
 
-// A PlacedVplTracer for `scene` with the count rule of the bake whose bake.json is
-// `manifestJson`, as the function RendererSettings::vplTracer takes.
-std::function<std::vector<Vpl>(std::span<const glm::mat4>)> placedVplTracer(
-    const Scene& scene, const std::string& manifestJson);
+// A PlacedVplTracer for `scene` with the count rule of `bake` (read for this scene), as the
+// function RendererSettings::vplTracer takes.
+std::function<std::vector<Vpl>(std::span<const glm::mat4>)> placedVplTracer(const Scene& scene,
+                                                                            const Bake& bake);
 
 }  // namespace bounce

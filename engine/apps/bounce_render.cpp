@@ -101,7 +101,7 @@ int run(const Options& options) {
   }
   // The bake's count rule over the scene with its dynamic instances placed (--move).
   if (bake && bake->vpls && options.dynamicVpls == "retrace")
-    settings.vplTracer = bounce::placedVplTracer(scene, bake->manifestJson);
+    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
   if (settings.mode == bounce::RenderMode::Lightmap)
     std::fprintf(stderr,
                  "bounce-render: mode lightmap: pixels are E/pi W/(sr·m²), the radiance of a "

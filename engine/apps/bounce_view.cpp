@@ -69,7 +69,7 @@ bounce::RendererSettings rendererSettings(const Options& options, const bounce::
   bounce::RendererSettings settings;
   settings.mode = mode;
   if (bake && bake->vpls && options.dynamicVpls == "retrace")
-    settings.vplTracer = bounce::placedVplTracer(scene, bake->manifestJson);
+    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
   return settings;
 }
 
