@@ -17,9 +17,11 @@
 #include "render/vpl_shadow_maps.h"
 #include "render/vpl_visibility_probe.h"
 
+#include "bake/vpl_groups.h"
 #include "lightmap_scenes.h"
 #include "scene/load.h"
 #include "shadow_scenes.h"
+#include "trace/camera_render.h"
 #include "vpl/vpl_gather.h"
 #include "vpl/vpl_generate.h"
 #include "vpl_group_visibility.h"
@@ -494,6 +496,125 @@ TEST(VplShadow, RendererCutsTheVplPathsADynamicObjectBlocksWhereverItIsMoved) {
   const Image back = renderer.renderImage(camera, kSize, kSize);
   for (std::size_t i = 0; i < back.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) ASSERT_EQ(back.pixels[i][c], cut.pixels[i][c]) << "pixel " << i;
+}
+
+}  // namespace
+}  // namespace bounce::test
+
+namespace bounce::test {
+namespace {
+
+// One VPL group whose members see a dynamic sphere differently (render/vpl_shadow_maps.h): 64
+// VPLs on a ceiling left of a hanging partition (A) and 64 right of it (B), facing down, in a
+// single group (RendererSettings::vpls.groups = 1). The sphere hangs right of the partition, so
+// that every segment from A to it crosses the partition 10 cm or more inside its edge and no
+// segment from B comes near it: exactly, A's light never reaches the sphere and all of B's
+// does. The renderer (vpl mode, no culling: every VPL evaluated) with its shadow cubes must give
+// the sphere what the CPU gather with a ray per VPL gives (baker/vpl/vpl_gather.h). One cube
+// for the group sits at a member next to the partition, on one side: it either lets A through
+// or hides B. The split into parts along the members' principal axis puts A's and B's cubes on
+// their own sides.
+//
+// Compared: sphere pixels whose point faces every cube origin on B's side by more than the
+// maps' uncertainty (3 texels at 64², the margin of `classify`), so the sphere's own far side
+// is not what a cube sees there (a convex receiver never occludes a VPL it faces, but a cube
+// at another point than the VPL can see its back). There A's cubes read 0 (deep umbra, at least
+// 10 cm of partition) and B's ≥ 0.99 (the lit bound of the tests above), so per pixel
+// |L_maps − L_rays| ≤ 0.01·L_noV plus the float rounding of VplRender (1e-4 relative).
+TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
+  testContext();
+  Scene scene;
+  addBox(scene, {-0.01f, 0.3f, -0.6f}, {0.01f, 1.05f, 0.6f}, grey("partition"));
+  Material white = grey("sphere");
+  white.albedo = glm::vec3(0.8f);
+  const glm::vec3 centre(0.3f, 0.2f, 0.0f);
+  const uint32_t sphere =
+      addInstance(scene, uvSphere(0.1f, 24, 48), white, glm::translate(glm::mat4(1.0f), centre));
+  scene.instances[sphere].mobility = Mobility::Dynamic;
+  std::vector<Vpl> vpls;
+  for (int side = 0; side < 2; ++side)
+    for (int i = 0; i < 64; ++i) {
+      Vpl v;
+      const float x = 0.1f + 0.4f * static_cast<float>(i % 8) / 7.0f;
+      v.position = {side == 0 ? -x : x, 1.0f, -0.2f + 0.4f * static_cast<float>(i / 8) / 7.0f};
+      v.normal = {0.0f, -1.0f, 0.0f};
+      v.flux = side == 0 ? glm::vec3(2e-3f, 1e-3f, 5e-4f) : glm::vec3(5e-4f, 1e-3f, 2e-3f);
+      v.from = v.position + glm::vec3(0.0f, 0.5f, 0.0f);  // from above: the sphere cuts no path
+      v.path = static_cast<uint32_t>(vpls.size());
+      vpls.push_back(v);
+    }
+  Bake bake;
+  bake.layout.width = bake.layout.height = 1;
+  bake.layout.texelSize = 1.0f;
+  bake.irradiance = Image(1, 1);
+  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
+  constexpr float kClamp = 0.02f;  // m; every VPL is ≥ 0.6 m from the sphere
+  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", kClamp}};
+  bake.manifestJson = manifest.dump();
+  bake.vpls = vpls;
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  settings.vpls.groups = 1;
+  settings.vpls.culling = false;
+  ForwardRenderer on(scene, gl::shaderDirectory(), settings, &bake);
+  settings.vpls.shadows.enabled = false;
+  ForwardRenderer off(scene, gl::shaderDirectory(), settings, &bake);
+
+  Camera camera;
+  const glm::vec3 eye(0.3f, 0.5f, -0.6f);
+  camera.cameraToWorld = glm::inverse(glm::lookAt(eye, centre, glm::vec3(0, 1, 0)));
+  camera.yfov = 2.0f * std::asin(1.05f * 0.1f / glm::length(centre - eye));
+  constexpr int kSize = 24;
+  const Image withMaps = on.renderImage(camera, kSize, kSize);
+  const Image without = off.renderImage(camera, kSize, kSize);
+
+  const VplShadowCubes cubes = vplShadowCubes(VplGroups(vpls, 1), kVplShadowCubesPerGroup);
+  std::vector<glm::vec3> bOrigins;
+  for (const Vpl& o : cubes.origins)
+    if (o.position.x > 0.0f) bOrigins.push_back(o.position);
+  const WorldGeometry geometry = flatten(scene);
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  int compared = 0;
+  double sumRays = 0.0, sumNone = 0.0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const Ray ray = cameraRay(camera, kSize, kSize, static_cast<float>(x) + 0.5f,
+                                static_cast<float>(y) + 0.5f);
+      const Hit hit = kernel->intersect(ray);
+      if (!hit.valid() || geometry.triangleInstance[hit.triangle] != sphere) continue;
+      const glm::uvec3 t = geometry.triangles[hit.triangle];
+      const glm::vec3 p = ray.origin + hit.t * ray.direction;
+      const glm::vec3 n =
+          glm::normalize((1 - hit.u - hit.v) * geometry.normals[t.x] +
+                         hit.u * geometry.normals[t.y] + hit.v * geometry.normals[t.z]);
+      const glm::vec3 ng =
+          glm::normalize(glm::cross(geometry.positions[t.y] - geometry.positions[t.x],
+                                    geometry.positions[t.z] - geometry.positions[t.x]));
+      bool facing = true;
+      for (const glm::vec3 o : bOrigins)
+        facing = facing && glm::dot(ng, glm::normalize(o - p)) > std::sin(3.0f * 2.0f / 64.0f);
+      if (!facing) continue;
+      const std::size_t i = static_cast<std::size_t>(y) * kSize + x;
+      const glm::dvec3 rhoPi = glm::dvec3(white.albedo) / 3.14159265358979;
+      const glm::dvec3 rays =
+          rhoPi * gatherVplIrradiance(vpls, p, n, kernel.get(), kClamp).irradiance;
+      const glm::dvec3 none = rhoPi * gatherVplIrradiance(vpls, p, n, nullptr, kClamp).irradiance;
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(without.pixels[i][c], none[c], 1e-4 * none[c] + 1e-9)
+            << "no VPL shadows, pixel (" << x << ", " << y << ") channel " << c;
+        EXPECT_NEAR(withMaps.pixels[i][c], rays[c], 0.01 * none[c] + 1e-4 * rays[c] + 1e-9)
+            << "pixel (" << x << ", " << y << ") channel " << c << ": without visibility "
+            << none[c];
+      }
+      sumRays += rays.r + rays.g + rays.b, sumNone += none.r + none.g + none.b;
+      ++compared;
+    }
+  std::printf("%d sphere pixels compared; exact visibility keeps %.3f of the VPL light\n", compared,
+              sumRays / sumNone);
+  EXPECT_GE(compared, 100);
+  // A's light is a real part of the sphere's (the test would not see a cube that let it in).
+  EXPECT_LE(sumRays, 0.8 * sumNone);
+  EXPECT_GE(sumRays, 0.2 * sumNone);
 }
 
 }  // namespace
