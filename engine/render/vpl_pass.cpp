@@ -82,7 +82,7 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
       cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
   }
   clampDistance_ = clampDistance;
-  cubes_ = vplShadowCubes(groups_, kVplShadowCubesPerGroup);
+  cubes_ = vplShadowCubes(groups_, shadows_ ? shadows_->cubesPerGroup() : 1);
   setAlive(std::vector<uint8_t>(groups_.vplCount(), 1));
   cutTexels_ = cutSection(cuts_);
   // Each group's cubes sit at members of its parts: a centroid can lie inside an object

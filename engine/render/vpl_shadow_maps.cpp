@@ -131,6 +131,10 @@ VplShadowMaps::VplShadowMaps(const VplShadowSettings& settings,
   if (settings_.resolution <= 0)
     throw std::invalid_argument("VPL shadow map resolution " +
                                 std::to_string(settings_.resolution) + " (must be positive)");
+  const int perGroup = settings_.cubesPerGroup;
+  if (perGroup < 1 || perGroup > kVplShadowCubesPerGroup || (perGroup & (perGroup - 1)) != 0)
+    throw std::invalid_argument("VPL shadow cubes per group " + std::to_string(perGroup) +
+                                " (must be 1, 2 or 4)");
   maps_.emplace(settings_.resolution, 6);
 }
 
