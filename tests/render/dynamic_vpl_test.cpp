@@ -394,6 +394,9 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
     EXPECT_EQ(bakeSet.vpls.size(), baked.vpls->size());
     report("bake (4N), paths cut by the sphere", at,
            compare(gather(m, cut(bakeSet), nullptr, r), m.traced, m.stdError, m.pixels.keep));
+    // The same with a ray per VPL: what the renderer's VPL shadow cubes approach.
+    report("bake (4N), cut, exact visibility", at,
+           compare(gather(m, cut(bakeSet), kernel.get(), r), m.traced, m.stdError, m.pixels.keep));
     Scene withSphere = m.scene;
     for (Instance& instance : withSphere.instances) instance.mobility = Mobility::Static;
     const VplSet own = generateVpls(withSphere, geometry, *kernel, VplSettings{});
@@ -436,8 +439,10 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
 // blocks at its --move position (bake/vpl_occlusion.h: a blocked segment darkens its VPL and the
 // rest of its path). Before that cut: 45.1 / 27.0 / 30.9% (the VPLs under the sphere lit it
 // from below). The bake has 4N VPLs (kBakeVpls) so that VPL noise stays within the budget.
-// VPL shadow maps off: with the paths cut they only add the sphere's self-shadowing from the
-// group representatives (26.6 / 22.1 / 28.5% with them).
+// VPL shadow maps off: with them (4 cubes per VPL group) 13.2 / 16.9 / 22.6%, what exact
+// visibility gives the cut set (11.2 / 17.0 / 21.6%, VplErrorBudgetAgainstThePathTracer): the
+// blocks do occlude VPLs from the sphere, and without visibility that excess offsets part of the
+// missing light below. One cube per group gave 26.6 / 22.1 / 28.5% (docs/vpl.md "Visibility").
 // STILL DISABLED: 13.9 / 11.2 / 21.3% (bias −9 / −9 / −21%), matching the GL-free gather of the
 // cut set (12.4 / 11.0 / 19.2%) and VPLs traced with a black sphere (11.7 / 11.4 / 19.5%): what
 // is left is the light the sphere itself reflects (sphere → room → sphere), which VPLs traced
