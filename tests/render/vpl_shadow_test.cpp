@@ -166,6 +166,57 @@ TEST(VplShadow, SkipsOnlyTheFacesBehindTheVpl) {
   EXPECT_EQ(vplShadowFaces(glm::normalize(glm::vec3(1.0f, 1.0f, 1.0f))), 0b111111u);
 }
 
+// vplShadowCubes: every group splits into cubesPerGroup parts of its own members (halves of
+// equal count ±1 along the principal axis), each cube at one of its part's VPLs; a VPL reads its
+// part's cube, a tree node a cube of its own group; a group of one VPL keeps one cube.
+TEST(VplShadow, SplitsEachGroupIntoPartsOfItsOwnMembers) {
+  std::vector<Vpl> vpls;
+  for (int i = 0; i < 1000; ++i) {
+    Vpl v;
+    // Two slabs far apart (the groups) stretched along x (the parts' axis) and a lone VPL.
+    const float t = static_cast<float>(i % 500) / 500.0f;
+    v.position = {2.0f * t, i < 500 ? 0.0f : 5.0f, 0.1f * std::sin(37.0f * t)};
+    v.normal = {0.0f, 1.0f, 0.0f};
+    v.flux = glm::vec3(1e-3f * (1.0f + t));
+    vpls.push_back(v);
+  }
+  vpls.push_back(Vpl{{0.0f, -9.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, glm::vec3(1e-3f)});
+  const VplGroups groups(vpls, 3);
+  ASSERT_EQ(groups.groupCount(), 3u);
+  for (const int perGroup : {1, 2, 4}) {
+    const VplShadowCubes cubes = vplShadowCubes(groups, perGroup);
+    ASSERT_EQ(cubes.cubeOf.size(), groups.lights().size());
+    std::vector<std::vector<std::size_t>> members(cubes.origins.size());
+    for (std::size_t i = 0; i < groups.vplCount(); ++i) members[cubes.cubeOf[i]].push_back(i);
+    std::vector<std::size_t> cubesOfGroup(groups.groupCount(), 0);
+    for (std::size_t c = 0; c < cubes.origins.size(); ++c) {
+      ASSERT_FALSE(members[c].empty()) << "cube " << c << " reads no VPL";
+      const uint32_t g = groups.groupOf(members[c][0]);
+      ++cubesOfGroup[g];
+      bool originIsMember = false;
+      for (const std::size_t i : members[c]) {
+        EXPECT_EQ(groups.groupOf(i), g) << "a part spans two groups";
+        originIsMember = originIsMember || groups.lights()[i].position == cubes.origins[c].position;
+      }
+      EXPECT_TRUE(originIsMember) << "cube " << c << " sits at none of its VPLs";
+      const std::size_t expected = groups.groups()[g].count / static_cast<std::size_t>(perGroup);
+      if (groups.groups()[g].count > 1) {
+        EXPECT_LE(std::max(members[c].size(), expected) - std::min(members[c].size(), expected),
+                  1u);
+      }
+    }
+    for (std::size_t g = 0; g < groups.groupCount(); ++g)
+      EXPECT_EQ(cubesOfGroup[g], groups.groups()[g].count > 1 ? std::size_t(perGroup) : 1u);
+    for (std::size_t light = groups.vplCount(); light < groups.lights().size(); ++light)
+      EXPECT_EQ(groups.groupOf(members[cubes.cubeOf[light]][0]), groups.groupOf(light));
+  }
+  EXPECT_THROW(vplShadowCubes(groups, 3), std::invalid_argument);
+  testContext();
+  VplShadowSettings eight;
+  eight.cubesPerGroup = 8;
+  EXPECT_THROW(VplShadowMaps(eight, gl::shaderDirectory()), std::invalid_argument);
+}
+
 // The umbra of the box is 0 and every lit receiver (walls, ceiling, floor, the occluder's own
 // lit faces, grazing and head-on) is ≥ 0.99: right faces, no acne, no light leaks.
 TEST(VplShadow, UmbraAndLitSurfacesAgreeWithRayTracing) {
