@@ -3,22 +3,22 @@
 //   E(p) = Σ_i Φ_i/π · max(cosθ_y,0) · max(cosθ_x,0) / max(d², r²) · V_i(p)
 // with Φ_i the VPL's flux (W per channel, its surface's albedo included), θ_y the angle at the
 // VPL between its normal and p, θ_x the angle at p between n and the VPL, d the distance (m),
-// r the clamp distance (m) and V_i the visibility of the VPL's group (vplVisibility, defined in
-// vpl_shadows.glsl). A Lambertian surface of albedo ρ reflects ρ/π · E. The lights summed are
+// r the clamp distance (m) and V_i the visibility of the light's shadow cube (vplVisibility,
+// defined in vpl_shadows.glsl; one cube per part of a group, render/vpl_shadow_maps.h). A Lambertian surface of albedo ρ reflects ρ/π · E. The lights summed are
 // those of p's grid cell (bake/vpl_groups.h): the cell's cut of each group's VPL tree, near
 // leaves VPL by VPL, far nodes as their representative (flux-weighted centroid, Σ flux); every
-// light carries its group's index for the visibility. Must match vplCutIrradiance
+// light carries the index of its shadow cube for the visibility. Must match vplCutIrradiance
 // (engine/bake/vpl_groups.cpp).
 //
 // The light table's VPL sections (light_table.glsl, engine/render/light_table.h):
-//   lights: 3 texels per light: (position m, group), (unit normal, 0), (Φ W, 0); the N VPLs
+//   lights: 3 texels per light: (position m, cube), (unit normal, 0), (Φ W, 0); the N VPLs
 //           group by group, then the K group representatives, then the other tree nodes'
 //           representatives;
 //   cuts:   per cell (first entry, entry count), cells x fastest, then the entries, each a
 //           range of lights (first, count); entry indices count from the section's first texel.
 
-// Visibility (0..1) of VPL group `group` (0..K−1) from p; defined in vpl_shadows.glsl.
-float vplVisibility(int group, vec3 p, vec3 ng);
+// Visibility (0..1) of shadow cube `cube` from p; defined in vpl_shadows.glsl.
+float vplVisibility(int cube, vec3 p, vec3 ng);
 
 uniform vec3 uVplGridOrigin;   // m
 uniform vec3 uVplCellSize;     // m
@@ -44,7 +44,7 @@ void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 remo
       float cosX = dot(n, d) * invD;
       float cosY = -dot(vplTexel(int(i), 1).xyz, d) * invD;
       if (cosX <= 0.0 || cosY <= 0.0) continue;
-      float v = vplVisibility(int(positionGroup.w), p, ng);
+      float v = vplVisibility(int(positionGroup.w), p, ng);  // .w: the cube
       if (v <= 0.0) continue;
       // I(ω) = Φ/π · cosθ_y (W/sr); E = I · cosθ_x / max(d², r²).
       vec3 intensity = vplTexel(int(i), 2).rgb * (cosY / PI) * (cosX * v);

@@ -1,15 +1,16 @@
-// Visibility of VPL groups: one low-resolution depth cube per group representative, all in one
-// depth array, layer 6·group + face (engine/render/vpl_shadow_maps.h; docs/vpl.md
-// "Visibility"). Depth is distance from the map origin / far.
+// Visibility of VPLs: low-resolution depth cubes at chosen VPLs (up to 4 per VPL group, each for
+// a part of the group's members), all in one depth array, layer 6·cube + face
+// (engine/render/vpl_shadow_maps.h; docs/vpl.md "Visibility"). Depth is distance from the map
+// origin / far.
 #include "shadow_common.glsl"
 
-const int MAX_VPL_SHADOW_GROUPS = 64;  // kMaxVplShadowGroups
+const int MAX_VPL_SHADOW_CUBES = 256;  // kMaxVplShadowCubes
 
 uniform sampler2DArrayShadow uVplShadowMap;
 uniform int uVplShadowEnabled;  // 0: every group sees everything (visibility 1)
-uniform int uVplShadowCount;    // groups with a map
-// Per group: the map origin (metres): the group's VPL lifted along its normal.
-uniform vec3 uVplShadowOrigin[MAX_VPL_SHADOW_GROUPS];
+uniform int uVplShadowCount;    // cubes
+// Per cube: the map origin (metres): its VPL lifted along its normal.
+uniform vec3 uVplShadowOrigin[MAX_VPL_SHADOW_CUBES];
 // x: texel edge per metre of distance (2/resolution, at a face's centre), y: far (m),
 // z: origin offset (m), w: resolution (texels per face side)
 uniform vec4 uVplShadowParams;
@@ -40,11 +41,11 @@ vec3 vplShadowFaceUv(vec3 d) {
   return vec3(ndc * 0.5 + 0.5, float(face));
 }
 
-// 1 = group `group`'s cube sees p (receiver with unit geometric normal ng, facing the VPL),
-// 0 = occluded; the bilinear 2×2 comparison in between.
-float vplVisibility(int group, vec3 p, vec3 ng) {
-  if (uVplShadowEnabled == 0 || group < 0 || group >= uVplShadowCount) return 1.0;
-  vec3 origin = uVplShadowOrigin[group];
+// 1 = cube `cube` sees p (receiver with unit geometric normal ng, facing the VPL), 0 =
+// occluded; the bilinear 2×2 comparison in between.
+float vplVisibility(int cube, vec3 p, vec3 ng) {
+  if (uVplShadowEnabled == 0 || cube < 0 || cube >= uVplShadowCount) return 1.0;
+  vec3 origin = uVplShadowOrigin[cube];
   vec3 toVpl = origin - p;
   float distance = length(toVpl);
   if (distance <= 0.0) return 1.0;
@@ -53,6 +54,6 @@ float vplVisibility(int group, vec3 p, vec3 ng) {
   vec3 d = p + ng * bias.x - origin;
   float reference = (length(d) - bias.y) / uVplShadowParams.y;
   vec3 uvFace = vplShadowFaceUv(d);
-  float layer = float(group * 6) + uvFace.z;
+  float layer = float(cube * 6) + uvFace.z;
   return texture(uVplShadowMap, vec4(uvFace.xy, layer, reference));
 }

@@ -1,7 +1,7 @@
 #version 330 core
 // Reads vplVisibility at listed receivers, one per pixel of an N×1 target (tests and
 // debugging: tests/render/vpl_shadow_test.cpp). uReceivers: an N×2 data table, row 0 the
-// positions (metres), row 1 the unit geometric normals. Pixel x writes group uProbeGroup's
+// positions (metres), row 1 the unit geometric normals. Pixel x writes cube uProbeGroup's
 // visibility of receiver x into every channel.
 #include "vpl_shadows.glsl"
 

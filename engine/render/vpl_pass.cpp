@@ -25,13 +25,15 @@ std::vector<glm::vec4> cutSection(const VplLightCuts& cuts) {
   return texels;
 }
 
-// `flux`: per light-table entry, W per channel (VplGroups::lightFluxes).
-std::vector<glm::vec4> lightSection(const VplGroups& groups, std::span<const glm::vec3> flux) {
+// `flux`: per light-table entry, W per channel (VplGroups::lightFluxes); `cubeOf`: per entry,
+// the shadow cube whose visibility it takes (VplShadowCubes).
+std::vector<glm::vec4> lightSection(const VplGroups& groups, std::span<const glm::vec3> flux,
+                                    std::span<const uint32_t> cubeOf) {
   std::vector<glm::vec4> texels;
   const std::span<const Vpl> lights = groups.lights();
   texels.reserve(3 * lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    texels.emplace_back(lights[i].position, static_cast<float>(groups.groupOf(i)));
+    texels.emplace_back(lights[i].position, static_cast<float>(cubeOf[i]));
     texels.emplace_back(lights[i].normal, 0.0f);
     texels.emplace_back(flux[i], 0.0f);
   }
@@ -80,24 +82,17 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
       cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
   }
   clampDistance_ = clampDistance;
+  cubes_ = vplShadowCubes(groups_, shadows_ ? shadows_->cubesPerGroup() : 1);
   setAlive(std::vector<uint8_t>(groups_.vplCount(), 1));
   cutTexels_ = cutSection(cuts_);
-  if (shadows_) {
-    // A group's cube sits at its member nearest the centroid: a centroid can lie inside an
-    // object (docs/vpl.md "Visibility").
-    std::vector<Vpl> origins;
-    for (std::size_t g = 0; g < groups_.groupCount(); ++g) {
-      const VplGroup& group = groups_.groups()[g];
-      origins.push_back(nearestVpl(groups_.vpls().subspan(group.first, group.count),
-                                   groups_.representatives()[g].position));
-    }
-    shadows_->setRepresentatives(origins);
-  }
+  // Each group's cubes sit at members of its parts: a centroid can lie inside an object
+  // (docs/vpl.md "Visibility").
+  if (shadows_) shadows_->setRepresentatives(cubes_.origins);
   attached_ = true;
 }
 
 void VplPass::setAlive(std::span<const uint8_t> alive) {
-  lightTexels_ = lightSection(groups_, groups_.lightFluxes(alive));
+  lightTexels_ = lightSection(groups_, groups_.lightFluxes(alive), cubes_.cubeOf);
 }
 
 ShadowDrawCount VplPass::renderShadows(const GpuScene& scene) {

@@ -74,6 +74,7 @@ class VplPass {
  private:
   VplGroups groups_;
   VplLightCuts cuts_;
+  VplShadowCubes cubes_;  // where the shadow cubes sit, which one each light reads
   float clampDistance_ = 0.0f;
   std::vector<glm::vec4> lightTexels_;
   std::vector<glm::vec4> cutTexels_{glm::vec4(0.0f)};  // unattached: one cell, no entries

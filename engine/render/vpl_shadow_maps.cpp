@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +37,93 @@ uint32_t vplShadowFaces(glm::vec3 normal) {
   return faces;
 }
 
+namespace {
+
+// Halves `members` (indices into vpls) recursively as vplShadowCubes describes, appending one
+// cube per part to `cubes` and recording it in cubeOf.
+void splitIntoCubes(std::span<const Vpl> vpls, std::span<uint32_t> members, int parts,
+                    VplShadowCubes& cubes) {
+  if (parts <= 1 || members.size() < 2) {
+    glm::dvec3 weighted(0.0);
+    double weight = 0.0;
+    for (const uint32_t i : members) {
+      // Flux-weighted (luminance-free: the channel sum); a part of black VPLs by position.
+      const double w =
+          static_cast<double>(vpls[i].flux.r + vpls[i].flux.g + vpls[i].flux.b) + 1e-30;
+      weighted += w * glm::dvec3(vpls[i].position);
+      weight += w;
+    }
+    const glm::vec3 centroid(weighted / weight);
+    uint32_t best = members[0];
+    float bestDistance = std::numeric_limits<float>::infinity();
+    for (const uint32_t i : members) {
+      const glm::vec3 d = vpls[i].position - centroid;
+      if (glm::dot(d, d) < bestDistance) best = i, bestDistance = glm::dot(d, d);
+    }
+    const auto cube = static_cast<uint32_t>(cubes.origins.size());
+    cubes.origins.push_back(vpls[best]);
+    for (const uint32_t i : members) cubes.cubeOf[i] = cube;
+    return;
+  }
+  glm::dvec3 mean(0.0);
+  for (const uint32_t i : members) mean += glm::dvec3(vpls[i].position);
+  mean /= static_cast<double>(members.size());
+  glm::dmat3 covariance(0.0);
+  for (const uint32_t i : members) {
+    const glm::dvec3 d = glm::dvec3(vpls[i].position) - mean;
+    covariance += glm::outerProduct(d, d);
+  }
+  // Principal axis by power iteration, started on the coordinate axis of largest variance (never
+  // orthogonal to the answer when that axis dominates; deterministic).
+  glm::dvec3 axis(0.0);
+  int largest = 0;
+  for (int a = 1; a < 3; ++a)
+    if (covariance[a][a] > covariance[largest][largest]) largest = a;
+  axis[largest] = 1.0;
+  for (int k = 0; k < 32; ++k) {
+    const glm::dvec3 next = covariance * axis;
+    const double length = glm::length(next);
+    if (!(length > 0.0)) break;
+    axis = next / length;
+  }
+  std::stable_sort(members.begin(), members.end(), [&](uint32_t a, uint32_t b) {
+    return glm::dot(glm::dvec3(vpls[a].position), axis) <
+           glm::dot(glm::dvec3(vpls[b].position), axis);
+  });
+  const std::size_t half = members.size() / 2;
+  splitIntoCubes(vpls, members.first(half), parts / 2, cubes);
+  splitIntoCubes(vpls, members.subspan(half), parts / 2, cubes);
+}
+
+}  // namespace
+
+VplShadowCubes vplShadowCubes(const VplGroups& groups, int cubesPerGroup) {
+  if (cubesPerGroup < 1 || (cubesPerGroup & (cubesPerGroup - 1)) != 0)
+    throw std::invalid_argument(std::to_string(cubesPerGroup) +
+                                " VPL shadow cubes per group (must be a power of two)");
+  VplShadowCubes cubes;
+  const std::span<const Vpl> lights = groups.lights();
+  cubes.cubeOf.assign(lights.size(), 0);
+  std::vector<uint32_t> firstCube;  // per group
+  for (const VplGroup& group : groups.groups()) {
+    firstCube.push_back(static_cast<uint32_t>(cubes.origins.size()));
+    std::vector<uint32_t> members(group.count);
+    for (std::size_t i = 0; i < group.count; ++i)
+      members[i] = static_cast<uint32_t>(group.first + i);
+    splitIntoCubes(groups.vpls(), members, cubesPerGroup, cubes);
+  }
+  firstCube.push_back(static_cast<uint32_t>(cubes.origins.size()));
+  for (std::size_t light = groups.vplCount(); light < lights.size(); ++light) {
+    const uint32_t g = groups.groupOf(light);
+    float bestDistance = std::numeric_limits<float>::infinity();
+    for (uint32_t c = firstCube[g]; c < firstCube[g + 1]; ++c) {
+      const glm::vec3 d = cubes.origins[c].position - lights[light].position;
+      if (glm::dot(d, d) < bestDistance) cubes.cubeOf[light] = c, bestDistance = glm::dot(d, d);
+    }
+  }
+  return cubes;
+}
+
 VplShadowMaps::VplShadowMaps(const VplShadowSettings& settings,
                              const std::filesystem::path& shaderDir)
     : settings_(settings),
@@ -43,14 +131,18 @@ VplShadowMaps::VplShadowMaps(const VplShadowSettings& settings,
   if (settings_.resolution <= 0)
     throw std::invalid_argument("VPL shadow map resolution " +
                                 std::to_string(settings_.resolution) + " (must be positive)");
+  const int perGroup = settings_.cubesPerGroup;
+  if (perGroup < 1 || perGroup > kVplShadowCubesPerGroup || (perGroup & (perGroup - 1)) != 0)
+    throw std::invalid_argument("VPL shadow cubes per group " + std::to_string(perGroup) +
+                                " (must be 1, 2 or 4)");
   maps_.emplace(settings_.resolution, 6);
 }
 
 void VplShadowMaps::setRepresentatives(std::span<const Vpl> representatives) {
-  if (representatives.size() > static_cast<std::size_t>(kMaxVplShadowGroups))
+  if (representatives.size() > static_cast<std::size_t>(kMaxVplShadowCubes))
     throw std::invalid_argument(std::to_string(representatives.size()) +
-                                " VPL groups for shadow maps (at most " +
-                                std::to_string(kMaxVplShadowGroups) + ")");
+                                " VPL shadow cubes (at most " + std::to_string(kMaxVplShadowCubes) +
+                                ")");
   const bool same = std::equal(
       representatives.begin(), representatives.end(), representatives_.begin(),
       representatives_.end(),

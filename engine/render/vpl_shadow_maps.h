@@ -1,12 +1,17 @@
-// Visibility of virtual point lights (issue 8): one low-resolution depth cube per group
-// representative (engine/bake/vpl.h), so the VPL term can tell whether a group's light reaches
-// a point. shaders/vpl_shadows.glsl reads them: vplVisibility(group, p, ng), 1 = the
-// representative sees p, 0 = occluded, bilinear-filtered in between.
+// Visibility of virtual point lights (issue 8): low-resolution depth cubes at chosen VPLs, so
+// the VPL term can tell whether a VPL's light reaches a point. Each of the K ≤ 64 groups
+// (bake/vpl_groups.h) is split into up to kVplShadowCubesPerGroup parts along its members'
+// principal axes, and each part gets one cube, at its member nearest the part's centroid
+// (vplShadowCubes). Every light of the VPL term takes the visibility of one cube:
+// shaders/vpl_shadows.glsl's vplVisibility(cube, p, ng), 1 = the cube's origin sees p, 0 =
+// occluded, bilinear-filtered in between. A cube stands for its members' visibility; the
+// error is how differently they see a receiver (docs/vpl.md "Visibility": one cube per group
+// darkened the dynamic sphere by 3-8% against exact visibility, four per group by ≤ 1%).
 //
 // Layout: GL 3.3 core has no cube-map arrays, so all cubes share one depth32F
-// GL_TEXTURE_2D_ARRAY, layer 6·group + face, faces in GL's cube order (+X, −X, +Y, −Y, +Z, −Z)
+// GL_TEXTURE_2D_ARRAY, layer 6·cube + face, faces in GL's cube order (+X, −X, +Y, −Y, +Z, −Z)
 // with the frames of cubeFaceShadowView; the shader picks the face by the major axis. Depth
-// is distance / far, one `far` for every group, so the per-group uniform is the map origin.
+// is distance / far, one `far` for every cube, so the per-cube uniform is the map origin.
 //
 // Bias: a VPL sits on its surface, so its map origin is lifted by `originOffset` along its
 // normal, and the map holds only what lies in front of the VPL's tangent plane through that
@@ -24,6 +29,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/vpl.h"
+#include "bake/vpl_groups.h"
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
@@ -37,10 +43,30 @@ struct VplShadowSettings {
   // Map origin above the VPL's surface along its normal, metres; ≤ 0: 1e-3 × the scene box's
   // diagonal.
   float originOffset = 0.0f;
+  // Cubes per VPL group (a power of two ≤ kVplShadowCubesPerGroup; vplShadowCubes): 1 puts one
+  // cube at each group's member nearest its centroid, a quarter of the redraw cost and up to 8%
+  // darker on the dynamic sphere (docs/vpl.md "Visibility").
+  int cubesPerGroup = 4;
 };
 
-// Must match MAX_VPL_SHADOW_GROUPS in shaders/vpl_shadows.glsl.
+// The groups (K ≤ kMaxVplGroups) and cubes per group; kMaxVplShadowCubes must match
+// MAX_VPL_SHADOW_CUBES in shaders/vpl_shadows.glsl.
 constexpr int kMaxVplShadowGroups = 64;
+constexpr int kVplShadowCubesPerGroup = 4;
+constexpr int kMaxVplShadowCubes = kMaxVplShadowGroups * kVplShadowCubesPerGroup;
+
+// Where the cubes of `groups` sit and which cube each light-table entry reads (GL-free).
+struct VplShadowCubes {
+  std::vector<Vpl> origins;      // per cube: the member VPL it sits at (position, normal)
+  std::vector<uint32_t> cubeOf;  // per light of groups.lights(): its cube
+};
+// Each group's members are halved at the median of their projection on the principal axis of
+// their positions, recursively, into up to `cubesPerGroup` parts (a power of two; fewer when a
+// group has fewer members); a part's cube sits at the member nearest its flux-weighted centroid
+// (a centroid can lie inside an object, a member lies on a surface: nearestVpl). A VPL reads its
+// part's cube; a tree node or group representative (many members) the cube of its group whose
+// origin is nearest to it.
+VplShadowCubes vplShadowCubes(const VplGroups& groups, int cubesPerGroup);
 
 // Bit f set: cube face f (GL order) reaches the hemisphere dot(ω, normal) > 0 and is rendered.
 // The face opposite an axis-aligned normal is the one skipped.
@@ -51,9 +77,9 @@ class VplShadowMaps {
   // Needs a current GL context; compiles the depth program from `shaderDir`.
   VplShadowMaps(const VplShadowSettings& settings, const std::filesystem::path& shaderDir);
 
-  // The group representatives (position, unit normal, flux); at most kMaxVplShadowGroups
-  // (throws std::invalid_argument beyond). The maps are re-rendered on the next render() only
-  // if they differ from the last set.
+  // The cube origins (position, unit normal; VplShadowCubes::origins); at most
+  // kMaxVplShadowCubes (throws std::invalid_argument beyond). The maps are re-rendered on the next
+  // render() only if they differ from the last set.
   void setRepresentatives(std::span<const Vpl> representatives);
   // Renders the maps when the representatives changed or an instance moved (its model matrix
   // differs from the last render) or `enabled` was turned on; otherwise draws nothing. Returns
@@ -66,6 +92,7 @@ class VplShadowMaps {
 
   void setEnabled(bool enabled);
   bool enabled() const { return settings_.enabled; }
+  int cubesPerGroup() const { return settings_.cubesPerGroup; }
   int groupCount() const { return static_cast<int>(representatives_.size()); }
   // Metres: the map origin of group g is position + originOffset · normal.
   float originOffset() const { return originOffset_; }

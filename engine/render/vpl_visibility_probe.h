@@ -19,7 +19,7 @@ class VplVisibilityProbe {
   // Needs a current GL context; compiles the probe program from `shaderDir`.
   explicit VplVisibilityProbe(const std::filesystem::path& shaderDir);
 
-  // vplVisibility(group, positions[i], normals[i]) for every i (positions in metres, unit
+  // vplVisibility(cube, positions[i], normals[i]) for every i (positions in metres, unit
   // geometric normals facing the VPL's side); the sizes must agree.
   std::vector<float> read(const VplShadowMaps& maps, int group,
                           std::span<const glm::vec3> positions, std::span<const glm::vec3> normals);

@@ -7,6 +7,8 @@
 //           renderer's K groups (bake/vpl_groups.h), seen from the centroid or from the member
 //           nearest it (what K shadow cubes give at best; the maps' own error is tested in
 //           tests/render/vpl_shadow_test.cpp),
+//   parts   V = the visibility of the VPL's part of its group, exact rays from the part's cube
+//           origin (the renderer's cubes: vplShadowCubes, render/vpl_shadow_maps.h),
 // against PathTracer::irradiance with PathSet::IndirectOnly (the same light: reflected at least
 // once). Receivers are grouped by region: floor in the shadow of the blocks (the light's
 // centre occluded), floor behind the tall block, open floor.
@@ -15,9 +17,10 @@
 //                        --vpls build/release/content/cornell_box/cornell_box.bake/vpls
 //                        [--samples 4096] [--grid 0.02] [--groups 64] [--maps RESOLUTION]
 //
-// --maps: also "group V (maps)": the same groups' visibility read from VplShadowMaps cubes of
-// that resolution centred on each group's nearest member (OSMesa, through VplVisibilityProbe),
-// and the time to render all the maps.
+// --maps: also "group V (maps)" and "parts V (maps)": the same visibility read from
+// VplShadowMaps cubes of that resolution at each group's nearest member, and at each part's
+// origin (what the renderer draws) (OSMesa, through VplVisibilityProbe), and the time to render
+// all the maps of each arrangement.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,8 +53,8 @@ using namespace bounce;
 struct Receiver {
   glm::vec3 position{0.0f}, normal{0.0f, 1.0f, 0.0f};
   int region = 0;  // 0 blocks' shadow, 1 behind the tall block, 2 open floor
-  double exact = 0, none = 0, groups = 0, groupsMember = 0, groupsMap = 0, traced = 0,
-         tracedVariance = 0;  // luminance, W/m²
+  double exact = 0, none = 0, groups = 0, groupsMember = 0, groupsMap = 0, parts = 0, partsMap = 0,
+         traced = 0, tracedVariance = 0;  // luminance, W/m²
 };
 
 const char* kRegionNames[3] = {"floor in the blocks' shadow", "floor behind the tall block",
@@ -136,40 +139,47 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "%zu VPLs, clamp r = %.4f m, %zu representatives, %zu receivers\n",
                vpls.size(), r, reps.size(), receivers.size());
 
-  // Group visibility from the shadow maps: mapVisible[g][i] for receiver i.
-  std::vector<std::vector<float>> mapVisible;
+  // Visibility from the shadow maps: mapVisible[g][i] for receiver i and cube g, cubes at the
+  // groups' nearest members; partVisible the same with cubes at the parts' origins.
+  std::vector<std::vector<float>> mapVisible, partVisible;
   std::unique_ptr<gl::Context> context;
   if (mapResolution > 0) {
     context = gl::createOSMesaContext();
     context->makeCurrent();
     std::vector<std::string> warnings;
     const GpuScene gpu(scene, warnings);
-    VplShadowSettings mapSettings;
-    mapSettings.resolution = mapResolution;
-    VplShadowMaps maps(mapSettings, gl::shaderDirectory());
-    maps.setRepresentatives(nearestMember);
-    constexpr int kRuns = 5;
-    double seconds = 0.0;
-    ShadowDrawCount drawn;
-    for (int run = 0; run < kRuns; ++run) {
-      maps.setEnabled(false);
-      maps.setEnabled(true);  // forces a redraw
-      const auto start = std::chrono::steady_clock::now();
-      drawn = maps.render(gpu);
-      gl::finish();
-      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-    std::fprintf(stderr, "%zu maps of 6 x %d^2: %d faces, %d caster draws, %.1f ms per redraw\n",
-                 nearestMember.size(), mapResolution, drawn.views, drawn.casters,
-                 1e3 * seconds / kRuns);
     std::vector<glm::vec3> positions, normals;
     for (const Receiver& rc : receivers) {
       positions.push_back(rc.position);
       normals.push_back(rc.normal);
     }
-    VplVisibilityProbe probe(gl::shaderDirectory());
-    for (std::size_t g = 0; g < nearestMember.size(); ++g)
-      mapVisible.push_back(probe.read(maps, static_cast<int>(g), positions, normals));
+    const auto readMaps = [&](const std::vector<Vpl>& origins) {
+      VplShadowSettings mapSettings;
+      mapSettings.resolution = mapResolution;
+      VplShadowMaps maps(mapSettings, gl::shaderDirectory());
+      maps.setRepresentatives(origins);
+      constexpr int kRuns = 5;
+      double seconds = 0.0;
+      ShadowDrawCount drawn;
+      for (int run = 0; run < kRuns; ++run) {
+        maps.setEnabled(false);
+        maps.setEnabled(true);  // forces a redraw
+        const auto start = std::chrono::steady_clock::now();
+        drawn = maps.render(gpu);
+        gl::finish();
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
+      std::fprintf(stderr, "%zu maps of 6 x %d^2: %d faces, %d caster draws, %.1f ms per redraw\n",
+                   origins.size(), mapResolution, drawn.views, drawn.casters,
+                   1e3 * seconds / kRuns);
+      VplVisibilityProbe probe(gl::shaderDirectory());
+      std::vector<std::vector<float>> visible;
+      for (std::size_t g = 0; g < origins.size(); ++g)
+        visible.push_back(probe.read(maps, static_cast<int>(g), positions, normals));
+      return visible;
+    };
+    mapVisible = readMaps(nearestMember);
+    partVisible = readMaps(groups.cubes);
   }
 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size(), 4), [&](auto range) {
@@ -196,10 +206,24 @@ int main(int argc, char** argv) {
       };
       rc.groups = gather(repVisible);
       rc.groupsMember = gather(memberVisible);
+      std::vector<float> partRays(groups.cubes.size());
+      for (std::size_t c = 0; c < groups.cubes.size(); ++c)
+        partRays[c] = test::segmentVisible(*kernel, groups.cubes[c].position,
+                                           groups.cubes[c].normal, rc.position, rc.normal)
+                          ? 1.0f
+                          : 0.0f;
+      const auto gatherParts = [&](std::span<const float> visibility) {
+        return luminance(glm::vec3(
+            test::groupGather(groups.vpls, groups.cube, visibility, rc.position, rc.normal, r)));
+      };
+      rc.parts = gatherParts(partRays);
       if (!mapVisible.empty()) {
-        std::vector<float> fromMaps;
+        std::vector<float> fromMaps, fromPartMaps;
         for (std::size_t g = 0; g < reps.size(); ++g) fromMaps.push_back(mapVisible[g][i]);
+        for (std::size_t c = 0; c < groups.cubes.size(); ++c)
+          fromPartMaps.push_back(partVisible[c][i]);
         rc.groupsMap = gather(fromMaps);
+        rc.partsMap = gatherParts(fromPartMaps);
       }
       SobolSampler sampler(7u, static_cast<uint32_t>(i));
       double mean = 0, m2 = 0;
@@ -226,6 +250,8 @@ int main(int argc, char** argv) {
                                  {"group V, centroid", &Receiver::groups},
                                  {"group V, nearest member", &Receiver::groupsMember}};
   if (!mapVisible.empty()) columns.push_back({"group V, maps", &Receiver::groupsMap});
+  columns.push_back({"part V, nearest member", &Receiver::parts});
+  if (!partVisible.empty()) columns.push_back({"part V, maps", &Receiver::partsMap});
   columns.push_back({"no V", &Receiver::none});
   std::printf("| region | receivers | path tracer E (rel. SE) |");
   for (const Column& c : columns) std::printf(" %s: E, bias, RMS |", c.name);

@@ -394,6 +394,9 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
     EXPECT_EQ(bakeSet.vpls.size(), baked.vpls->size());
     report("bake (4N), paths cut by the sphere", at,
            compare(gather(m, cut(bakeSet), nullptr, r), m.traced, m.stdError, m.pixels.keep));
+    // The same with a ray per VPL: what the renderer's VPL shadow cubes approach.
+    report("bake (4N), cut, exact visibility", at,
+           compare(gather(m, cut(bakeSet), kernel.get(), r), m.traced, m.stdError, m.pixels.keep));
     Scene withSphere = m.scene;
     for (Instance& instance : withSphere.instances) instance.mobility = Mobility::Static;
     const VplSet own = generateVpls(withSphere, geometry, *kernel, VplSettings{});

@@ -1,8 +1,9 @@
 // Per-group VPL visibility on the CPU, for the VPL shadow-map test and bench_vpl_visibility:
 // the renderer's K groups (bake/vpl_groups.h), each seen either from its representative (the
-// centroid) or from its member nearest the centroid (nearestVpl, where the renderer puts the
-// group's shadow cube), and the clamped gather of baker/vpl/vpl_gather.h with every VPL
-// weighted by its group's visibility.
+// centroid) or from its member nearest the centroid (nearestVpl, where the renderer put the
+// group's one shadow cube before the groups were split), or split into parts as the renderer
+// places its cubes (vplShadowCubes, render/vpl_shadow_maps.h), and the clamped gather of
+// baker/vpl/vpl_gather.h with every VPL weighted by its group's or part's visibility.
 #pragma once
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "bake/vpl.h"
 #include "bake/vpl_groups.h"
 #include "ray/ray_kernel.h"
+#include "render/vpl_shadow_maps.h"
 
 namespace bounce::test {
 
@@ -23,6 +25,8 @@ struct VplGroupsCpu {
   std::vector<int> group;            // per VPL
   std::vector<Vpl> representatives;  // per group: the centroid
   std::vector<Vpl> origins;          // per group: its member nearest the centroid
+  std::vector<Vpl> cubes;            // per part (the renderer's shadow cubes): its origin
+  std::vector<int> cube;             // per VPL: its part's cube
 };
 
 inline VplGroupsCpu groupVplsCpu(std::span<const Vpl> vpls, std::size_t k) {
@@ -36,6 +40,9 @@ inline VplGroupsCpu groupVplsCpu(std::span<const Vpl> vpls, std::size_t k) {
     g.origins.push_back(
         nearestVpl(groups.vpls().subspan(group.first, group.count), g.representatives[r].position));
   }
+  const VplShadowCubes cubes = vplShadowCubes(groups, VplShadowSettings{}.cubesPerGroup);
+  g.cubes = cubes.origins;
+  for (std::size_t i = 0; i < g.vpls.size(); ++i) g.cube.push_back(int(cubes.cubeOf[i]));
   return g;
 }
 
