@@ -19,6 +19,7 @@
 #include "scene/framing.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
+#include "vpl/vpl_retrace.h"
 
 namespace {
 
@@ -40,6 +41,7 @@ struct Options {
   std::size_t vplGroups = bounce::kMaxVplGroups;
   bool noVplCulling = false;
   bool noVplShadows = false;
+  std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
 };
 
@@ -87,7 +89,7 @@ int run(const Options& options) {
     return std::chrono::duration<double, std::milli>(b - a).count();
   };
   const auto start = Clock::now();
-  const bounce::RendererSettings settings = rendererSettings(options);
+  bounce::RendererSettings settings = rendererSettings(options);
   if (bounce::renderModeNeedsBake(settings.mode) && options.bake.empty())
     throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
                              " draws baked light: give --bake DIR");
@@ -98,6 +100,9 @@ int run(const Options& options) {
                  options.bake.c_str(), bake->layout.width, bake->layout.height,
                  bake->layout.instances.size());
   }
+  // The bake's count rule over the scene with its dynamic instances placed (--move).
+  if (bake && bake->vpls && options.dynamicVpls == "retrace")
+    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
   if (settings.mode == bounce::RenderMode::Lightmap)
     std::fprintf(stderr,
                  "bounce-render: mode lightmap: pixels are E/pi W/(sr·m²), the radiance of a "
@@ -130,6 +135,11 @@ int run(const Options& options) {
   const bool dynamicInstances = std::any_of(
       scene.instances.begin(), scene.instances.end(),
       [](const bounce::Instance& i) { return i.mobility == bounce::Mobility::Dynamic; });
+  if (settings.vplTracer && dynamicInstances)
+    std::fprintf(stderr,
+                 "bounce-render: VPLs traced again with the dynamic instances in place: %zu "
+                 "(bake: %zu)\n",
+                 renderer.vpls().groups().vplCount(), bake->vpls->size());
   if (renderer.hasVpls() && (bounce::renderModeNeedsVpls(settings.mode) || dynamicInstances)) {
     const bounce::VplClampReport clamp =
         renderer.measureVplClamp(camera, options.width, options.height);
@@ -194,6 +204,12 @@ int main(int argc, char** argv) {
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
                "draw every VPL unoccluded (no shadow cube per VPL group)");
+  app.add_option("--dynamic-vpls", options.dynamicVpls,
+                 "VPLs with dynamic instances in the scene: retrace (default: the light paths "
+                 "traced again with them in place, so they shadow the room and reflect light "
+                 "into it) or cut (the bake's VPLs, their paths cut where the dynamic instances "
+                 "block them; misses the light those reflect)")
+      ->check(CLI::IsMember({"retrace", "cut"}));
   app.add_flag("--no-shadows", options.noShadows,
                "draw every light unshadowed (punctual and area lights)");
   app.add_option("--shadow-resolution", options.shadowResolution,

@@ -35,6 +35,7 @@
 #include "scene/framing.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
+#include "vpl/vpl_retrace.h"
 
 namespace {
 
@@ -52,12 +53,25 @@ struct Options {
   std::string mode;  // default: full with a bake, direct without
   std::string bake;
   std::vector<std::string> moves;  // NAME X Y Z, repeated
+  std::string dynamicVpls = "retrace";
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
 void save(const bounce::Image& radiance, const std::string& path, float exposure) {
   bounce::writeImage(path, radiance, exposure);
   std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
+}
+
+// With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
+// with it in place (vpl/vpl_retrace.h).
+bounce::RendererSettings rendererSettings(const Options& options, const bounce::Scene& scene,
+                                          const std::optional<bounce::Bake>& bake,
+                                          bounce::RenderMode mode) {
+  bounce::RendererSettings settings;
+  settings.mode = mode;
+  if (bake && bake->vpls && options.dynamicVpls == "retrace")
+    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
+  return settings;
 }
 
 class Viewer {
@@ -68,8 +82,8 @@ class Viewer {
         scene_(std::move(scene)),
         bake_(std::move(bake)),
         window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory(), bounce::RendererSettings{mode, {}, {}},
-                  bake_ ? &*bake_ : nullptr),
+        renderer_(scene_, bounce::gl::shaderDirectory(),
+                  rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
         selection_(scene_),
         objectSpeed_(bounce::objectSpeed(scene_)),
@@ -308,6 +322,11 @@ int main(int argc, char** argv) {
                  "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
                  "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
+  app.add_option("--dynamic-vpls", options.dynamicVpls,
+                 "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
+                 "again with it in place) or cut (the bake's paths cut where it blocks them; "
+                 "cheaper, misses the light it reflects)")
+      ->check(CLI::IsMember({"retrace", "cut"}));
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {

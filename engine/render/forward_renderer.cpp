@@ -47,6 +47,12 @@ void requireLight(RenderMode mode, bool hasBake, bool hasVpls) {
                                 "file: bake with bounce-bake --vpls N, N > 0)");
 }
 
+bool hasDynamicInstance(const GpuScene& scene) {
+  for (const GpuInstance& instance : scene.instances())
+    if (instance.mobility == Mobility::Dynamic) return true;
+  return false;
+}
+
 }  // namespace
 
 ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
@@ -72,8 +78,12 @@ ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
 void ForwardRenderer::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   passes_->scene.setInstanceTransform(index, transform);
   const std::span<const GpuInstance> instances = passes_->scene.instances();
-  if (index < instances.size() && instances[index].mobility == Mobility::Dynamic)
-    updateVplOcclusion();
+  if (index < instances.size() && instances[index].mobility == Mobility::Dynamic) {
+    if (settings_.vplTracer)
+      retraceVpls();
+    else
+      updateVplOcclusion();
+  }
 }
 
 void ForwardRenderer::updateVplOcclusion() {
@@ -89,6 +99,17 @@ void ForwardRenderer::updateVplOcclusion() {
       occluders.push_back(
           makeVplOccluder(scene_.meshes[scene_.instances[i].mesh], instances[i].model));
   p.vpls.setAlive(vplAliveMask(vpls_, occluders));
+  p.lightTable.setVpls(p.vpls.lightTexels(), p.vpls.cutTexels());
+}
+
+void ForwardRenderer::retraceVpls() {
+  Passes& p = *passes_;
+  if (vpls_.empty()) return;  // no bake with VPLs yet
+  std::vector<glm::mat4> transforms;
+  for (const GpuInstance& instance : p.scene.instances()) transforms.push_back(instance.model);
+  // The bake's clamp distance and grid: the re-traced set has the bake's count rule, so about
+  // its N, over the same static surfaces.
+  p.vpls.attach(settings_.vplTracer(transforms), vplClampDistance_, vplBounds_, settings_.vpls);
   p.lightTable.setVpls(p.vpls.lightTexels(), p.vpls.cutTexels());
 }
 
@@ -112,9 +133,16 @@ void ForwardRenderer::setBake(const Bake& bake) {
         statics.add(instance.worldBox.lo);
         statics.add(instance.worldBox.hi);
       }
-    p.vpls.attach(*bake.vpls, r, statics.empty() ? p.scene.bounds() : statics, settings_.vpls);
+    vplClampDistance_ = r;
+    vplBounds_ = statics.empty() ? p.scene.bounds() : statics;
     vpls_ = *bake.vpls;
-    updateVplOcclusion();  // also hands the VPL sections to the light table
+    // Both hand the VPL sections to the light table.
+    if (settings_.vplTracer && hasDynamicInstance(p.scene)) {
+      retraceVpls();
+    } else {
+      p.vpls.attach(*bake.vpls, r, vplBounds_, settings_.vpls);
+      updateVplOcclusion();
+    }
   }
 }
 

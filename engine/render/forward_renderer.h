@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -39,10 +40,20 @@ struct VplClampReport {
   }
 };
 
+// VPLs of light paths traced with instance i at object → world transforms[i] (W per channel,
+// bake/vpl.h), e.g. baker/vpl/vpl_retrace.h's PlacedVplTracer, which the apps wire in (the
+// renderer does not depend on the baker).
+using VplTracer = std::function<std::vector<Vpl>(std::span<const glm::mat4> transforms)>;
+
 struct RendererSettings {
   RenderMode mode = RenderMode::Direct;
   ShadowSettings shadows;
   VplRenderSettings vpls;
+  // Given, the VPLs are traced again with the dynamic instances where they are (on setBake and
+  // whenever one moves): they shadow the room and reflect light into it. Empty: the bake's VPLs
+  // (traced without them), their paths cut where the dynamic instances block them
+  // (bake/vpl_occlusion.h), which misses the light those instances reflect.
+  VplTracer vplTracer;
 };
 
 class ForwardRenderer {
@@ -64,8 +75,8 @@ class ForwardRenderer {
   Image renderImage(const Camera& camera, int width, int height);
 
   // Moves instance `index` (object → world) without re-uploading its mesh. Moving a dynamic
-  // instance with VPLs attached recomputes which VPLs its triangles cut off
-  // (bake/vpl_occlusion.h) and re-uploads their flux.
+  // instance with VPLs attached re-traces them (RendererSettings::vplTracer), else recomputes
+  // which VPLs its triangles cut off (bake/vpl_occlusion.h) and re-uploads their flux.
   void setInstanceTransform(std::size_t index, const glm::mat4& transform);
   // Per-corner lightmap UVs of instance `index` (vertex attribute 3, gl/vertex_attributes.h);
   // empty removes them.
@@ -108,9 +119,13 @@ class ForwardRenderer {
   struct Passes;
   // Recomputes the VPLs the dynamic instances block at their current transforms.
   void updateVplOcclusion();
+  // Traces the VPLs again with every instance at its current transform (settings_.vplTracer).
+  void retraceVpls();
 
   RendererSettings settings_;
   std::vector<Vpl> vpls_;  // the bake's VPLs in file order (path order), for updateVplOcclusion
+  float vplClampDistance_ = 0.0f;  // r, m: the bake's (its N over the static area)
+  Box vplBounds_;                  // where the VPL grid lies: the static surfaces
   const Scene& scene_;
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;

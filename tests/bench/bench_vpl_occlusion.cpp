@@ -1,7 +1,12 @@
-// Cost of cutting the bake's light paths at a dynamic object (bake/vpl_occlusion.h), what the
-// renderer pays each time a dynamic instance moves: content/cornell_box_dynamic, VPLs generated
-// in its static scene (cap 4096 and 16384, error target off), the sphere at its glTF place and
-// moved to a blocked and an unblocked spot. The sphere's triangle count is printed. Run by hand:
+// What the renderer pays each time a dynamic instance moves, side by side in one run, for
+// content/cornell_box_dynamic with the sphere at its glTF place (cap 4096 and 16384 VPLs, error
+// target off):
+//   vplAliveMask  cutting the bake's light paths (VPLs of its static scene) at the sphere
+//                 (bake/vpl_occlusion.h, --dynamic-vpls cut);
+//   vplRetrace    tracing the light paths again with the sphere in place: the scene flattened,
+//                 an Embree kernel built, the paths traced (vpl/vpl_retrace.h, --dynamic-vpls
+//                 retrace, the default), on one thread and on all.
+// The sphere's triangle count is printed. Run by hand:
 //   build/release/bin/bench_vpl_occlusion
 #include <benchmark/benchmark.h>
 
@@ -11,6 +16,7 @@
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "vpl/vpl_generate.h"
+#include "vpl/vpl_retrace.h"
 
 namespace {
 
@@ -55,6 +61,31 @@ void vplAliveMask(benchmark::State& state) {
       occluders.empty() ? 0.0 : static_cast<double>(occluders.front().corners.size() / 3);
 }
 BENCHMARK(vplAliveMask)->Arg(4096)->Arg(16384)->Unit(benchmark::kMillisecond);
+
+// Args: cap, threads (0: all cores).
+void vplRetrace(benchmark::State& state) {
+  Setup& s = setup();
+  bounce::VplSettings settings;
+  settings.maxVpls = static_cast<int>(state.range(0));
+  settings.relativeError = 0.0f;
+  settings.threads = static_cast<int>(state.range(1));
+  bounce::PlacedVplTracer tracer(s.scene, settings);
+  std::vector<glm::mat4> transforms;
+  for (const bounce::Instance& instance : s.scene.instances)
+    transforms.push_back(instance.transform);
+  std::size_t count = 0;
+  for (auto _ : state) {
+    count = tracer.trace(transforms).size();
+    benchmark::DoNotOptimize(count);
+  }
+  state.counters["vpls"] = static_cast<double>(count);
+}
+BENCHMARK(vplRetrace)
+    ->Args({4096, 1})
+    ->Args({16384, 1})
+    ->Args({4096, 0})
+    ->Args({16384, 0})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
