@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/instance_move_option.h"
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/framing.h"
@@ -192,12 +193,7 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
-  app.add_option("--move", o.moves,
-                 "NAME X Y Z: place the dynamic instance NAME (glTF node name, extras.bounce."
-                 "mobility = dynamic) with its world translation at (X, Y, Z) metres; repeatable. "
-                 "bounce-render, bounce-trace and bounce-view place it the same way")
-      ->expected(4)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  bounce::addMoveOption(app, o.moves);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(o);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bake/bake_folder.h"
+#include "cli/instance_move_option.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
@@ -222,12 +223,7 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")
       ->check(CLI::Range(0.0f, 64.0f));
-  app.add_option("--move", options.moves,
-                 "NAME X Y Z: place the dynamic instance NAME (glTF node name, extras.bounce."
-                 "mobility = dynamic) with its world translation at (X, Y, Z) metres; repeatable. "
-                 "bounce-render, bounce-trace and bounce-view place it the same way")
-      ->expected(4)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(options);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "bake/bake_folder.h"
+#include "cli/instance_move_option.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "gl/window.h"
@@ -326,11 +327,7 @@ int main(int argc, char** argv) {
                  "again with it in place) or cut (the bake's paths cut where it blocks them; "
                  "cheaper, misses the light it reflects)")
       ->check(CLI::IsMember({"retrace", "cut"}));
-  app.add_option("--move", options.moves,
-                 "NAME X Y Z: start with the dynamic instance NAME's world translation at (X, Y, "
-                 "Z) metres; repeatable (as in bounce-render and bounce-trace)")
-      ->expected(4)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {
     bounce::Scene scene = bounce::loadScene(options.scene);

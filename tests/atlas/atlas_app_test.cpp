@@ -1,16 +1,14 @@
 // bounce-atlas end to end: the report, the picture and the exit codes.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "image/image_compare.h"
+#include "support/tool_run.h"
 
 namespace bounce {
 namespace {
@@ -24,18 +22,11 @@ fs::path scratchDir() {
   return fs::temp_directory_path() / ("bounce_atlas_app_test_" + std::to_string(::getpid()));
 }
 
+using test::readText;
+
 // Runs the tool with its output to `out`; returns the exit code.
 int run(const std::string& arguments, const fs::path& out) {
-  const std::string command = kTool + " " + arguments + " >" + out.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return test::runCommand(kTool + " " + arguments, out).exitCode;
 }
 
 TEST(AtlasApp, ReportsTheCornellAtlasAndDrawsIt) {

@@ -14,6 +14,7 @@
 #include "gl/context.h"
 #include "image/image_io.h"
 #include "indirect_accuracy.h"
+#include "indirect_reference.h"
 #include "scene/load.h"
 
 namespace fs = std::filesystem;
@@ -48,19 +49,8 @@ int main(int argc, char** argv) {
   try {
     const Scene scene = loadScene(scenePath);
     const Camera& camera = scene.cameras.at(0);
-    test::Reference reference;
-    const fs::path seFile = fs::path(refFile).replace_extension(".se.exr");
-    if (!refFile.empty() && fs::exists(refFile) && fs::exists(seFile)) {
-      reference = {readExr(refFile), readExr(seFile)};
-      if (reference.radiance.width != size)
-        throw std::runtime_error(refFile + " is not " + std::to_string(size) + " wide");
-    } else {
-      reference = test::traceIndirectReference(scene, camera, size, size, refSpp);
-      if (!refFile.empty()) {
-        writeExr(refFile, reference.radiance);
-        writeExr(seFile, reference.stdError);
-      }
-    }
+    const test::Reference reference = test::cachedIndirectReference(
+        scene, camera, size, refSpp, refFile, "bench_indirect_accuracy");
     const test::BakeRun baked = test::bakeScene(scene, atlas, bake);
     const auto context = gl::createOSMesaContext();
     const Image rendered = test::renderIndirect(scene, baked.bake, camera, size, size);

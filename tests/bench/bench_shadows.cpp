@@ -21,16 +21,14 @@
 // light, Poisson r = 1.5), measured first.
 // filter is "hardware" (one 2×2 comparison tap) or "poisson" (16 rotated taps of that radius).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "gl/draw_state.h"
+#include "frame_time.h"
 #include "render/shadow_map_geometry.h"
 #include "scene/framing.h"
 #include "shadow_scenes.h"
@@ -80,36 +78,6 @@ Options parse(int argc, char** argv) {
     }
   }
   return o;
-}
-
-struct FrameTime {
-  double wallMs = 0.0;  // median
-  double cpuMs = 0.0;   // mean process CPU time
-};
-
-double processCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-// Milliseconds of one frame (render + glFinish).
-FrameTime frameMilliseconds(ForwardRenderer& renderer, const Camera& camera,
-                            gl::RenderTarget& target, int frames) {
-  for (int i = 0; i < 2; ++i) renderer.render(camera, target);
-  gl::finish();
-  std::vector<double> ms;
-  const double cpuStart = processCpuMs();
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(camera, target);
-    gl::finish();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  const double cpu = (processCpuMs() - cpuStart) / frames;
-  std::sort(ms.begin(), ms.end());
-  return {ms[ms.size() / 2], cpu};
 }
 
 struct FilterCase {

@@ -19,58 +19,27 @@
 //   docs/charts/vpl_error_vs_time.csv
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <span>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "frame_time.h"
 #include "generated_vpl_bake.h"
 #include "gl/context.h"
-#include "gl/draw_state.h"
 #include "gl/render_target.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "indirect_accuracy.h"
+#include "indirect_reference.h"
 #include "scene/load.h"
 
 namespace fs = std::filesystem;
 using namespace bounce;
 
 namespace {
-
-struct FrameTime {
-  double wallMs = 0.0;  // median
-  double cpuMs = 0.0;   // mean process CPU time
-};
-
-double processCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-FrameTime frameMilliseconds(ForwardRenderer& renderer, const Camera& camera,
-                            gl::RenderTarget& target, int frames) {
-  for (int i = 0; i < 2; ++i) renderer.render(camera, target);
-  gl::finish();
-  std::vector<double> ms;
-  const double cpuStart = processCpuMs();
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(camera, target);
-    gl::finish();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  const double cpu = (processCpuMs() - cpuStart) / frames;
-  std::sort(ms.begin(), ms.end());
-  return {ms[ms.size() / 2], cpu};
-}
 
 // Relative MSE over the comparison's mask, and the reference's expected share of it.
 struct SquaredError {
@@ -132,24 +101,8 @@ int main(int argc, char** argv) {
   try {
     const Scene scene = loadScene(scenePath);
     const Camera& camera = scene.cameras.at(0);
-    test::Reference reference;
-    const fs::path seFile = fs::path(refFile).replace_extension(".se.exr");
-    if (!refFile.empty() && fs::exists(refFile) && fs::exists(seFile)) {
-      reference = {readExr(refFile), readExr(seFile)};
-      if (reference.radiance.width != size || reference.radiance.height != size)
-        throw std::runtime_error(refFile + " is not " + std::to_string(size) + "²");
-      std::fprintf(stderr, "bench_vpl_error: reference %s\n", refFile.c_str());
-    } else {
-      std::fprintf(stderr, "bench_vpl_error: tracing the %d² reference at %d spp\n", size, refSpp);
-      const auto start = std::chrono::steady_clock::now();
-      reference = test::traceIndirectReference(scene, camera, size, size, refSpp);
-      std::fprintf(stderr, "bench_vpl_error: reference traced in %.0f s\n",
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      if (!refFile.empty()) {
-        writeExr(refFile, reference.radiance);
-        writeExr(seFile, reference.stdError);
-      }
-    }
+    const test::Reference reference =
+        test::cachedIndirectReference(scene, camera, size, refSpp, refFile, "bench_vpl_error");
     const auto context = gl::createOSMesaContext();
     gl::RenderTarget target(size, size);
     std::ostringstream csv;
@@ -160,7 +113,7 @@ int main(int argc, char** argv) {
       const Image rendered = renderer.renderImage(camera, size, size);
       const test::IndirectComparison c = test::compareIndirect(scene, camera, rendered, reference);
       const SquaredError e = squaredError(c, rendered, reference);
-      const FrameTime t = frameMilliseconds(renderer, camera, target, frames);
+      const test::FrameTime t = test::frameMilliseconds(renderer, camera, target, frames);
       char line[256];
       std::snprintf(line, sizeof line, "%s,%zu,%d,%d,%.2f,%.2f,%.4f,%+.4f,%.5f,%.5f,%.4f,%zu\n",
                     method.c_str(), vpls, culling, shadows, t.wallMs, t.cpuMs, c.meanAbsRelError,

@@ -3,7 +3,6 @@
 // good ones must load with the stated properties. Also a few through the tools (exit status
 // and message). One CTest per file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "image/image_io.h"
 #include "scene/load.h"
 #include "support/scene_invariants.h"
+#include "support/tool_run.h"
 
 namespace bounce {
 namespace {
@@ -148,12 +148,9 @@ TEST_P(CorpusTools, FailWithTheFileAndTheReason) {
   replace("{tool}", std::string(BOUNCE_BIN_DIR) + "/");
   replace("{corpus}", kCorpus.string() + "/");
   replace("{out}", (dir / "out").string());
-  const int status = std::system((command + " > " + (dir / "log").string() + " 2>&1").c_str());
-  std::ifstream in(dir / "log");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string log = text.str();
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << command << "\n" << log;
+  const test::ToolRun run = test::runCommand(command, dir / "log");
+  const std::string& log = run.output;
+  EXPECT_EQ(run.exitCode, 1) << command << "\n" << log;
   EXPECT_NE(log.find(c.message), std::string::npos) << command << "\n" << log;
   int files = 0;
   for ([[maybe_unused]] const auto& f : fs::directory_iterator(dir)) ++files;

@@ -3,14 +3,13 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "image/image_compare.h"
 #include "image/image_io.h"
+#include "support/tool_run.h"
 
 namespace bounce {
 namespace {
@@ -28,16 +27,9 @@ class CompareCli : public ::testing::Test {
     const std::string command = std::string(BOUNCE_BIN_DIR) + "/bounce-compare " + args + " > " +
                                 (dir_ / "stdout.txt").string() + " 2> " +
                                 (dir_ / "stderr.txt").string();
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return test::exitCode(std::system(command.c_str()));
   }
-  std::string read(const std::string& name) {
-    std::ifstream in(dir_ / name, std::ios::binary | std::ios::ate);
-    std::string text(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)), '\0');
-    in.seekg(0);
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    return text;
-  }
+  std::string read(const std::string& name) { return test::readText(dir_ / name); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   std::filesystem::path dir_;

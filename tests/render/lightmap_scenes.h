@@ -9,6 +9,7 @@
 
 #include "bake/bake_folder.h"
 #include "scene/scene.h"
+#include "test_scenes.h"
 
 namespace bounce::test {
 
@@ -50,18 +51,13 @@ inline Mesh uvSphere(float radius, int rings, int segments) {
   return mesh;
 }
 
-// Adds `mesh` with material `material` as a new static instance at `transform`; returns it.
+// Adds `mesh` with material `material` as a new static instance at `transform`, named after the
+// mesh; returns it.
 inline uint32_t addInstance(Scene& scene, Mesh mesh, const Material& material,
                             const glm::mat4& transform) {
-  mesh.material = static_cast<uint32_t>(scene.materials.size());
-  scene.materials.push_back(material);
-  scene.meshes.push_back(std::move(mesh));
-  Instance instance;
-  instance.name = scene.meshes.back().name;
-  instance.mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
-  instance.transform = transform;
-  scene.instances.push_back(instance);
-  return static_cast<uint32_t>(scene.instances.size() - 1);
+  const uint32_t instance = addMesh(scene, std::move(mesh), material, transform);
+  scene.instances[instance].name = scene.meshes.back().name;
+  return instance;
 }
 
 // A manifest good enough for readBake: format version and the scene's hash.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -39,12 +40,7 @@ inline void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, const Material& mat
     }
     for (const uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
   }
-  mesh.material = static_cast<uint32_t>(scene.materials.size());
-  scene.materials.push_back(material);
-  Instance instance;
-  instance.mesh = static_cast<uint32_t>(scene.meshes.size());
-  scene.meshes.push_back(mesh);
-  scene.instances.push_back(instance);
+  addMesh(scene, std::move(mesh), material);
 }
 
 inline Image renderWith(const Scene& scene, const Camera& camera, int width, int height,

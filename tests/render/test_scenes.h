@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,20 @@
 
 namespace bounce::test {
 
+// Adds `mesh` with `material` (appended to scene.materials) as a new unnamed static instance at
+// `transform`; returns the instance's index.
+inline uint32_t addMesh(Scene& scene, Mesh mesh, const Material& material,
+                        const glm::mat4& transform = glm::mat4(1.0f)) {
+  mesh.material = static_cast<uint32_t>(scene.materials.size());
+  scene.materials.push_back(material);
+  scene.meshes.push_back(std::move(mesh));
+  Instance instance;
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
+  instance.transform = transform;
+  scene.instances.push_back(instance);
+  return static_cast<uint32_t>(scene.instances.size() - 1);
+}
+
 // Adds a quad with corners c, c+u, c+u+v, c+v (counter-clockwise seen from u×v, its front side).
 inline void addQuad(Scene& scene, glm::vec3 c, glm::vec3 u, glm::vec3 v, const Material& material) {
   Mesh mesh;
@@ -28,12 +43,7 @@ inline void addQuad(Scene& scene, glm::vec3 c, glm::vec3 u, glm::vec3 v, const M
   mesh.normals = {n, n, n, n};
   mesh.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   mesh.indices = {0, 1, 2, 0, 2, 3};
-  mesh.material = static_cast<uint32_t>(scene.materials.size());
-  scene.materials.push_back(material);
-  Instance instance;
-  instance.mesh = static_cast<uint32_t>(scene.meshes.size());
-  scene.meshes.push_back(mesh);
-  scene.instances.push_back(instance);
+  addMesh(scene, std::move(mesh), material);
 }
 
 // The floor y = 0, facing +y, 20 m wide, of diffuse reflectance `albedo`.

@@ -1,7 +1,6 @@
 // bounce-render and bounce-view through their command lines, as users and the README run them
 // (built tools from BOUNCE_BIN_DIR, scenes from the repository).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -9,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -17,24 +15,15 @@
 #include "bake/bake_folder.h"
 #include "image/image_io.h"
 #include "scene/load.h"
+#include "support/tool_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// Single-quoted for the shell (paths here have no quotes). Built with += : GCC 12 gives a false
-// -Wrestrict on "'" + std::string.
-std::string quote(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
-
-struct ToolRun {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr
-};
+using bounce::test::runCommand;
+constexpr auto& quote = bounce::test::shellQuote;  // the commands' paths, for the shell
+using bounce::test::ToolRun;
 
 class ToolsTest : public testing::Test {
  protected:
@@ -49,14 +38,7 @@ class ToolsTest : public testing::Test {
 
   ToolRun run(const std::string& command) const {
     const fs::path log = dir_ / "output.log";
-    const std::string full = command + " > " + quote(log) + " 2>&1";
-    const int status = std::system(full.c_str());
-    ToolRun result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    result.output = text.str();
+    const ToolRun result = runCommand(command, log);
     fs::remove(log);
     return result;
   }

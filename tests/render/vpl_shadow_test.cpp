@@ -412,21 +412,24 @@ TEST(VplShadow, CornellMapsMatchRaysFromTheSamePoints) {
   EXPECT_GE(diffNone, 0.15 * sumRays);
 }
 
-// The renderer end to end (vpl mode): VPLs on a ceiling patch over a floor, a dynamic box
-// between. The box's shadow darkens the floor; moved out of the room, the frame equals the
-// frame without VPL shadows (the cubes were redrawn, nothing shadows); moved back, the first
-// frame returns exactly.
-TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
-  testContext();
+// The renderer tests' scene: a 1 m floor (y = 0) with a dynamic 20 cm box on it, and a bake
+// of 64 VPLs (1 mW each, facing down) on an 8 × 8 patch 0.4 m up, over the box, each its own
+// light path whose incoming segment starts at from(VPL position).
+struct BoxUnderVpls {
   Scene scene;
-  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, grey("floor"));
-  addBox(scene, {0.0f, 0.15f, -0.1f}, {0.2f, 0.2f, 0.1f}, grey("box"));
-  const std::size_t box = scene.instances.size() - 1;
-  scene.instances[box].mobility = Mobility::Dynamic;
+  std::size_t box = 0;  // the box's instance
   Bake bake;
-  bake.layout.width = bake.layout.height = 1;
-  bake.layout.texelSize = 1.0f;
-  bake.irradiance = Image(1, 1);
+};
+
+BoxUnderVpls boxUnderVpls(glm::vec3 (*from)(glm::vec3 position)) {
+  BoxUnderVpls s;
+  addQuad(s.scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, grey("floor"));
+  addBox(s.scene, {0.0f, 0.15f, -0.1f}, {0.2f, 0.2f, 0.1f}, grey("box"));
+  s.box = s.scene.instances.size() - 1;
+  s.scene.instances[s.box].mobility = Mobility::Dynamic;
+  s.bake.layout.width = s.bake.layout.height = 1;
+  s.bake.layout.texelSize = 1.0f;
+  s.bake.irradiance = Image(1, 1);
   std::vector<Vpl> vpls;
   for (int i = 0; i < 64; ++i) {
     Vpl v;
@@ -434,16 +437,30 @@ TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
                   -0.07f + 0.02f * static_cast<float>(i / 8)};
     v.normal = {0.0f, -1.0f, 0.0f};
     v.flux = glm::vec3(1e-3f);
-    // Each VPL its own path, arriving from above the ceiling patch: the box cuts none of them
-    // (bake/vpl_occlusion.h), so only the VPL shadow maps darken the floor.
-    v.from = v.position + glm::vec3(0.0f, 0.5f, 0.0f);
+    v.from = from(v.position);
     v.path = static_cast<uint32_t>(i);
     vpls.push_back(v);
   }
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
+  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(s.scene));
   manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", 0.02f}};
-  bake.manifestJson = manifest.dump();
-  bake.vpls = vpls;
+  s.bake.manifestJson = manifest.dump();
+  s.bake.vpls = vpls;
+  return s;
+}
+
+// The renderer end to end (vpl mode): VPLs on a ceiling patch over a floor, a dynamic box
+// between. The box's shadow darkens the floor; moved out of the room, the frame equals the
+// frame without VPL shadows (the cubes were redrawn, nothing shadows); moved back, the first
+// frame returns exactly.
+TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
+  testContext();
+  // Each VPL its own path, arriving from above the ceiling patch: the box cuts none of them
+  // (bake/vpl_occlusion.h), so only the VPL shadow maps darken the floor.
+  const BoxUnderVpls s =
+      boxUnderVpls([](glm::vec3 position) { return position + glm::vec3(0.0f, 0.5f, 0.0f); });
+  const Scene& scene = s.scene;
+  const std::size_t box = s.box;
+  const Bake& bake = s.bake;
   RendererSettings settings;
   settings.mode = RenderMode::Vpl;
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
@@ -482,12 +499,6 @@ TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
       ASSERT_EQ(back.pixels[i][c], shadowed.pixels[i][c]) << "pixel " << i;
 }
 
-}  // namespace
-}  // namespace bounce::test
-
-namespace bounce::test {
-namespace {
-
 // The light paths the dynamic box cuts (bake/vpl_occlusion.h), through the renderer: VPLs on a
 // ceiling patch whose incoming segments start at the origin, under the box, so that the box
 // blocks them. Without VPL shadows the frame is darker with the box in place; moved away
@@ -495,30 +506,10 @@ namespace {
 // moved back, the first frame returns exactly.
 TEST(VplShadow, RendererCutsTheVplPathsADynamicObjectBlocksWhereverItIsMoved) {
   testContext();
-  Scene scene;
-  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, grey("floor"));
-  addBox(scene, {0.0f, 0.15f, -0.1f}, {0.2f, 0.2f, 0.1f}, grey("box"));
-  const std::size_t box = scene.instances.size() - 1;
-  scene.instances[box].mobility = Mobility::Dynamic;
-  Bake bake;
-  bake.layout.width = bake.layout.height = 1;
-  bake.layout.texelSize = 1.0f;
-  bake.irradiance = Image(1, 1);
-  std::vector<Vpl> vpls;
-  for (int i = 0; i < 64; ++i) {
-    Vpl v;
-    v.position = {0.2f + 0.02f * static_cast<float>(i % 8), 0.4f,
-                  -0.07f + 0.02f * static_cast<float>(i / 8)};
-    v.normal = {0.0f, -1.0f, 0.0f};
-    v.flux = glm::vec3(1e-3f);
-    v.from = glm::vec3(0.0f, 0.01f, -0.1f);
-    v.path = static_cast<uint32_t>(i);
-    vpls.push_back(v);
-  }
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
-  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", 0.02f}};
-  bake.manifestJson = manifest.dump();
-  bake.vpls = vpls;
+  const BoxUnderVpls s = boxUnderVpls([](glm::vec3) { return glm::vec3(0.0f, 0.01f, -0.1f); });
+  const Scene& scene = s.scene;
+  const std::size_t box = s.box;
+  const Bake& bake = s.bake;
   RendererSettings settings;
   settings.mode = RenderMode::Vpl;
   settings.vpls.shadows.enabled = false;

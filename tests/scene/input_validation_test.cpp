@@ -11,6 +11,7 @@
 #include <future>
 #include <random>
 
+#include "expect_load_error.h"
 #include "gltf_fixture.h"
 #include "scene/input_limits.h"
 #include "scene/load.h"
@@ -18,20 +19,9 @@
 namespace bounce {
 namespace {
 
+using test::expectLoadError;
 using test::GltfFixture;
 using test::TempDir;
-
-void expectLoadError(const std::filesystem::path& path, const std::string& reason) {
-  try {
-    loadScene(path);
-    ADD_FAILURE() << path << " loaded; expected an error about '" << reason << "'";
-  } catch (const LoadError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path.filename().string()), std::string::npos) << message;
-    EXPECT_NE(message.find(reason), std::string::npos)
-        << "expected '" << reason << "' in: " << message;
-  }
-}
 
 // loadScene(path) on another thread; a load still blocked after 10 s is a failure, and the
 // FIFO `fifo` is then opened for writing to release it.

@@ -5,27 +5,16 @@
 #include <cmath>
 #include <limits>
 
+#include "expect_load_error.h"
 #include "gltf_fixture.h"
 #include "scene/load.h"
 
 namespace bounce {
 namespace {
 
+using test::expectLoadError;
 using test::GltfFixture;
 using test::TempDir;
-
-// Loads `path`, expecting a LoadError whose message names the file and contains `reason`.
-void expectLoadError(const std::filesystem::path& path, const std::string& reason) {
-  try {
-    loadScene(path);
-    ADD_FAILURE() << path << " loaded; expected an error about '" << reason << "'";
-  } catch (const LoadError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path.filename().string()), std::string::npos) << message;
-    EXPECT_NE(message.find(reason), std::string::npos)
-        << "expected '" << reason << "' in: " << message;
-  }
-}
 
 TEST(MalformedInput, ValidFixtureLoads) {  // the baseline every other case corrupts
   TempDir dir;

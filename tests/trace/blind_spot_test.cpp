@@ -25,30 +25,14 @@ namespace {
 
 using test::addMaterial;
 using test::addQuad;
+using test::downOnto;
 using test::parallelRectangleFormFactor;
 using test::perpendicularFormFactor;
+using test::planeWorld;
 using test::polygonFormFactor;
 
 constexpr double kPiD = std::numbers::pi;
 const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
-
-// A 200 m × 200 m plane at z = 0 facing +z with albedo kPlaneAlbedo; its vertex normals are
-// `shadingNormal` (the geometric one, +z, unless given).
-test::World planeWorld(glm::vec3 shadingNormal = {0, 0, 1}) {
-  test::World world;
-  const uint32_t m = addMaterial(world.scene, glm::vec3(kPlaneAlbedo));
-  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
-  world.scene.meshes.back().normals.assign(4, glm::normalize(shadingNormal));
-  return world;
-}
-
-// A ray straight down onto the plane point (x, y, 0) from `height` above it.
-Ray downOnto(double x, double y, float height) {
-  Ray ray;
-  ray.origin = glm::vec3(static_cast<float>(x), static_cast<float>(y), height);
-  ray.direction = {0, 0, -1};
-  return ray;
-}
 
 // A rectangle [x0,x1]×[y0,y1] at height z whose front (the emitting face) faces −z.
 void addDownwardRectangle(test::World& world, float x0, float x1, float y0, float y1, float z,
@@ -85,7 +69,7 @@ void expectMatches(const std::string& what, const test::Estimate& e, glm::dvec3 
 // F_i the closed-form parallel-rectangle form factors (the emitters do not shadow each other
 // and are black, and light leaving the plane escapes).
 TEST(BlindSpots, UnequalEmittersMatchTheirFormFactors) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   const glm::dvec3 bright(20, 10, 30), dim(1, 2, 0.5);
   addDownwardRectangle(world, 0.2f, 0.4f, -0.1f, 0.1f, 0.8f,
                        addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(bright)));
@@ -140,7 +124,7 @@ TEST(BlindSpots, PerpendicularEmitterMatchesItsFormFactor) {
   const Wall walls[] = {{-0.4f, 0.7f, 0.2f, 1.2f, {{0.0, 0.0}, {0.6, 0.1}, {-0.5, 0.5}}, 8192},
                         {-3.0f, 3.0f, 0.0f, 3.0f, {{0.8, 0.3}, {0.95, -1.0}}, 32768}};
   for (const Wall& wall : walls) {
-    test::World world = planeWorld();
+    test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
     const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le));
     // Counter-clockwise seen from −x: the front faces −x, towards the receivers.
     addQuad(world.scene, {1, wall.y0, wall.z0}, {1, wall.y0, wall.z1}, {1, wall.y1, wall.z1},
@@ -196,7 +180,7 @@ void expectExactly(const std::string& what, const PathTracer& tracer, const Ray&
 TEST(BlindSpots, DeltaLightCosineIsOnTheShadingNormal) {
   const glm::dvec3 up(0, 0, 1);
   {
-    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    test::World world = planeWorld(glm::vec3(kPlaneAlbedo), glm::vec3(kTiltedNormal));
     Light light;
     light.type = LightType::Point;
     light.position = {0, 0, 2};
@@ -213,7 +197,7 @@ TEST(BlindSpots, DeltaLightCosineIsOnTheShadingNormal) {
     }
   }
   {
-    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    test::World world = planeWorld(glm::vec3(kPlaneAlbedo), glm::vec3(kTiltedNormal));
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = glm::normalize(glm::vec3(1, 0.3f, -2));
@@ -244,7 +228,7 @@ TEST(BlindSpots, DeltaLightBelowTheGeometricSurfaceDoesNotLeak) {
   sun.direction = -glm::vec3(toSun);
   sun.irradiance = {3, 2, 1};
   for (const Light& light : {point, sun}) {
-    test::World world = planeWorld(glm::vec3(kTiltedNormal));
+    test::World world = planeWorld(glm::vec3(kPlaneAlbedo), glm::vec3(kTiltedNormal));
     world.scene.lights = {light};
     world.build();
     const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
@@ -343,7 +327,7 @@ double tiltedEmitterFormFactor(glm::dvec3 x, glm::dvec3 cosineNormal, glm::dvec3
 // (whose horizon cuts the emitter), each strategy, 8192 samples, 5 SE.
 TEST(BlindSpots, TiltedEmitterMatchesLambertsFormula) {
   const glm::dvec3 le(3, 4, 5), up(0, 0, 1);
-  test::World plane = planeWorld();
+  test::World plane = planeWorld(glm::vec3(kPlaneAlbedo));
   addTiltedEmitter(plane, le);
   plane.build();
   test::World empty;
@@ -384,7 +368,7 @@ TEST(BlindSpots, TiltedEmitterMatchesLambertsFormula) {
 TEST(BlindSpots, AreaLightOnSmoothNormalsMatchesLambertsFormula) {
   const glm::dvec3 le(3, 4, 5), up(0, 0, 1);
   const glm::dvec3 away(-kTiltedNormal.x, 0.0, kTiltedNormal.z);
-  test::World world = planeWorld(glm::vec3(away));
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo), glm::vec3(away));
   addTiltedEmitter(world, le);
   world.build();
   uint32_t pattern = 700;

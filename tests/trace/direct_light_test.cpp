@@ -13,26 +13,12 @@ namespace {
 
 using test::addMaterial;
 using test::addQuad;
+using test::downOnto;
 using test::parallelRectangleFormFactor;
+using test::planeWorld;
 
 constexpr double kPiD = 3.14159265358979323846;
 const glm::dvec3 kPlaneAlbedo(0.5, 0.7, 0.3);
-
-// A 200 m × 200 m plane at z = 0 facing +z.
-test::World planeWorld() {
-  test::World world;
-  const uint32_t m = addMaterial(world.scene, glm::vec3(kPlaneAlbedo));
-  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
-  return world;
-}
-
-// A ray straight down onto the plane point (x, y, 0) from 1 m above it.
-Ray downOnto(double x, double y) {
-  Ray ray;
-  ray.origin = glm::vec3(static_cast<float>(x), static_cast<float>(y), 1.0f);
-  ray.direction = {0, 0, -1};
-  return ray;
-}
 
 // Delta lights make the estimator deterministic (NEE only; the bounce rays escape), so the
 // tolerance is float rounding: 1e-5 relative.
@@ -46,7 +32,7 @@ void expectRadiance(const PathTracer& tracer, const Ray& ray, glm::dvec3 expecte
 
 // Lo = ρ/π · I · cosθ / r² for a point light of intensity I at height h.
 TEST(DirectLight, PointLightOverPlane) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   Light light;
   light.type = LightType::Point;
   light.position = {0, 0, 2};
@@ -66,7 +52,7 @@ TEST(DirectLight, PointLightOverPlane) {
 // Spot: I·t² with t = (cosα − cos outer)/(cos inner − cos outer) clamped, α the angle off the
 // spot axis; inside the inner cone, in the penumbra and outside the outer cone.
 TEST(DirectLight, SpotLightOverPlane) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   Light light;
   light.type = LightType::Spot;
   light.position = {0, 0, 2};
@@ -91,7 +77,7 @@ TEST(DirectLight, SpotLightOverPlane) {
 
 // Directional: Lo = ρ/π · E · cosθ, E the irradiance at normal incidence.
 TEST(DirectLight, DirectionalLightOverPlane) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   Light light;
   light.type = LightType::Directional;
   light.direction = glm::normalize(glm::vec3(1, 0, -2));
@@ -116,7 +102,7 @@ TEST(DirectLight, DirectionalLightOverPlane) {
 // within 5 standard errors of the estimate (sample variance of the 4096 samples). Each
 // (strategy, point) pair has its own sampler pattern, so their errors are independent.
 TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   const glm::dvec3 le(2, 3, 4);
   const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le));
   addQuad(world.scene, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1},
@@ -155,7 +141,7 @@ TEST(DirectLight, SquareEmitterOverParallelPlaneWithEachStrategy) {
 // rarely samples the emitter's nearby centre well). Each (strategy, point) has its own
 // sampler pattern, so the errors are independent.
 TEST(DirectLight, LargeCloseEmitterMisMatchesFormFactor) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   const glm::dvec3 le(2, 3, 4);
   const double h = 0.3;
   const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le));
@@ -194,7 +180,7 @@ TEST(DirectLight, LargeCloseEmitterMisMatchesFormFactor) {
 // strategy (5 standard errors).
 TEST(DirectLight, OnlyDoubleSidedEmittersEmitFromTheirBackFace) {
   for (bool doubleSided : {false, true}) {
-    test::World world = planeWorld();
+    test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
     const glm::dvec3 le(2, 3, 4);
     const uint32_t light = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(le), doubleSided);
     addQuad(world.scene, {-0.5f, -0.5f, 1}, {0.5f, -0.5f, 1}, {0.5f, 0.5f, 1}, {-0.5f, 0.5f, 1},
@@ -224,7 +210,7 @@ TEST(DirectLight, OnlyDoubleSidedEmittersEmitFromTheirBackFace) {
 // The baker's entry point: irradiance at a point, E = I·cosθ/r² under a point light (exact,
 // deterministic) and E = π·L·F under the square emitter (5 standard errors).
 TEST(DirectLight, IrradianceAtAPoint) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(kPlaneAlbedo));
   Light light;
   light.position = {0, 0, 2};
   light.intensity = {10, 20, 5};
@@ -238,7 +224,7 @@ TEST(DirectLight, IrradianceAtAPoint) {
   const glm::dvec3 expected = glm::dvec3(light.intensity) * (2.0 / std::sqrt(r2)) / r2;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], expected[c], 1e-5 * expected[c]);
 
-  test::World square = planeWorld();
+  test::World square = planeWorld(glm::vec3(kPlaneAlbedo));
   const glm::dvec3 le(2, 3, 4);
   addQuad(square.scene, {-0.5f, -0.5f, 1}, {-0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, -0.5f, 1},
           addMaterial(square.scene, glm::vec3(0.0f), glm::vec3(le)));

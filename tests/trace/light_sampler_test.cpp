@@ -19,16 +19,9 @@ namespace {
 
 using test::addMaterial;
 using test::addQuad;
+using test::planeWorld;
 
 constexpr double kPiD = std::numbers::pi;
-
-// A 200 m × 200 m plane at z = 0 facing +z (albedo irrelevant: irradiance is measured).
-test::World planeWorld() {
-  test::World world;
-  const uint32_t m = addMaterial(world.scene, glm::vec3(0.5f));
-  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
-  return world;
-}
 
 // 20 point lights, intensities 1..40 W/sr (unequal per channel), at heights 1.5..6 m and up to
 // 8 m sideways: a deterministic spread (golden-angle spiral).
@@ -79,7 +72,7 @@ double rec709Luminance(glm::vec3 c) {
 const glm::dvec3 kPoints[] = {{0.0, 0.0, 0.0}, {1.7, -0.6, 0.0}, {-3.0, 2.5, 0.0}};
 
 TEST(LightSampler, PicksInProportionToPower) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(0.5f));  // albedo irrelevant: E is measured
   world.scene.lights = twentyPointLights();
   Light sun;
   sun.type = LightType::Directional;
@@ -119,7 +112,7 @@ TEST(LightSampler, PicksInProportionToPower) {
 }
 
 TEST(LightSampler, TwentyUnequalPointLightsOverAPlane) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(0.5f));  // albedo irrelevant: E is measured
   world.scene.lights = twentyPointLights();
   world.build();
   const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
@@ -137,7 +130,7 @@ TEST(LightSampler, TwentyUnequalPointLightsOverAPlane) {
 // Every kind at once: the 20 point lights, a tilted spot, a directional light and three VPLs
 // (for checks: the tracer samples them as cosine emitters, bake/vpl.h).
 TEST(LightSampler, EveryPunctualKindAndVirtualPointLights) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(0.5f));  // albedo irrelevant: E is measured
   world.scene.lights = twentyPointLights();
   Light spot;
   spot.type = LightType::Spot;
@@ -178,7 +171,7 @@ TEST(LightSampler, EveryPunctualKindAndVirtualPointLights) {
 // pick pmf is ~0.3%, so a BRDF-hit MIS weight without it nearly zeroes the emitter's share
 // (about half of E at the point under it). E = π·Le·F + Σ I cosθ/d², under each strategy.
 TEST(LightSampler, DimAreaLightAmongBrightPointLightsKeepsMisRight) {
-  test::World world = planeWorld();
+  test::World world = planeWorld(glm::vec3(0.5f));  // albedo irrelevant: E is measured
   world.scene.lights = twentyPointLights();
   for (Light& l : world.scene.lights) l.position.z += 4.0f;  // far: little E, much power
   const glm::dvec3 le(6, 5, 4);

@@ -51,6 +51,21 @@ void addInwardBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
           material);  // y = hi, faces −y
 }
 
+World planeWorld(glm::vec3 albedo, glm::vec3 shadingNormal) {
+  World world;
+  const uint32_t m = addMaterial(world.scene, albedo);
+  addQuad(world.scene, {-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, m);
+  world.scene.meshes.back().normals.assign(4, glm::normalize(shadingNormal));
+  return world;
+}
+
+Ray downOnto(double x, double y, float height) {
+  Ray ray;
+  ray.origin = glm::vec3(static_cast<float>(x), static_cast<float>(y), height);
+  ray.direction = {0, 0, -1};
+  return ray;
+}
+
 Camera lookAt(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov) {
   Camera camera;
   camera.name = "test";

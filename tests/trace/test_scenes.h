@@ -37,6 +37,13 @@ struct World {
   void build(RayBackend backend = RayBackend::Embree);
 };
 
+// A 200 m × 200 m plane at z = 0 facing +z, of diffuse reflectance `albedo`, as its own World
+// (not built); its vertex normals are `shadingNormal`, normalised (by default the geometric
+// normal +z).
+World planeWorld(glm::vec3 albedo, glm::vec3 shadingNormal = {0, 0, 1});
+// A ray straight down (−z) onto the plane point (x, y, 0) from `height` metres above it.
+Ray downOnto(double x, double y, float height = 1.0f);
+
 // Mean and unbiased sample variance of n one-sample estimates.
 struct Estimate {
   glm::dvec3 mean{0.0};

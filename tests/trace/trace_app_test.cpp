@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <unistd.h>
@@ -14,6 +13,7 @@
 
 #include "image/image_io.h"
 #include "scene/load.h"
+#include "support/tool_run.h"
 #include "trace/camera_render.h"
 
 namespace bounce {
@@ -43,17 +43,10 @@ class ScratchCleanup : public ::testing::Environment {
 };
 const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::readText;
 
 int run(const std::string& arguments) {
-  const std::string command = kTool + " " + arguments + " 2>/dev/null";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return test::exitCode(std::system((kTool + " " + arguments + " 2>/dev/null").c_str()));
 }
 
 // point_over_plane.gltf: ρ = 0.5 plane, 1 W/sr point light 1 m above (content/README.md).
@@ -199,8 +192,7 @@ TEST(TraceApp, ExtremeCameraAspectIsClamped) {
   const fs::path log = scratch("wide.log");
   const std::string command = kTool + " " + scene.string() + " --height 1 --spp 1 --quiet --out " +
                               out.string() + " 2>" + log.string();
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  ASSERT_EQ(test::exitCode(std::system(command.c_str())), 0);
   EXPECT_EQ(readExr(out).width, 16384);
   const std::string messages = readText(log);
   EXPECT_NE(messages.find("camera 'top' has aspect ratio 1e+06"), std::string::npos) << messages;

@@ -1,0 +1,35 @@
+#include "indirect_reference.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "image/image_io.h"
+
+namespace bounce::test {
+
+Reference cachedIndirectReference(const Scene& scene, const Camera& camera, int size, int spp,
+                                  const std::string& file, const char* program) {
+  namespace fs = std::filesystem;
+  const fs::path seFile = fs::path(file).replace_extension(".se.exr");
+  if (!file.empty() && fs::exists(file) && fs::exists(seFile)) {
+    Reference reference{readExr(file), readExr(seFile)};
+    if (reference.radiance.width != size || reference.radiance.height != size)
+      throw std::runtime_error(file + " is not " + std::to_string(size) + "²");
+    std::fprintf(stderr, "%s: reference %s\n", program, file.c_str());
+    return reference;
+  }
+  std::fprintf(stderr, "%s: tracing the %d² reference at %d spp\n", program, size, spp);
+  const auto start = std::chrono::steady_clock::now();
+  Reference reference = traceIndirectReference(scene, camera, size, size, spp);
+  std::fprintf(stderr, "%s: reference traced in %.0f s\n", program,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (!file.empty()) {
+    writeExr(file, reference.radiance);
+    writeExr(seFile, reference.stdError);
+  }
+  return reference;
+}
+
+}  // namespace bounce::test
