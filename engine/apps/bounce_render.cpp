@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vpl-culling", options.noVplCulling,
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
-               "draw every VPL unoccluded (no shadow cube per VPL group)");
+               "draw every VPL unoccluded (no shadow cubes for the VPL groups' parts)");
   app.add_option("--dynamic-vpls", options.dynamicVpls,
                  "VPLs with dynamic instances in the scene: retrace (default: the light paths "
                  "traced again with them in place, so they shadow the room and reflect light "

@@ -17,7 +17,8 @@ struct TextureUnit {
   static constexpr int kLightTable = 14;        // samplerBuffer: every light (render/light_table.h)
   // sampler2DArrayShadow: the VPL groups' shadow cubes (vpl_shadows.glsl). Beyond the 16 units
   // GL 3.3 guarantees: VplPass turns VPL shadows off, with a warning, on a driver without it.
-  static constexpr int kVplShadow = 15;  // sampler2DArrayShadow: VPL group cubes (vpl_shadows.glsl)
+  static constexpr int kVplShadow =
+      15;  // sampler2DArrayShadow: VPL shadow cubes (vpl_shadows.glsl)
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.
