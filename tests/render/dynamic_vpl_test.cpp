@@ -613,5 +613,24 @@ TEST(MoveFlag, BothToolsRefuseStaticAndUnknownInstancesNamingTheScene) {
   fs::remove_all(dir);
 }
 
+// A --move use takes exactly its four words: the scene path right after it stays the scene
+// (CLI11 2.1 let the use run on and swallow it: "scene is required").
+TEST(MoveFlag, AUseStopsAfterItsFourWords) {
+  const fs::path dir = fs::temp_directory_path() / "bounce_move_words_test";
+  fs::create_directories(dir);
+  for (const auto& [program, extra] : {std::pair<std::string, std::string>{"bounce-render", ""},
+                                       {"bounce-trace", " --spp 1 --quiet"}}) {
+    const fs::path out = dir / "x.exr";
+    fs::remove(out);
+    EXPECT_EQ(run(tool(program) + " --move sphere 0.3 0.3 0.2 " + quote(scenePath()) +
+                      " --width 4 --height 4" + extra + " --out " + quote(out),
+                  dir / "out.log"),
+              0)
+        << program;
+    EXPECT_TRUE(fs::exists(out)) << program;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace bounce
