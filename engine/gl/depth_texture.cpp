@@ -79,14 +79,18 @@ void DepthCubeMap::bind(int unit) const {
   glBindTexture(GL_TEXTURE_CUBE_MAP, id_);
 }
 
+int DepthTextureArray::maxLayers() {
+  GLint layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+  return layers;
+}
+
 DepthTextureArray::DepthTextureArray(int size, int layers) : size_(size), layers_(layers) {
   requireSize(size, size);
-  GLint maxLayers = 0;
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-  if (layers <= 0 || layers > maxLayers)
+  const int limit = maxLayers();
+  if (layers <= 0 || layers > limit)
     throw std::invalid_argument("depth texture array of " + std::to_string(layers) +
-                                " layers (the driver allows 1 to " + std::to_string(maxLayers) +
-                                ")");
+                                " layers (the driver allows 1 to " + std::to_string(limit) + ")");
   glGenTextures(1, &id_);
   glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0,

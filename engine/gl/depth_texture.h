@@ -54,6 +54,7 @@ class DepthCubeMap {
 class DepthTextureArray {
  public:
   DepthTextureArray(int size, int layers);
+  static int maxLayers();  // GL_MAX_ARRAY_TEXTURE_LAYERS of the current context (GL 3.3: ≥ 256)
   ~DepthTextureArray();
   DepthTextureArray(DepthTextureArray&& other) noexcept;
   DepthTextureArray& operator=(DepthTextureArray&&) = delete;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "gl/depth_texture.h"
 #include "gl/texture.h"
 
 #include "render/texture_units.h"
@@ -44,8 +45,30 @@ std::vector<glm::vec4> lightSection(const VplGroups& groups, std::span<const glm
 
 VplPass::VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings& shadows,
                  std::vector<std::string>& warnings) {
-  if (TextureUnit::kVplShadow < gl::Texture2D::maxFragmentUnits())
-    shadows_.emplace(shadows, shaderDir);
+  // 6 array layers per cube: fewer cubes per group, then fewer groups, on a driver with fewer
+  // layers than 6·64·4 (GL 3.3 promises 256; llvmpipe and desktop GPUs give 2048).
+  const int layers = gl::DepthTextureArray::maxLayers();
+  const VplShadowBudget budget =
+      vplShadowBudget(layers, kMaxVplShadowGroups, std::max(shadows.cubesPerGroup, 1));
+  VplShadowSettings fitted = shadows;
+  if (budget.cubesPerGroup < shadows.cubesPerGroup) {
+    fitted.cubesPerGroup = budget.cubesPerGroup;
+    warnings.push_back("the driver's array textures hold " + std::to_string(layers) +
+                       " layers: " + std::to_string(budget.cubesPerGroup) +
+                       " VPL shadow cube(s) per group instead of " +
+                       std::to_string(shadows.cubesPerGroup));
+  }
+  if (budget.groups < kMaxVplShadowGroups && budget.groups > 0) {
+    maxShadowGroups_ = static_cast<std::size_t>(budget.groups);
+    warnings.push_back("the driver's array textures hold " + std::to_string(layers) +
+                       " layers: at most " + std::to_string(budget.groups) +
+                       " VPL groups with shadow cubes");
+  }
+  if (budget.groups == 0)
+    warnings.push_back("the driver's array textures hold " + std::to_string(layers) +
+                       " layers: VPLs cast no shadows (a cube needs 6)");
+  else if (TextureUnit::kVplShadow < gl::Texture2D::maxFragmentUnits())
+    shadows_.emplace(fitted, shaderDir);
   else
     warnings.push_back("the driver gives fragment shaders " +
                        std::to_string(gl::Texture2D::maxFragmentUnits()) +
@@ -55,7 +78,9 @@ VplPass::VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings
 
 void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
                      const VplRenderSettings& settings) {
-  groups_ = vpls.empty() ? VplGroups() : VplGroups(vpls, settings.groups);
+  const std::size_t groups =
+      shadows_ ? std::min(settings.groups, maxShadowGroups_) : settings.groups;
+  groups_ = vpls.empty() ? VplGroups() : VplGroups(vpls, groups);
   VplLightCutSettings cutSettings;
   cutSettings.kappa = settings.culling ? settings.kappa : std::numeric_limits<float>::infinity();
   cutSettings.maxCellsPerAxis = settings.culling ? settings.maxCellsPerAxis : 1;

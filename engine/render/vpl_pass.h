@@ -79,6 +79,8 @@ class VplPass {
   std::vector<glm::vec4> lightTexels_;
   std::vector<glm::vec4> cutTexels_{glm::vec4(0.0f)};  // unattached: one cell, no entries
   std::optional<VplShadowMaps> shadows_;               // empty when the driver lacks kVplShadow
+  // K's ceiling with shadow cubes: the driver's array layers (vplShadowBudget).
+  std::size_t maxShadowGroups_ = kMaxVplShadowGroups;
   bool attached_ = false;
 };
 

@@ -97,6 +97,14 @@ void splitIntoCubes(std::span<const Vpl> vpls, std::span<uint32_t> members, int 
 
 }  // namespace
 
+VplShadowBudget vplShadowBudget(int maxLayers, int groups, int wanted) {
+  VplShadowBudget budget{std::max(groups, 0), std::max(wanted, 1)};
+  while (budget.cubesPerGroup > 1 && 6 * budget.groups * budget.cubesPerGroup > maxLayers)
+    budget.cubesPerGroup /= 2;
+  budget.groups = std::min(budget.groups, std::max(maxLayers, 0) / (6 * budget.cubesPerGroup));
+  return budget;
+}
+
 VplShadowCubes vplShadowCubes(const VplGroups& groups, int cubesPerGroup) {
   if (cubesPerGroup < 1 || (cubesPerGroup & (cubesPerGroup - 1)) != 0)
     throw std::invalid_argument(std::to_string(cubesPerGroup) +

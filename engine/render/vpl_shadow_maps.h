@@ -55,6 +55,15 @@ constexpr int kMaxVplShadowGroups = 64;
 constexpr int kVplShadowCubesPerGroup = 4;
 constexpr int kMaxVplShadowCubes = kMaxVplShadowGroups * kVplShadowCubesPerGroup;
 
+// What fits a driver whose array textures hold `maxLayers` layers (6 per cube; GL 3.3 promises
+// only 256): the cubes per group halved from `wanted` and then, at one cube per group, the groups
+// reduced until 6·groups·cubesPerGroup ≤ maxLayers. `groups` 0 means none fit (maxLayers < 6).
+struct VplShadowBudget {
+  int groups = 0;
+  int cubesPerGroup = 1;
+};
+VplShadowBudget vplShadowBudget(int maxLayers, int groups, int wanted);
+
 // Where the cubes of `groups` sit and which cube each light-table entry reads (GL-free).
 struct VplShadowCubes {
   std::vector<Vpl> origins;      // per cube: the member VPL it sits at (position, normal)

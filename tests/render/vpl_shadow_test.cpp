@@ -673,5 +673,26 @@ TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
   EXPECT_GE(sumRays, 0.2 * sumNone);
 }
 
+// What fits the driver's array layers (6 per cube): llvmpipe's 2048 take 64 groups × 4 cubes;
+// 1024 halve the cubes; GL 3.3's minimum of 256 leaves one cube for each of 42 groups; under 6,
+// none. For every layer count the budget fits, and no larger cube count would.
+TEST(VplShadow, BudgetFitsTheDriversArrayLayers) {
+  const auto budget = [](int layers) { return vplShadowBudget(layers, kMaxVplShadowGroups, 4); };
+  EXPECT_EQ(budget(2048).groups, 64);
+  EXPECT_EQ(budget(2048).cubesPerGroup, 4);
+  EXPECT_EQ(budget(1024).groups, 64);
+  EXPECT_EQ(budget(1024).cubesPerGroup, 2);
+  EXPECT_EQ(budget(256).groups, 42);
+  EXPECT_EQ(budget(256).cubesPerGroup, 1);
+  EXPECT_EQ(budget(5).groups, 0);
+  for (int layers = 0; layers <= 3000; ++layers) {
+    const VplShadowBudget b = budget(layers);
+    ASSERT_LE(6 * b.groups * b.cubesPerGroup, layers) << layers;
+    if (b.cubesPerGroup < 4) {
+      ASSERT_GT(6 * kMaxVplShadowGroups * 2 * b.cubesPerGroup, layers) << layers;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bounce::test
