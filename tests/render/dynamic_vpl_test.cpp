@@ -35,6 +35,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -218,7 +219,10 @@ struct Placement {
 class DynamicSphere : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / "bounce_dynamic_sphere_test";
+    // One folder per process: CTest runs the suite's tests as parallel processes, and each
+    // removes its folder when it ends.
+    dir_ = fs::temp_directory_path() /
+           ("bounce_dynamic_sphere_test_" + std::to_string(static_cast<long>(getpid())));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // Lightmap small and quick (the sphere does not read it); VPLs as content/CMakeLists.txt
