@@ -78,12 +78,17 @@ ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
 void ForwardRenderer::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   passes_->scene.setInstanceTransform(index, transform);
   const std::span<const GpuInstance> instances = passes_->scene.instances();
-  if (index < instances.size() && instances[index].mobility == Mobility::Dynamic) {
-    if (settings_.vplTracer)
-      retraceVpls();
-    else
-      updateVplOcclusion();
-  }
+  if (index < instances.size() && instances[index].mobility == Mobility::Dynamic)
+    dynamicMoved_ = true;  // the VPLs follow in the next frame, once for all of its moves
+}
+
+void ForwardRenderer::followDynamicMoves() {
+  if (!dynamicMoved_) return;
+  dynamicMoved_ = false;
+  if (settings_.vplTracer)
+    retraceVpls();
+  else
+    updateVplOcclusion();
 }
 
 void ForwardRenderer::updateVplOcclusion() {
@@ -190,6 +195,7 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
                    cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
+  followDynamicMoves();
   p.vpls.renderShadows(p.scene);
   p.lightTable.update();
   p.forward.draw(p.scene, p.lightTable, p.shadows, p.lightmap, p.vpls, settings_.mode,

@@ -74,9 +74,10 @@ class ForwardRenderer {
   // Renders offscreen at width x height and reads the radiance back, rows top to bottom.
   Image renderImage(const Camera& camera, int width, int height);
 
-  // Moves instance `index` (object → world) without re-uploading its mesh. Moving a dynamic
-  // instance with VPLs attached re-traces them (RendererSettings::vplTracer), else recomputes
-  // which VPLs its triangles cut off (bake/vpl_occlusion.h) and re-uploads their flux.
+  // Moves instance `index` (object → world) without re-uploading its mesh. After moving dynamic
+  // instances, the next frame re-traces the VPLs once (RendererSettings::vplTracer), else
+  // recomputes which VPLs their triangles cut off (bake/vpl_occlusion.h): moving several
+  // instances (bounce-view moves every instance of a name) costs one re-trace.
   void setInstanceTransform(std::size_t index, const glm::mat4& transform);
   // Per-corner lightmap UVs of instance `index` (vertex attribute 3, gl/vertex_attributes.h);
   // empty removes them.
@@ -121,11 +122,14 @@ class ForwardRenderer {
   void updateVplOcclusion();
   // Traces the VPLs again with every instance at its current transform (settings_.vplTracer).
   void retraceVpls();
+  // Per frame: one re-trace or occlusion update when dynamic instances moved since the last.
+  void followDynamicMoves();
 
   RendererSettings settings_;
   std::vector<Vpl> vpls_;  // the bake's VPLs in file order (path order), for updateVplOcclusion
   float vplClampDistance_ = 0.0f;  // r, m: the bake's (its N over the static area)
   Box vplBounds_;                  // where the VPL grid lies: the static surfaces
+  bool dynamicMoved_ = false;      // a dynamic instance moved since the VPLs last followed
   const Scene& scene_;
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;
