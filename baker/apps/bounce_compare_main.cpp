@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   std::optional<float> errorScale;
   bool json = false;
   bool allowNonFinite = false;
+  int box = 1;
   app.add_option("A", imagePath, "image to assess (linear EXR)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -62,6 +63,10 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--mask", maskPath, "PNG mask: pixels whose value is 0 are excluded")
       ->check(CLI::ExistingFile);
+  app.add_option("--box", box,
+                 "A is K times B's size in each direction: average each KxK block of A first "
+                 "(a supersampled raster against the tracer's area-averaged pixels)")
+      ->check(CLI::Range(1, 64));
   app.add_flag("--json", json, "print the metrics as JSON");
   app.add_flag(
       "--allow-nonfinite", allowNonFinite,
@@ -75,7 +80,15 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const bounce::Image a = bounce::readExr(imagePath);
+    bounce::Image a = bounce::readExr(imagePath);
+    if (box > 1) {
+      if (a.width % box != 0 || a.height % box != 0) {
+        std::cerr << "bounce-compare: " << imagePath << ": " << a.width << "x" << a.height
+                  << " is not a multiple of --box " << box << "\n";
+        return 1;
+      }
+      a = bounce::boxDownsample(a, box);
+    }
     const bounce::Image b = bounce::readExr(referencePath);
     std::optional<bounce::Mask> mask;
     if (!maskPath.empty()) {

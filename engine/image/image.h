@@ -29,4 +29,9 @@ struct Image {
   bool allFinite() const;
 };
 
+// Each k×k block of `image` averaged into one pixel (a box-filtered supersample: the rasterizer
+// samples points, the path tracer averages each pixel's area); the size is rounded down to
+// whole blocks. k ≥ 1.
+Image boxDownsample(const Image& image, int k);
+
 }  // namespace bounce

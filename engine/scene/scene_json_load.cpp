@@ -11,9 +11,15 @@
 //                 "intensity": [r, g, b],          (W/sr; point, spot)
 //                 "irradiance": [r, g, b],         (W/m²; directional)
 //                 "inner_cone": a, "outer_cone": b}],  (radians; spot)
+//     "emitters": [{"name": "...", "radiance": [r, g, b],     (W/(sr·m²), emitted by the front)
+//                   "albedo": [r, g, b], "double_sided": false,  (default 0.8, false)
+//                   "quads": [{"corner": [x, y, z], "u": [..], "v": [..]}, ...]}],
+//                                   (metres, not scaled: corner, corner+u, corner+u+v, corner+v,
+//                                    front face u × v; all quads of one entry are one mesh, as
+//                                    exporters write a fixture's panels)
 //     "camera": {"position": [..], "target": [..], "yfov": 0.9, "znear": 0.05, "zfar": 100}
 //   }
-// Lights and the camera are added to (the camera before) those of the model.
+// Lights, emitters and the camera are added to (the camera before) those of the model.
 #include <cmath>
 #include <sstream>
 #include <string_view>
@@ -94,6 +100,50 @@ bool withinRadiometricLimit(glm::vec3 v) {
   return true;
 }
 
+// One emitter entry as one static instance of one mesh of quads and its emissive material.
+void addEmitter(const std::filesystem::path& path, const json& entry, Scene& scene) {
+  if (!entry.is_object() || !entry.contains("quads") || !entry["quads"].is_array() ||
+      entry["quads"].empty())
+    throw LoadError(path, "each emitter needs \"quads\": a non-empty array");
+  Material material;
+  material.name = entry.value("name", std::string("emitter"));
+  material.emission = vec3Of(path, entry.value("radiance", json()), "radiance");
+  if (entry.contains("albedo")) material.albedo = vec3Of(path, entry["albedo"], "albedo");
+  if (entry.contains("double_sided")) {
+    if (!entry["double_sided"].is_boolean())
+      throw LoadError(path, "'double_sided' must be true or false");
+    material.doubleSided = entry["double_sided"].get<bool>();
+  }
+  if (!withinRadiometricLimit(material.emission) || !withinRadiometricLimit(material.albedo))
+    throw LoadError(path, "emitter '" + material.name +
+                              "' has a negative radiance or albedo, or one beyond " +
+                              std::to_string(kMaxRadiometric));
+  Mesh mesh;
+  mesh.name = material.name;
+  mesh.material = static_cast<uint32_t>(scene.materials.size());
+  for (const json& quad : entry["quads"]) {
+    if (!quad.is_object()) throw LoadError(path, "each quad needs corner, u and v");
+    const glm::vec3 c = vec3Of(path, quad.value("corner", json()), "corner");
+    const glm::vec3 u = vec3Of(path, quad.value("u", json()), "u");
+    const glm::vec3 v = vec3Of(path, quad.value("v", json()), "v");
+    const glm::vec3 n = glm::cross(u, v);
+    if (!(glm::length(n) > 0.0f))
+      throw LoadError(path, "emitter '" + material.name + "' has a quad of zero area");
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    for (const glm::vec3& p : {c, c + u, c + u + v, c + v}) {
+      mesh.positions.push_back(p);
+      mesh.normals.push_back(glm::normalize(n));
+    }
+    for (const uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
+  }
+  Instance instance;
+  instance.name = material.name;
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size());
+  scene.materials.push_back(std::move(material));
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back(std::move(instance));
+}
+
 // The same limits the model's own loader applied (docs/input_limits.md), now to what the wrapper
 // made of it: its scale moves every vertex, light and camera, and it adds lights and a camera.
 void checkLimits(const std::filesystem::path& path, const Scene& scene) {
@@ -161,6 +211,10 @@ Scene loadSceneJson(const std::filesystem::path& path) {
   if (doc.contains("lights")) {
     if (!doc["lights"].is_array()) throw LoadError(path, "'lights' must be an array");
     for (const json& entry : doc["lights"]) scene.lights.push_back(lightOf(path, entry));
+  }
+  if (doc.contains("emitters")) {
+    if (!doc["emitters"].is_array()) throw LoadError(path, "'emitters' must be an array");
+    for (const json& entry : doc["emitters"]) addEmitter(path, entry, scene);
   }
   if (doc.contains("camera")) {
     const json& c = doc["camera"];

@@ -15,18 +15,7 @@
 
 namespace bounce::test {
 
-// Each k×k block of `image` averaged into one pixel.
-inline Image boxDownsample(const Image& image, int k) {
-  Image out(image.width / k, image.height / k);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) {
-      glm::dvec3 sum(0.0);
-      for (int j = 0; j < k; ++j)
-        for (int i = 0; i < k; ++i) sum += glm::dvec3(image.at(x * k + i, y * k + j));
-      out.at(x, y) = glm::vec3(sum / double(k * k));
-    }
-  return out;
-}
+using bounce::boxDownsample;  // engine/image/image.h
 
 // Pixels (of the k-times smaller image) none of whose k×k samples in `supersampled` (a forward
 // render) sees an emitter, i.e. has radiance of at least half the weakest emitter's.
