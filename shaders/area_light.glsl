@@ -8,11 +8,14 @@
 // not containing p projects to one side. An emitter gives light only to the side its front face
 // (counter-clockwise) looks at, or both sides when double-sided.
 //
-// Emitter table (uEmitters, RGBA32F, 4 texels per row, one row per triangle):
-//   texels 0..2: world vertices (xyz, metres); texel 3: radiance (rgb), w = 1 if double-sided.
+// Emitter table (uEmitters, RGBA32F, 4 texels per row): first one row per triangle,
+//   texels 0..2: world vertices (xyz, metres); texel 3: radiance (rgb), w = 1 if double-sided;
+// then one row per area light (engine/scene/area_lights.h: emitters cut by their shape),
+//   texel 0: (first triangle row, end row, 0, 0); the static lights come first.
 
 uniform sampler2D uEmitters;
-uniform int uEmitterCount;
+uniform int uEmitterCount;    // triangle rows
+uniform int uAreaLightCount;  // light rows, after the triangles
 
 // One edge's term γ · n·(a×b)/|a×b| of the contour sum (0 for a degenerate edge).
 float edgeTerm(vec3 a, vec3 b, vec3 n) {
@@ -53,31 +56,40 @@ float clippedTriangleIrradiancePerRadiance(vec3 a, vec3 b, vec3 c, vec3 n) {
   return 0.5 * abs(sum);
 }
 
-// Unshadowed E of every emitter triangle, each times the visible fraction V of the area light it
-// belongs to when that light has a shadow map (shadow_area.glsl; ng: the receiver's geometric
-// normal). V is evaluated once per light and fragment, when its first triangle needs it.
-vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng) {
+// E of one triangle (row `i`) at p, unshadowed (0 when p is behind a single-sided emitter).
+vec3 emitterTriangleIrradiance(int i, vec3 p, vec3 n) {
+  vec3 v0 = texelFetch(uEmitters, ivec2(0, i), 0).xyz;
+  vec3 v1 = texelFetch(uEmitters, ivec2(1, i), 0).xyz;
+  vec3 v2 = texelFetch(uEmitters, ivec2(2, i), 0).xyz;
+  vec4 radiance = texelFetch(uEmitters, ivec2(3, i), 0);
+  // Signed distance of p from the emitter's plane, along its front normal. Points on the plane
+  // (the emitter itself, coplanar neighbours) see it edge-on and receive nothing.
+  vec3 front = normalize(cross(v1 - v0, v2 - v0));
+  float height = dot(front, p - v0);
+  if (abs(height) < 1e-5 || (height < 0.0 && radiance.w < 0.5)) return vec3(0.0);
+  return radiance.rgb * clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
+}
+
+// Σ over area lights of V_l · E_l: E_l the exact unshadowed irradiance of light l's triangles,
+// V_l its visible fraction: baked per lightmap texel for static lights on a static surface
+// (baked_visibility.glsl), else from its shadow map when it has one (shadow_area.glsl), else 1
+// (ng: the receiver's geometric normal; atlasUv: its lightmap UV).
+vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
   vec3 irradiance = vec3(0.0);
-  float visibility[MAX_AREA_SHADOWS];
-  for (int s = 0; s < MAX_AREA_SHADOWS; ++s) visibility[s] = -1.0;
-  for (int i = 0; i < uEmitterCount; ++i) {
-    vec3 v0 = texelFetch(uEmitters, ivec2(0, i), 0).xyz;
-    vec3 v1 = texelFetch(uEmitters, ivec2(1, i), 0).xyz;
-    vec3 v2 = texelFetch(uEmitters, ivec2(2, i), 0).xyz;
-    vec4 radiance = texelFetch(uEmitters, ivec2(3, i), 0);
-    // Signed distance of p from the emitter's plane, along its front normal. Points on the plane
-    // (the emitter itself, coplanar neighbours) see it edge-on and receive nothing.
-    vec3 front = normalize(cross(v1 - v0, v2 - v0));
-    float height = dot(front, p - v0);
-    if (abs(height) < 1e-5 || (height < 0.0 && radiance.w < 0.5)) continue;
-    float e = clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
-    if (e <= 0.0) continue;
-    int slot = areaShadowSlot(i);
-    if (slot >= 0) {
-      if (visibility[slot] < 0.0) visibility[slot] = areaVisibility(slot, p, ng);
-      e *= visibility[slot];
+  BakedVisibilityTexels baked;
+  if (uHasBakedVisibility) baked = bakedVisibilityTexels(atlasUv, uLightmapSize);
+  for (int l = 0; l < uAreaLightCount; ++l) {
+    vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
+    vec3 e = vec3(0.0);
+    for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
+    if (e == vec3(0.0)) continue;
+    if (uHasBakedVisibility && l < uBakedLightCount) {
+      e *= bakedVisibility(baked, l);
+    } else {
+      int slot = areaShadowSlot(int(rows.x));
+      if (slot >= 0) e *= areaVisibility(slot, p, ng);
     }
-    irradiance += radiance.rgb * e;
+    irradiance += e;
   }
   return irradiance;
 }

@@ -14,6 +14,7 @@
 #include "atlas/atlas.h"
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
+#include "bake/visibility_file.h"
 #include "bake/vpl_file.h"
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
@@ -242,12 +243,29 @@ int run(const Options& o) {
         {"coverage", bake.seconds.coverage},
         {"leakGuard", bake.seconds.leakGuard},
         {"irradiance", bake.seconds.irradiance},
+        {"visibility", bake.seconds.visibility},
         {"denoise", bake.seconds.denoise},
         {"dilate", bake.seconds.dilate},
         {"stitch", bake.seconds.stitch},
         {"vpls", vplSeconds},
         {"total", totalSeconds}}}};
   if (o.vpls > 0) manifest["vpls"] = vplManifest(vpls, vplArea, o);
+  if (bake.visibility) {
+    const bounce::VisibilityBakeReport& v = bake.visibilityReport;
+    manifest["visibility"] = {
+        {"file", bounce::kVisibilityFileName},
+        {"what",
+         "per texel, the visible fraction V of each static area light's unshadowed irradiance "
+         "(bake/light_visibility.h); the renderer multiplies its exact polygon irradiance by it"},
+        {"lights", v.lights},
+        {"slotsPerTexel", bounce::kVisibilitySlots},
+        {"samplesPerLight", settings.visibility.samplesPerLight},
+        {"texelsReached", v.texelsWithLight},
+        {"texelsOverSlots", v.texelsOverSlots},
+        {"otherLightsShare", v.otherLightsShare},
+        {"rays", v.rays},
+        {"seconds", bake.seconds.visibility}};
+  }
 
   const std::filesystem::path out =
       o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;
@@ -256,6 +274,7 @@ int run(const Options& o) {
   folder.irradiance = bake.irradiance;
   folder.manifestJson = manifest.dump(1) + "\n";
   if (o.vpls > 0) folder.vpls = vpls.vpls;
+  folder.visibility = bake.visibility;
   bounce::writeBake(out, folder);
   if (!o.png.empty()) {
     // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
@@ -276,6 +295,15 @@ int run(const Options& o) {
       100.0 * bake.meanRelativeError, 100.0 * bake.p95RelativeError,
       manifest["rays"]["perSecond"].get<double>() * 1e-6, bakeSeconds + since(clock),
       bake.seconds.irradiance, out.string().c_str());
+  if (bake.visibility && bake.visibilityReport.texelsOverSlots > 0)
+    std::fprintf(stderr,
+                 "bounce-bake: note: %llu of %llu texels are reached by more than %d static area "
+                 "lights: they name the %d brightest and share one visible fraction among the "
+                 "others (%.1f%% of the unshadowed irradiance)\n",
+                 static_cast<unsigned long long>(bake.visibilityReport.texelsOverSlots),
+                 static_cast<unsigned long long>(bake.visibilityReport.texelsWithLight),
+                 bounce::kVisibilitySlots, bounce::kVisibilitySlots - 1,
+                 100.0 * bake.visibilityReport.otherLightsShare);
   if (bake.nonFiniteSamples > 0)
     std::fprintf(stderr,
                  "bounce-bake: warning: %llu samples were non-finite (NaN or infinite scene data "

@@ -68,6 +68,22 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.nonFiniteSamples = gathered.nonFiniteSamples;
   bake.seconds.irradiance = clock.lap();
 
+  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
+  const AreaLightSet lights = sceneAreaLights(scene);
+  if (settings.visibility.enabled && lights.staticCount() > 0) {
+    VisibilityBakeSettings visibility = settings.visibility;
+    visibility.seed = settings.irradiance.seed;
+    visibility.threads = settings.irradiance.threads;
+    visibility.progress = settings.irradiance.progress;
+    bake.visibility =
+        bakeLightVisibility(lights, kernel, coverage, visibility, bake.visibilityReport);
+    bake.rays += bake.visibilityReport.rays;
+    std::vector<uint8_t> filled(texels, 0);
+    for (std::size_t t = 0; t < texels; ++t) filled[t] = coverage.covered(t) ? 1 : 0;
+    fillVisibility(*bake.visibility, filled, &labels);
+  }
+  bake.seconds.visibility = clock.lap();
+
   std::vector<uint8_t> valid(texels, 0);
   std::vector<float> errors;
   for (std::size_t t = 0; t < texels; ++t) {
@@ -86,7 +102,6 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     bake.p95RelativeError = errors[k];
   }
 
-  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
   if (settings.denoise) {
     DenoiseGuide guide;
     guide.position.assign(texels, glm::vec3(0.0f));

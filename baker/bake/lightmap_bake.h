@@ -1,12 +1,14 @@
 // The bake, one plain function running its steps in order: texel coverage → leak guard →
-// irradiance → denoise (optional) → fill invalid texels and dilate into the padding → seam
-// stitching. GL-free; bounce-bake and the tests call it.
+// irradiance → static area lights' visibility → denoise (optional) → fill invalid texels and dilate
+// into the padding → seam stitching. GL-free; bounce-bake and the tests call it.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "bake/leak_guard.h"
+#include "bake/light_visibility_bake.h"
 #include "bake/lightmap_layout.h"
 #include "bake/texel_irradiance.h"
 #include "image/image.h"
@@ -19,15 +21,19 @@ namespace bounce {
 struct LightmapBakeSettings {
   IrradianceSettings irradiance;
   LeakGuardSettings leak;
-  int pointsPerTexel = 8;  // candidate sample points per texel
+  VisibilityBakeSettings visibility;  // seed and threads: the irradiance's
+  int pointsPerTexel = 8;             // candidate sample points per texel
   bool denoise = false;
   bool stitch = true;
   bool dilate = true;
 };
 
 struct BakePhaseSeconds {
-  double coverage = 0, leakGuard = 0, irradiance = 0, denoise = 0, dilate = 0, stitch = 0;
-  double total() const { return coverage + leakGuard + irradiance + denoise + dilate + stitch; }
+  double coverage = 0, leakGuard = 0, irradiance = 0, visibility = 0, denoise = 0, dilate = 0,
+         stitch = 0;
+  double total() const {
+    return coverage + leakGuard + irradiance + visibility + denoise + dilate + stitch;
+  }
 };
 
 struct LightmapBake {
@@ -49,6 +55,10 @@ struct LightmapBake {
   std::size_t seams = 0;
   float seamMismatch = 0.0f;  // after stitching, relative (stitchSeams)
   BakePhaseSeconds seconds;
+  // The static area lights' visibility per texel (light_visibility_bake.h), when the scene has
+  // static area lights and settings.visibility.enabled.
+  std::optional<BakedVisibility> visibility;
+  VisibilityBakeReport visibilityReport;
 };
 
 // bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): the atlas texel budget, at

@@ -17,9 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/bake_input_file.h"
+#include "bake/visibility_file.h"
 #include "bake/vpl_file.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "scene/area_lights.h"
 #include "scene/gltf_schema.h"  // checkJsonDepth
 #include "scene/load_error.h"
 
@@ -368,6 +370,22 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                       " says " + std::to_string(bake.layout.width) + "x" +
                                       std::to_string(bake.layout.height));
   if (fs::exists(dir / kVplFileName)) bake.vpls = readVplFile(dir / kVplFileName);
+  const fs::path visibilityFile = dir / kVisibilityFileName;
+  if (fs::exists(visibilityFile)) {
+    bake.visibility = readVisibilityFile(visibilityFile);
+    if (bake.visibility->width != bake.layout.width ||
+        bake.visibility->height != bake.layout.height)
+      throw LoadError(visibilityFile, "is " + std::to_string(bake.visibility->width) + "x" +
+                                          std::to_string(bake.visibility->height) + ", " +
+                                          kLayoutName + " says " +
+                                          std::to_string(bake.layout.width) + "x" +
+                                          std::to_string(bake.layout.height));
+    const std::size_t lights = sceneAreaLights(scene).staticCount();
+    if (bake.visibility->lightCount != lights)
+      throw LoadError(visibilityFile, "holds " + std::to_string(bake.visibility->lightCount) +
+                                          " static area lights, " + scene.source + " has " +
+                                          std::to_string(lights) + ": rebake");
+  }
   return bake;
 }
 
@@ -399,6 +417,7 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     writeFileAtomically(tmp / kLayoutName, encodeLayout(bake.layout));
     writeExr(tmp / kLightmapName, bake.irradiance);
     if (bake.vpls) writeVplFile(tmp / kVplFileName, *bake.vpls);
+    if (bake.visibility) writeVisibilityFile(tmp / kVisibilityFileName, *bake.visibility);
     const std::string& json = bake.manifestJson;
     writeFileAtomically(tmp / kManifestName,
                         {reinterpret_cast<const unsigned char*>(json.data()), json.size()});

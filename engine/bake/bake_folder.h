@@ -8,6 +8,8 @@
 //                         rows top first (see lightmap_layout.h)
 //   <dir>/layout.bin      the LightmapLayout (versioned binary)
 //   <dir>/vpls            the virtual point lights (optional; engine/bake/vpl_file.h)
+//   <dir>/visibility.bin  the static area lights' visibility per texel (optional;
+//                         engine/bake/visibility_file.h, bake/light_visibility.h)
 //
 // A folder is written whole or not at all: into "<dir>.tmp-<pid>", then renamed over <dir>, so
 // an interrupted bake leaves the previous one intact.
@@ -18,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/light_visibility.h"
 #include "bake/lightmap_layout.h"
 #include "bake/vpl.h"
 #include "image/image.h"
@@ -34,6 +37,8 @@ struct Bake {
   // The VPLs (written to and read from <dir>/vpls when present; bake.json's "vpls" describes
   // them).
   std::optional<std::vector<Vpl>> vpls;
+  // The static area lights' baked visibility (<dir>/visibility.bin when present).
+  std::optional<BakedVisibility> visibility;
 };
 
 // Hash of everything in the scene that changes a bake (geometry, instances and their mobility,

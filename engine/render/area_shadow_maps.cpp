@@ -6,29 +6,12 @@
 #include "render/texture_units.h"
 
 namespace bounce {
-namespace {
-
-// The emitter table's rows (4 texels each, shaders/area_light.glsl) as triangles.
-std::vector<EmitterTriangle> emitterTriangles(const GpuScene& scene) {
-  const std::span<const glm::vec4> table = scene.emitterTable();
-  const std::span<const uint32_t> owner = scene.emitterInstances();
-  std::vector<EmitterTriangle> triangles;
-  for (std::size_t row = 0; row < owner.size(); ++row) {
-    const glm::vec4* t = &table[row * 4];
-    const uint32_t instance = owner[row];
-    triangles.push_back({glm::vec3(t[0]), glm::vec3(t[1]), glm::vec3(t[2]), glm::vec3(t[3]),
-                         t[3].w > 0.5f, instance, scene.instances()[instance].material});
-  }
-  return triangles;
-}
-
-}  // namespace
-
 void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnings) {
   if (!settings_.enabled) return;
-  const std::vector<AreaLight> lights = groupAreaLights(emitterTriangles(scene));
+  const std::vector<AreaLight>& lights = scene.areaLights().lights;
   for (const uint32_t i : pickShadowedAreaLights(lights, kMaxAreaShadows)) {
     Cube cube;
+    cube.index = i;
     cube.light = lights[i];
     cubes_.push_back(std::move(cube));
   }
@@ -41,21 +24,19 @@ void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnin
 
 void AreaShadowMaps::place(const GpuScene& scene) {
   emitterVersion_ = scene.emitterVersion();
-  const std::vector<EmitterTriangle> triangles = emitterTriangles(scene);
-  const std::vector<AreaLight> lights = groupAreaLights(triangles);
+  const AreaLightSet& set = scene.areaLights();
   const Box sceneBox = scene.bounds();
   for (Cube& cube : cubes_) {
-    const auto same = std::find_if(lights.begin(), lights.end(), [&](const AreaLight& l) {
-      return l.instance == cube.light.instance && l.material == cube.light.material;
-    });
-    if (same == lights.end()) continue;  // cannot happen: moving keeps an instance's emitters
-    cube.light = *same;
+    // A moved instance is cut into the same lights (the rule is rigid-motion invariant) unless
+    // rounding changes a bit-equal edge: then the cube keeps its old light.
+    if (cube.index >= set.lights.size() || set.lights[cube.index].instance != cube.light.instance)
+      continue;
+    cube.light = set.lights[cube.index];
     // The light's own instance is left out of its map (render), so its centre can see past it.
     cube.origin = cube.light.centre;
-    cube.points = samplePoints(cube.light, triangles, kAreaShadowSamples);
-    const auto [lo, hi] =
-        std::minmax_element(cube.light.triangles.begin(), cube.light.triangles.end());
-    cube.rows = glm::ivec2(static_cast<int>(*lo), static_cast<int>(*hi) + 1);
+    cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
+    cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
+                           static_cast<int>(cube.light.first + cube.light.count));
     int resolution = settings_.resolution;
     // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
     // scene's diagonal at the distance of its centre.

@@ -1,4 +1,4 @@
-// Area-light shadows: for each of the most powerful area lights (render/area_lights.h), a depth
+// Area-light shadows: for each of the most powerful area lights (scene/area_lights.h), a depth
 // cube map from the light's centre storing distance/far (the point lights' depth pass, less the
 // light's own instance), read by shaders/shadow_area.glsl as plain distances (no
 // comparison) for percentage-closer soft shadows. The lights' unshadowed irradiance stays the
@@ -13,7 +13,6 @@
 #include "gl/depth_sampler.h"
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
-#include "render/area_lights.h"
 #include "render/gpu_scene.h"
 #include "render/shadow_map_geometry.h"
 
@@ -39,6 +38,7 @@ class AreaShadowMaps {
 
  private:
   struct Cube {
+    std::size_t index = 0;  // into GpuScene::areaLights().lights
     AreaLight light;
     glm::vec3 origin{0.0f};         // the map's centre: the light's area-weighted centre
     std::vector<glm::vec3> points;  // kAreaShadowSamples points on the light, world metres

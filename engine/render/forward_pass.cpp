@@ -19,6 +19,7 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Sh
   lights.bind(program_);
   shadows.bind(program_);
   program_.set("uEmitterCount", scene.emitterCount());
+  program_.set("uAreaLightCount", scene.areaLightCount());
   program_.set("uEmitters", TextureUnit::kEmitters);
   program_.set("uAlbedoTexture", TextureUnit::kAlbedo);
   scene.bindEmitters(TextureUnit::kEmitters);

@@ -125,6 +125,9 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
   p.lightmap.attach(bake, p.scene);
+  if (!p.lightmap.visibilityRefusal().empty())
+    warnings_.push_back("the bake's area-light visibility is not used (" +
+                        p.lightmap.visibilityRefusal() + "): area lights use their shadow maps");
   p.lights.setBakedDirectInLightmap(true);
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {

@@ -103,54 +103,54 @@ GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
   }
   uploadEmitters();
   if (emitterCount_ > 256)
-    warnings.push_back(std::to_string(emitterCount_) +
-                       " emissive triangles: each fragment loops over all of them (slow)");
+    warnings.push_back(std::to_string(emitterCount_) + " emissive triangles in " +
+                       std::to_string(areaLights_.lights.size()) +
+                       " area lights: each fragment loops over all of them (slow)");
 }
 
 GpuScene::~GpuScene() = default;
 
 void GpuScene::uploadEmitters() {
-  // World-space emitter triangles (winding flipped for mirrored instances, so the front face
-  // stays the emitting side), 4 texels each: see shaders/area_light.glsl.
-  std::vector<glm::vec4> table;
-  std::vector<uint32_t> owners;
-  for (const GpuInstance& instance : instances_) {
-    const GpuMaterial& material = materials_[instance.material];
-    if (material.emission == glm::vec3(0.0f)) continue;
-    const Mesh& mesh = scene_.meshes[instance.mesh];
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      glm::vec3 p[3];
-      for (int c = 0; c < 3; ++c) {
-        const uint32_t v = mesh.indices[t + static_cast<std::size_t>(c)];
-        p[c] = v < mesh.positions.size()
-                   ? glm::vec3(instance.model * glm::vec4(mesh.positions[v], 1.0f))
-                   : glm::vec3(0.0f);
-      }
-      if (instance.mirrored) std::swap(p[1], p[2]);
-      if (!isEmitterTriangle(materialOf(scene_, mesh.material),
-                             glm::cross(p[1] - p[0], p[2] - p[0])))
-        continue;
-      for (const glm::vec3& corner : p) table.emplace_back(corner, 0.0f);
-      table.emplace_back(material.emission, material.doubleSided ? 1.0f : 0.0f);
-      owners.push_back(static_cast<uint32_t>(&instance - instances_.data()));
-    }
-  }
+  // The area lights cut by their shape (scene/area_lights.h) at the instances' current places,
+  // their triangles 4 texels a row, then one row per light: see shaders/area_light.glsl.
+  std::vector<glm::mat4> models;
+  for (const GpuInstance& instance : instances_) models.push_back(instance.model);
+  AreaLightSet lights = sceneAreaLights(scene_, models);
   const bool first = !emitters_.has_value();
-  emitterCount_ = static_cast<int>(table.size() / 4);
-  if (emitterCount_ > gl::Texture2D::maxSize()) {
+  const std::size_t rowLimit = static_cast<std::size_t>(gl::Texture2D::maxSize());
+  if (lights.triangles.size() + lights.lights.size() > rowLimit) {
+    // Whole lights only, in order (the static ones first): the rest are dropped.
+    std::size_t keep = 0;
+    while (keep < lights.lights.size() &&
+           lights.lights[keep].first + lights.lights[keep].count + keep + 1 <= rowLimit)
+      ++keep;
     if (first)
-      warnings_->push_back(std::to_string(emitterCount_) + " emissive triangles; only the first " +
-                           std::to_string(gl::Texture2D::maxSize()) + " light the scene");
-    emitterCount_ = gl::Texture2D::maxSize();
-    table.resize(static_cast<std::size_t>(emitterCount_) * 4);
-    owners.resize(static_cast<std::size_t>(emitterCount_));
+      warnings_->push_back(std::to_string(lights.lights.size()) + " area lights (" +
+                           std::to_string(lights.triangles.size()) +
+                           " emissive triangles); only the first " + std::to_string(keep) +
+                           " light the scene");
+    const std::size_t triangles =
+        keep == 0 ? 0 : lights.lights[keep - 1].first + lights.lights[keep - 1].count;
+    lights.lights.resize(keep);
+    lights.triangles.resize(triangles);
+    lights.cumulativeArea.resize(triangles);
   }
-  emitterTable_ = table;
-  emitterInstances_ = owners;
+  std::vector<glm::vec4> table;
+  for (const EmitterTriangle& e : lights.triangles) {
+    for (const glm::vec3& corner : {e.v0, e.v1, e.v2}) table.emplace_back(corner, 0.0f);
+    table.emplace_back(e.radiance, e.doubleSided ? 1.0f : 0.0f);
+  }
+  for (const AreaLight& light : lights.lights) {
+    table.emplace_back(static_cast<float>(light.first),
+                       static_cast<float>(light.first + light.count), 0.0f, 0.0f);
+    for (int k = 0; k < 3; ++k) table.emplace_back(0.0f);
+  }
+  emitterCount_ = static_cast<int>(lights.triangles.size());
+  areaLights_ = std::move(lights);
   ++emitterVersion_;
   if (table.empty()) table.assign(4, glm::vec4(0.0f));  // samplers need a texture
   emitters_.reset();
-  emitters_.emplace(4, std::max(emitterCount_, 1), table);
+  emitters_.emplace(4, static_cast<int>(table.size() / 4), table);
 }
 
 void GpuScene::setInstanceTransform(std::size_t index, const glm::mat4& transform) {

@@ -17,6 +17,7 @@
 #include "gl/shader.h"
 #include "gl/texture.h"
 #include "render/frustum.h"
+#include "scene/area_lights.h"
 #include "scene/scene.h"
 
 namespace bounce {
@@ -58,12 +59,13 @@ class GpuScene {
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   // World bounds of every instance (metres); empty for an empty scene.
   Box bounds() const;
+  // Emissive triangles uploaded (the area lights' rows of the emitter table).
   int emitterCount() const { return emitterCount_; }
-  // The emitter table as uploaded (4 texels per emissive triangle, shaders/area_light.glsl),
-  // the instance each row belongs to (an instance's rows are contiguous), and a count that
-  // changes whenever the table is rebuilt (an emitting instance moved). For area-light shadows.
-  std::span<const glm::vec4> emitterTable() const { return emitterTable_; }
-  std::span<const uint32_t> emitterInstances() const { return emitterInstances_; }
+  // The area lights as uploaded (scene/area_lights.h; their triangles are the emitter table's
+  // rows in order, shaders/area_light.glsl), and a count that changes whenever they are cut
+  // again (an emitting instance moved). For area-light shadows and baked visibility.
+  const AreaLightSet& areaLights() const { return areaLights_; }
+  int areaLightCount() const { return static_cast<int>(areaLights_.lights.size()); }
   int emitterVersion() const { return emitterVersion_; }
 
   // Sets uModel and uNormalMatrix for `instance`, then draws it.
@@ -86,8 +88,7 @@ class GpuScene {
   std::vector<gl::Texture2D> textures_;
   std::optional<gl::Texture2D> emitters_;
   int emitterCount_ = 0;
-  std::vector<glm::vec4> emitterTable_;
-  std::vector<uint32_t> emitterInstances_;
+  AreaLightSet areaLights_;
   int emitterVersion_ = 0;
   std::vector<std::string>* warnings_ = nullptr;
 };

@@ -48,6 +48,7 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   charts_.emplace(layout.width, layout.height, charts.pixels, gl::Filter::Nearest,
                   gl::Wrap::ClampToEdge);
   size_ = {static_cast<float>(layout.width), static_cast<float>(layout.height)};
+  attachVisibility(bake);
   const std::span<const GpuInstance> instances = scene.instances();
   lightmapped_.assign(instances.size(), 0);
   for (std::size_t i = 0; i < instances.size(); ++i) scene.setLightmapUv(i, {});
@@ -61,6 +62,42 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   attached_ = true;
 }
 
+void LightmapPass::attachVisibility(const Bake& bake) {
+  visibility_.reset();
+  bakedLights_ = 0;
+  visibilityRefusal_.clear();
+  if (!bake.visibility) return;
+  const BakedVisibility& v = *bake.visibility;
+  if (gl::Texture2D::maxFragmentUnits() <= TextureUnit::kBakedVisibility) {
+    visibilityRefusal_ = "the driver has " + std::to_string(gl::Texture2D::maxFragmentUnits()) +
+                         " fragment texture units, baked visibility needs unit " +
+                         std::to_string(TextureUnit::kBakedVisibility);
+    return;
+  }
+  if (2 * v.width > gl::Texture2D::maxSize() || v.height > gl::Texture2D::maxSize()) {
+    visibilityRefusal_ = "the visibility table " + std::to_string(2 * v.width) + "x" +
+                         std::to_string(v.height) + " exceeds the driver's texture size " +
+                         std::to_string(gl::Texture2D::maxSize());
+    return;
+  }
+  // Texel (2x, y): the slots' light indices (−1 empty, −2 every other light); (2x+1, y): V.
+  std::vector<glm::vec4> table(static_cast<std::size_t>(2 * v.width) *
+                               static_cast<std::size_t>(v.height));
+  for (std::size_t t = 0; t < v.texels.size(); ++t) {
+    const TexelVisibility& texel = v.texels[t];
+    glm::vec4 lights, visible;
+    for (int s = 0; s < kVisibilitySlots; ++s) {
+      const uint16_t l = texel.light[s];
+      lights[s] = l == kNoLight ? -1.0f : l == kOtherLights ? -2.0f : static_cast<float>(l);
+      visible[s] = texel.visible[s];
+    }
+    table[2 * t] = lights;
+    table[2 * t + 1] = visible;
+  }
+  visibility_.emplace(2 * v.width, v.height, table);
+  bakedLights_ = static_cast<int>(v.lightCount);
+}
+
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   program.set("uLightingMode", lightingModeIndex(attached_ ? mode : RenderMode::Direct));
   program.set("uLightmap", TextureUnit::kLightmap);
@@ -68,10 +105,19 @@ void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   program.set("uLightmapSize", size_);
   irradiance_->bind(TextureUnit::kLightmap);
   charts_->bind(TextureUnit::kLightmapCharts);
+  program.set("uBakedLightCount", bakedLights_);
+  if (visibility_) {
+    program.set("uBakedVisibility", TextureUnit::kBakedVisibility);
+    visibility_->bind(TextureUnit::kBakedVisibility);
+  } else {
+    program.set("uBakedVisibility", TextureUnit::kLightmap);  // never read; a sampler2D unit
+  }
 }
 
 void LightmapPass::setInstance(gl::Program& program, std::size_t index) const {
-  program.set("uHasLightmap", index < lightmapped_.size() && lightmapped_[index] ? 1 : 0);
+  const bool lightmapped = index < lightmapped_.size() && lightmapped_[index];
+  program.set("uHasLightmap", lightmapped ? 1 : 0);
+  program.set("uHasBakedVisibility", lightmapped && visibility_ ? 1 : 0);
 }
 
 }  // namespace bounce

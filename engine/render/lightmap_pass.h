@@ -1,5 +1,6 @@
 // The lightmap stage of the lit pass (shaders/lightmap.glsl): uploads a bake's irradiance
-// lightmap (RGB32F, W/m², bilinear, clamped at the borders) and its chart image, gives every
+// lightmap (RGB32F, W/m², bilinear, clamped at the borders), its chart image and, when the bake
+// has it, the static area lights' visibility per texel (shaders/baked_visibility.glsl), gives every
 // static instance with an atlas region its per-corner atlas UVs (vertex attribute 3), and tells
 // the forward shader, per frame, the mode and, per draw, whether the instance is lightmapped.
 // Without a bake it binds 1×1 black stand-ins and every draw is unlit by the lightmap (the
@@ -7,6 +8,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "bake/bake_folder.h"
@@ -25,6 +27,10 @@ class LightmapPass {
   // of its regions' instances in `scene`. Dynamic instances never get a region.
   void attach(const Bake& bake, GpuScene& scene);
   bool attached() const { return attached_; }
+  // Whether static surfaces read the static area lights' visibility from the bake; when the
+  // bake has some but this is false, `why` says why not (for a renderer warning).
+  bool hasBakedVisibility() const { return visibility_.has_value(); }
+  const std::string& visibilityRefusal() const { return visibilityRefusal_; }
 
   // Per frame: mode, textures, atlas size.
   void bind(gl::Program& program, RenderMode mode) const;
@@ -32,11 +38,16 @@ class LightmapPass {
   void setInstance(gl::Program& program, std::size_t index) const;
 
  private:
+  void attachVisibility(const Bake& bake);
+
   std::optional<gl::Texture2D> irradiance_;
   std::optional<gl::Texture2D> charts_;
+  std::optional<gl::Texture2D> visibility_;  // bake/light_visibility.h as 2·W × H RGBA32F
+  int bakedLights_ = 0;                      // static area lights the visibility names
   glm::vec2 size_{1.0f};
   std::vector<uint8_t> lightmapped_;  // per instance
   bool attached_ = false;
+  std::string visibilityRefusal_;
 };
 
 }  // namespace bounce

@@ -19,6 +19,10 @@ struct TextureUnit {
   // GL 3.3 guarantees: VplPass turns VPL shadows off, with a warning, on a driver without it.
   static constexpr int kVplShadow =
       15;  // sampler2DArrayShadow: VPL shadow cubes (vpl_shadows.glsl)
+  // sampler2D: the static area lights' baked visibility (baked_visibility.glsl). Beyond GL 3.3's
+  // 16: on a driver without it the sampler shares kLightmap's unit (both sampler2D) and
+  // LightmapPass leaves the visibility out (area lights fall back to their shadow maps).
+  static constexpr int kBakedVisibility = 16;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

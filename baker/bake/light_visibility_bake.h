@@ -1,0 +1,55 @@
+// Bakes the static area lights' visibility per lightmap texel (bake/light_visibility.h): for
+// every covered texel and every static light l of scene/area_lights.h,
+//   V_l = Σ_k w_k·vis(x_k, y_k) / Σ_k w_k,   w_k = max(n·(y_k − x_k), 0)·cosθ_y / r⁴,
+// a ratio estimator of E_shadowed / E_unshadowed over `samplesPerLight` pairs (x_k, y_k): x_k
+// cycles through the texel's sample points (texel_coverage.h, after the leak guard), y_k is
+// stratified over the light's area (one stratum of its area CDF per sample, a Cranley–Patterson
+// rotation per texel and light), and vis is one occlusion ray through the ray kernel. w_k is
+// the point-to-point form-factor kernel, so each pair counts for the irradiance it brings; the
+// unshadowed E_l ≈ lum(L_l)·A_l·Σ w_k / M ranks the lights for the texel's slots.
+//
+// Each texel is computed from its own keys (seed, texel, light): the result does not depend on
+// the thread count. Texels without sample points (uncovered padding, or invalid after the leak
+// guard) take a neighbour's record (fillVisibility), as the lightmap dilates.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bake/light_visibility.h"
+#include "bake/texel_coverage.h"
+#include "ray/ray_kernel.h"
+#include "scene/area_lights.h"
+
+namespace bounce {
+
+struct VisibilityBakeSettings {
+  bool enabled = true;       // bake it when the scene has static area lights
+  int samplesPerLight = 64;  // M: σ(V) ≤ 1/(2√M) per texel for unstratified pairs
+  uint32_t seed = 0;
+  int threads = 0;  // 0: all cores
+  bool progress = false;
+};
+
+struct VisibilityBakeReport {
+  uint32_t lights = 0;            // static area lights
+  uint64_t rays = 0;              // occlusion rays traced
+  uint64_t texelsWithLight = 0;   // covered texels some light reaches
+  uint64_t texelsOverSlots = 0;   // of those, reached by more than kVisibilitySlots lights
+  double otherLightsShare = 0.0;  // Σ E of lights in the "every other" slot / Σ E of all
+  double seconds = 0.0;
+};
+
+// `lights` must hold the static lights first (scene/area_lights.h); only those are baked.
+BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
+                                    const TexelCoverage& coverage,
+                                    const VisibilityBakeSettings& settings,
+                                    VisibilityBakeReport& report);
+
+// Every texel with filled == 0 takes the record of a filled 4-neighbour (the first of left,
+// right, up, down; of the same chart label first when `labels` is given), ring by ring, until
+// none is left that touches a filled one.
+void fillVisibility(BakedVisibility& visibility, std::vector<uint8_t> filled,
+                    const std::vector<uint32_t>* labels);
+
+}  // namespace bounce

@@ -1,0 +1,128 @@
+// The renderer's baked visibility of static area lights (shaders/baked_visibility.glsl) against
+// closed forms, on synthetic bakes: a floor texel's V multiplies the light's exact polygon
+// irradiance; a light the texel does not name reads its "every other light" slot, else 1; the
+// atlas is read the right way up; dynamic instances never read it.
+#include <gtest/gtest.h>
+
+#include "lightmap_scenes.h"
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 32;
+
+// A 1 m floor at y = 0 (atlas u = x + ½, v = z + ½) under a 0.4 m square emitter 0.6 m up facing
+// down, seen from 1 m above; no blocker, so the unshadowed frame is the reference.
+Scene floorUnderPanel() {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.6f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+  Material panel;
+  panel.name = "panel";
+  panel.emission = glm::vec3(3.0f, 2.0f, 1.0f);
+  addQuad(scene, {-0.2f, 0.6f, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, panel);  // (x × z) = −y
+  return scene;
+}
+
+// A bake with a black lightmap and visibility `record(x, y)` for texel (x, y) of a kSize atlas.
+template <class Record>
+Bake visibilityBake(const Scene& scene, Record record) {
+  Bake bake;
+  bake.layout.width = bake.layout.height = kSize;
+  bake.layout.texelSize = 1.0f / kSize;
+  const Mesh& floor = scene.meshes[scene.instances[0].mesh];
+  InstanceLightmapUv region{0, {}};
+  for (uint32_t index : floor.indices)
+    region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
+  // The panel is lightmapped too (it is static), with a region of its own in the last texel.
+  InstanceLightmapUv panel{1, {}};
+  for (std::size_t i = 0; i < scene.meshes[1].indices.size(); ++i)
+    panel.cornerUv.push_back(glm::vec2(1.0f - 0.5f / kSize));
+  bake.layout.instances = {region, panel};
+  bake.irradiance = Image(kSize, kSize);
+  bake.manifestJson = minimalManifest(scene);
+  BakedVisibility v;
+  v.width = v.height = kSize;
+  v.lightCount = 1;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) v.texels.push_back(record(x, y));
+  bake.visibility = v;
+  return bake;
+}
+
+Image renderDirect(const Scene& scene, const Bake* bake) {
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Direct;
+  settings.shadows.enabled = false;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, bake);
+  return renderer.renderImage(downCamera(1.0f), kSize, kSize);
+}
+
+TexelVisibility named(uint16_t light, float v) {
+  TexelVisibility t;
+  t.light[0] = light;
+  t.visible[0] = v;
+  return t;
+}
+
+// Pixels (x, y) of the floor whose ratio to the unshadowed frame is checked (the panel is seen
+// from above as its unlit back: the floor around it, the frame's border rows left out).
+bool floorPixel(int x, int y) {
+  const float fx = (x + 0.5f) / kSize - 0.5f, fy = (y + 0.5f) / kSize - 0.5f;
+  return std::max(std::abs(fx), std::abs(fy)) > 0.2f && std::max(std::abs(fx), std::abs(fy)) < 0.4f;
+}
+
+TEST(BakedVisibility, ATexelsVisibleFractionScalesTheLightsExactIrradiance) {
+  const Scene scene = floorUnderPanel();
+  const Image open = renderDirect(scene, nullptr);
+  const struct {
+    const char* what;
+    TexelVisibility record;
+    float expected;
+  } cases[] = {{"named, V = 0.25", named(0, 0.25f), 0.25f},
+               {"every other light, V = 0.5", named(kOtherLights, 0.5f), 0.5f},
+               {"not named, no other slot: V = 1", named(kNoLight, 0.0f), 1.0f}};
+  for (const auto& c : cases) {
+    const Bake bake = visibilityBake(scene, [&](int, int) { return c.record; });
+    const Image baked = renderDirect(scene, &bake);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (!floorPixel(x, y)) continue;
+        const glm::vec3 a = baked.at(x, y), b = open.at(x, y);
+        ASSERT_GT(b.r, 0.0f);
+        EXPECT_NEAR(a.r / b.r, c.expected, 1e-3f) << c.what << " at " << x << "," << y;
+        ++checked;
+      }
+    EXPECT_GT(checked, 100);
+  }
+}
+
+// Texels with x < kSize/2 (the floor's x < 0) hold V = 0, the rest V = 1: the left of the frame
+// (downCamera: image x along world x) is dark except within a texel of the middle.
+TEST(BakedVisibility, TheAtlasIsReadWhereTheFloorIs) {
+  const Scene scene = floorUnderPanel();
+  const Image open = renderDirect(scene, nullptr);
+  const Bake bake =
+      visibilityBake(scene, [](int x, int) { return named(0, x < kSize / 2 ? 0.0f : 1.0f); });
+  const Image baked = renderDirect(scene, &bake);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (!floorPixel(x, y)) continue;
+      const float fx = (x + 0.5f) / kSize - 0.5f;
+      const float ratio = baked.at(x, y).g / open.at(x, y).g;
+      // The camera sees ±0.42 m across 32 pixels (1.3 cm each); texels are 3.1 cm.
+      if (fx < -0.04f) {
+        EXPECT_NEAR(ratio, 0.0f, 1e-3f) << x << "," << y;
+      } else if (fx > 0.04f) {
+        EXPECT_NEAR(ratio, 1.0f, 1e-3f) << x << "," << y;
+      }
+    }
+}
+
+}  // namespace
+}  // namespace bounce::test
