@@ -15,14 +15,16 @@
 // not detach them, carries the slope. Both scale with w: a finer map shifts edges less.
 uniform int uShadowFilter;  // 0: one hardware 2×2 tap; 1: 16 rotated Poisson taps
 
-// 16 points of a Poisson disk in the unit circle (minimum spacing ≈ 0.37).
+// 16 points of a Poisson disk in the unit circle (the outermost at radius 1, minimum spacing
+// ≈ 0.37), so a kernel of radius R reads no tap beyond R texels: the reach R + 1.5 above and the
+// spot map's margin of R + 2 texels rely on it.
 const vec2 POISSON16[16] = vec2[](
-    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
-    vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
-    vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379), vec2(0.44323325, -0.97511554),
-    vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
-    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
-    vec2(0.14383161, -0.14100790));
+    vec2(-0.76342630, -0.32340690), vec2(0.76631937, -0.62313577), vec2(-0.07632843, -0.75319272),
+    vec2(0.27956106, 0.23816350), vec2(-0.74224974, 0.37093962), vec2(-0.66084860, -0.71245785),
+    vec2(-0.31020785, 0.22429795), vec2(0.79003047, 0.61306758), vec2(0.35920391, -0.79025054),
+    vec2(0.43554244, -0.38392241), vec2(-0.21473556, -0.33950832), vec2(0.64183039, 0.15471019),
+    vec2(-0.19603055, 0.80803882), vec2(-0.65976039, 0.74102609), vec2(0.16195482, 0.63732328),
+    vec2(0.11656363, -0.11427525));
 
 // A per-pixel rotation of the kernel (interleaved gradient noise, Jimenez 2014): turns the
 // kernel's banding into fine noise.

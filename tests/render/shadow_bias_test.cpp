@@ -3,7 +3,9 @@
 //   1. The normal offset o = (R + 1.5)·w·sinθ vanishes at normal incidence: a slab one texel
 //      thick on the floor under a light straight above keeps its shadow. A constant offset, or a
 //      depth bias of a texel, lifts the lookup above the slab and light leaks under it.
-//   2. Concave receivers: a 32-sided half-pipe under a sun up to 85° from its wall's normal has
+//   2. The Poisson taps lie within R texels (the kernel is in the unit circle), so R + 1.5 covers
+//      every texel a lookup reads: a plane at grazing incidence under a wide kernel has no acne.
+//   3. Concave receivers: a 32-sided half-pipe under a sun up to 85° from its wall's normal has
 //      no acne; it needs the constant quarter texel of depth bias (beyond a crease the next
 //      facet rises towards the light above this facet's plane).
 // Visibility is analytic: 1 on unoccluded surfaces, the slab's footprint seen from the light.
@@ -143,6 +145,8 @@ INSTANTIATE_TEST_SUITE_P(
                     SlabCase{"point_hardware", LightType::Point, ShadowFilter::Hardware}),
     [](const testing::TestParamInfo<SlabCase>& param) { return std::string(param.param.name); });
 
+// ---- 2. A wide Poisson kernel on a plane at grazing incidence -------------------------------
+
 // Pixels of `mapped` darker than 99% (V must be 1 everywhere), and how many were considered.
 std::pair<int, int> acnePixels(const std::vector<float>& mapped, float* darkest) {
   int lit = 0, dark = 0;
@@ -165,7 +169,28 @@ Light sunTowards(glm::vec3 l) {
   return sun;
 }
 
-// ---- 2. A concave receiver: a half-pipe under a high sun ------------------------------------
+// The 20 m floor seen from 1 m straight above, lit at 80° incidence at the frame's centre (79°
+// to 81° across it) by a spot, a point light and the sun, through a Poisson kernel of 6 texels.
+TEST(WideKernel, GrazingPlaneHasNoAcne) {
+  const float incidence = glm::radians(80.0f);
+  const glm::vec3 position(-std::tan(incidence), 1.0f, 0.0f);
+  for (const Light& light : {spotAt(position, {0, 0, 0}, 0.2f, 0.3f, 2.0f), pointAt(position, 2.0f),
+                             sunTowards(position)}) {
+    Scene scene;
+    addFloor(scene, glm::vec3(0.5f));
+    scene.lights = {light};
+    float darkest = 1.0f;
+    const auto [dark, lit] = acnePixels(
+        mappedVisibility(scene, downCamera(1.0f), 96, withFilter(ShadowFilter::Poisson, 6.0f)),
+        &darkest);
+    std::printf("%s, R = 6: %d of %d pixels darker than 99%%, darkest %.4f\n", light.name.c_str(),
+                dark, lit, darkest);
+    EXPECT_GT(lit, 96 * 96 / 4);
+    EXPECT_EQ(dark, 0) << light.name << ": darkest " << darkest;
+  }
+}
+
+// ---- 3. A concave receiver: a half-pipe under a high sun ------------------------------------
 
 // The lower half of a cylinder along z (radius rho, axis on y = 0, z within ±length/2) as
 // `sides` flat facets, facing inwards.
