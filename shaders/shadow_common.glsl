@@ -3,16 +3,21 @@
 // Bias, in texels of the map. w = the texel's edge in metres at the receiver's distance from
 // the light; θ = angle between the geometric normal ng and the direction to the light; R = the
 // filter radius in texels (0 for one hardware tap). A lookup compares the receiver against
-// depths stored up to R_eff = R + 1.5 texels away (each tap is a bilinear 2×2 comparison whose
-// texel centres lie within √2 texels), where a plane at incidence θ is R_eff·w·tanθ nearer or
-// further. Two terms cover it:
+// depths stored up to R_eff = R + 1.5 texels away (the Poisson taps lie within R; each is a
+// bilinear 2×2 comparison whose texel centres lie within √2 texels), where a plane at incidence
+// θ is up to R_eff·w·tanθ nearer (to first order; a plane's distance is convex across the map,
+// so the second order only moves it away). Two terms cover it, each guarded by a test
+// (tests/render/shadow_test.cpp, shadow_bias_test.cpp):
 //   normal offset  o = R_eff · w · sinθ   along ng: seen from the light, the offset point lies
-//                  o/cosθ = R_eff·w·tanθ in front of its own plane, at any incidence;
-//   depth bias     b = w · (0.25 + 0.1·min(tanθ, 10))   (slope-scaled: curvature of distance
-//                  maps, float rounding, and the texel's own slope where θ is near grazing).
-// A shadow touching its caster (a box on the floor) starts b·sinθ ≤ 0.83 texel late (θ ≤ 80°):
-// the depth bias is what detaches shadows, so it stays small and the normal offset, which does
-// not detach them, carries the slope. Both scale with w: a finer map shifts edges less.
+//                  o/cosθ = R_eff·w·tanθ in front of its own plane, at any incidence (ShadowAcne
+//                  fails without it), and it vanishes at normal incidence, where a slab one texel
+//                  thick keeps its shadow (ThinSlab fails with o constant);
+//   depth bias     b = w/4   ties, float rounding and the creases of concave receivers
+//                  (ConcaveReceiver and VplShadow.NoSelfShadowAtAConcaveCorner fail without it).
+// A slope-scaled depth bias (+0.1·w·tanθ) was removed: no plane, concave pipe or round room
+// showed acne without it once the kernel lay within R (docs/shadows.md lists what was tried).
+// A shadow touching its caster starts b·sinθ ≤ 0.25 texel late. Both terms scale with w: a
+// finer map shifts edges less.
 uniform int uShadowFilter;  // 0: one hardware 2×2 tap; 1: 16 rotated Poisson taps
 
 // 16 points of a Poisson disk in the unit circle (the outermost at radius 1, minimum spacing
@@ -39,7 +44,6 @@ mat2 shadowKernelRotation() {
 vec2 shadowBias(float w, vec3 ng, vec3 l, float radius) {
   float cosTheta = clamp(dot(ng, l), 0.0, 1.0);
   float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
-  float tanTheta = min(sinTheta / max(cosTheta, 1e-4), 10.0);
   float reach = (uShadowFilter == 1 ? radius : 0.0) + 1.5;
-  return vec2(reach * w * sinTheta, w * (0.25 + 0.1 * tanTheta));
+  return vec2(reach * w * sinTheta, 0.25 * w);
 }
