@@ -17,6 +17,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/shadow_map_geometry.h"
 #include "shadow_scenes.h"
