@@ -185,9 +185,15 @@ int run(const Options& o) {
                                        {"vplError", o.vplError}};
   const double totalSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The whole hash decides; the parts let a stale bake say what changed (bake_folder.h).
+  const bounce::SceneHash hash = bounce::sceneHash(scene);
+  nlohmann::json sceneParts = nlohmann::json::object();
+  for (std::size_t i = 0; i < hash.parts.size(); ++i)
+    sceneParts[bounce::kScenePartNames[i]] = hash.parts[i];
   nlohmann::json manifest = {
       {"formatVersion", bounce::kBakeFormatVersion},
-      {"sceneHash", bounce::sceneContentHash(scene)},
+      {"sceneHash", hash.whole},
+      {"sceneParts", sceneParts},
       {"settingsHash", settingsHash(settingsJson)},
       {"scene", o.scene.filename().string()},
       {"settings", settingsJson},

@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -40,46 +40,6 @@ constexpr char kLayoutName[] = "layout.bin";
 //   f32 v)
 // and nothing after the last instance.
 constexpr char kLayoutMagic[8] = {'B', 'N', 'C', 'L', 'M', 'L', 'A', 'Y'};
-
-// ---- the scene hash: FNV-1a (64 bit) over a little-endian serialisation, each array length
-// first so that moving a value from one array to the next changes the hash.
-class ContentHash {
- public:
-  void bytes(const void* data, std::size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) {
-      state_ ^= p[i];
-      state_ *= 0x100000001b3ull;
-    }
-  }
-  void u64(uint64_t v) {
-    unsigned char b[8];
-    for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(v >> (8 * i));
-    bytes(b, 8);
-  }
-  // Bit pattern, with −0 as +0 and every NaN as one NaN: equal values hash equal.
-  void f32(float v) {
-    if (v == 0.0f) v = 0.0f;
-    if (std::isnan(v)) v = std::numeric_limits<float>::quiet_NaN();
-    u64(std::bit_cast<uint32_t>(v));
-  }
-  void vec(const glm::vec2& v) { f32(v.x), f32(v.y); }
-  void vec(const glm::vec3& v) { f32(v.x), f32(v.y), f32(v.z); }
-  template <class T>
-  void array(const std::vector<T>& values) {
-    u64(values.size());
-    for (const T& v : values) vec(v);
-  }
-  std::string hex() const {
-    static const char digits[] = "0123456789abcdef";
-    std::string s(16, '0');
-    for (int i = 0; i < 16; ++i) s[15 - i] = digits[(state_ >> (4 * i)) & 0xf];
-    return s;
-  }
-
- private:
-  uint64_t state_ = 0xcbf29ce484222325ull;
-};
 
 // ---- little-endian byte stream for layout.bin
 class ByteWriter {
@@ -216,6 +176,10 @@ void checkLayoutAgainstScene(const fs::path& file, const LightmapLayout& layout,
 struct Manifest {
   int formatVersion = 0;
   std::string sceneHash;
+  // Optional, read only to explain a stale bake: the scene file's name ("scene") and the
+  // per-part hashes ("sceneParts", scene_hash.h), empty when absent or malformed.
+  std::string sceneFile;
+  std::map<std::string, std::string> sceneParts;
 };
 
 // Parses and checks the two fields every reader and writer relies on; `fail` builds the error.
@@ -235,7 +199,49 @@ Manifest parseManifest(const std::string& text, Fail fail) {
   const auto hash = json.find("sceneHash");
   if (hash == json.end() || !hash->is_string()) fail("no string \"sceneHash\"");
   m.sceneHash = hash->get<std::string>();
+  const auto file = json.find("scene");
+  if (file != json.end() && file->is_string()) m.sceneFile = file->get<std::string>();
+  const auto parts = json.find("sceneParts");
+  if (parts != json.end() && parts->is_object())
+    for (auto part = parts->begin(); part != parts->end(); ++part)
+      if (part->is_string()) m.sceneParts[part.key()] = part->get<std::string>();
   return m;
+}
+
+// Why a bake whose scene hash differs from the scene's does not match it, as far as bake.json
+// and the files' times tell.
+std::string whyStale(const fs::path& manifestFile, const Manifest& m, const Scene& scene,
+                     const SceneHash& now) {
+  const std::string sceneName = fs::path(scene.source).filename().string();
+  if (!m.sceneFile.empty() && !sceneName.empty() && m.sceneFile != sceneName)
+    return "it was made for another scene, " + m.sceneFile;
+  std::error_code sceneError, bakeError;
+  const auto sceneTime = fs::last_write_time(scene.source, sceneError);
+  const auto bakeTime = fs::last_write_time(manifestFile, bakeError);
+  const bool editedSince =
+      !scene.source.empty() && !sceneError && !bakeError && sceneTime > bakeTime;
+  const std::string edited = editedSince ? "; " + scene.source + " was modified after it" : "";
+  std::vector<std::string> changed;
+  bool recorded = true;
+  for (std::size_t i = 0; i < kScenePartNames.size(); ++i) {
+    const auto part = m.sceneParts.find(kScenePartNames[i]);
+    if (part == m.sceneParts.end())
+      recorded = false;
+    else if (part->second != now.parts[i])
+      changed.push_back(kScenePartNames[i]);
+  }
+  if (!changed.empty()) {
+    std::string list = changed[0];
+    for (std::size_t i = 1; i < changed.size(); ++i)
+      list += (i + 1 == changed.size() ? " and " : ", ") + changed[i];
+    return "the scene changed since the bake: its " + list + " differ" + edited;
+  }
+  if (editedSince) return "the scene changed since the bake" + edited;
+  if (recorded)
+    return "every part's hash matches but the whole does not: made by a build of bounce that "
+           "hashes scenes differently";
+  return "made for another scene or the scene changed since the bake (bake.json records no "
+         "per-part hashes to tell which)";
 }
 
 // Swaps `fresh` into `dir`. With an existing `dir`, renameat2(RENAME_EXCHANGE) swaps the two
@@ -272,61 +278,6 @@ void replaceFolder(const fs::path& fresh, const fs::path& dir) {
 
 }  // namespace
 
-std::string sceneContentHash(const Scene& scene) {
-  ContentHash h;
-  // Names do not change light, so they are left out; everything that does is in.
-  h.u64(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes) {
-    h.array(mesh.positions);
-    h.array(mesh.normals);
-    h.array(mesh.uv0);
-    h.array(mesh.uv1);
-    h.u64(mesh.indices.size());
-    for (uint32_t i : mesh.indices) h.u64(i);
-    h.u64(mesh.material);
-  }
-  h.u64(scene.materials.size());
-  for (const Material& m : scene.materials) {
-    h.vec(m.albedo);
-    h.u64(m.albedoTexture ? uint64_t{*m.albedoTexture} + 1 : 0);
-    h.vec(m.emission);
-    h.u64(m.doubleSided ? 1 : 0);
-  }
-  h.u64(scene.textures.size());
-  for (const Texture& t : scene.textures) {
-    h.u64(static_cast<uint64_t>(t.width));
-    h.u64(static_cast<uint64_t>(t.height));
-    h.array(t.texels);
-  }
-  h.u64(scene.instances.size());
-  for (const Instance& instance : scene.instances) {
-    h.u64(instance.mesh);
-    // A dynamic instance is in neither the lightmap nor the VPLs (the bake runs without it):
-    // the bake holds wherever it is placed (--move, the viewer), so its transform is left out.
-    if (instance.mobility == Mobility::Dynamic) {
-      h.u64(static_cast<uint64_t>(instance.mobility));
-      continue;
-    }
-    for (int c = 0; c < 4; ++c) {
-      const glm::vec4 column = instance.transform[c];
-      h.f32(column.x), h.f32(column.y), h.f32(column.z), h.f32(column.w);
-    }
-    h.u64(static_cast<uint64_t>(instance.mobility));
-  }
-  h.u64(scene.lights.size());
-  for (const Light& light : scene.lights) {
-    h.u64(static_cast<uint64_t>(light.type));
-    h.vec(light.position);
-    h.vec(light.direction);
-    h.vec(light.intensity);
-    h.vec(light.irradiance);
-    h.f32(light.innerConeAngle);
-    h.f32(light.outerConeAngle);
-    h.u64(light.bakeDirect ? 1 : 0);  // whether its direct light is in the map
-  }
-  return h.hex();
-}
-
 Bake readBake(const fs::path& dir, const Scene& scene) {
   if (!fs::is_directory(dir))
     throw LoadError(dir,
@@ -344,11 +295,12 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
     throw LoadError(manifestFile, "format version " + std::to_string(manifest.formatVersion) +
                                       ", this build reads version " +
                                       std::to_string(kBakeFormatVersion) + ": rebake");
-  const std::string hash = sceneContentHash(scene);
-  if (manifest.sceneHash != hash)
-    throw LoadError(manifestFile, "bake made for another scene: rebake (bake's scene hash " +
-                                      manifest.sceneHash + ", " + scene.source + " has " + hash +
-                                      ")");
+  const SceneHash hash = sceneHash(scene);
+  if (manifest.sceneHash != hash.whole)
+    throw LoadError(manifestFile, "stale bake: it does not match the scene (" +
+                                      whyStale(manifestFile, manifest, scene, hash) +
+                                      "): its scene hash is " + manifest.sceneHash + ", " +
+                                      scene.source + " hashes to " + hash.whole + ": rebake");
 
   const fs::path layoutFile = dir / kLayoutName;
   bake.layout = decodeLayout(layoutFile, readBakeInputFile(layoutFile));

@@ -1,8 +1,9 @@
 // The bake folder: what bounce-bake writes and the renderer reads, one versioned format with its
 // reader and writer here. GL-free.
 //
-//   <dir>/bake.json       manifest: format version, scene hash, settings, what the map holds
-//                         (indirect only, or direct too for baked-only lights), atlas stats,
+//   <dir>/bake.json       manifest: format version, scene hash and its parts (scene_hash.h),
+//                         settings, what the map holds (indirect only, or direct too for
+//                         baked-only lights), atlas stats,
 //                         samples per texel, estimated error, time per phase
 //   <dir>/lightmap.exr    irradiance E in W/m² per linear-RGB channel, one texel per atlas texel,
 //                         rows top first (see lightmap_layout.h)
@@ -22,6 +23,7 @@
 
 #include "bake/light_visibility.h"
 #include "bake/lightmap_layout.h"
+#include "bake/scene_hash.h"
 #include "bake/vpl.h"
 #include "image/image.h"
 #include "scene/scene.h"
@@ -41,14 +43,11 @@ struct Bake {
   std::optional<BakedVisibility> visibility;
 };
 
-// Hash of everything in the scene that changes a bake (geometry, instances and their mobility,
-// materials, lights), hex. Cameras and warnings do not count, nor where a dynamic instance
-// stands (bounce-bake leaves dynamic instances out of the lightmap and the VPLs).
-std::string sceneContentHash(const Scene& scene);
-
 // Reads <dir>; throws LoadError naming the file and the reason when a file is missing or
-// malformed, when the format version is not kBakeFormatVersion, or when the bake was made for
-// another scene (its hash differs from sceneContentHash(scene)).
+// malformed, when the format version is not kBakeFormatVersion, or when the bake is stale: its
+// "sceneHash" differs from sceneContentHash(scene). A stale bake's message gives both hashes and
+// why, where bake.json tells: another scene file ("scene"), which parts changed ("sceneParts",
+// scene_hash.h), or a scene file modified after bake.json.
 Bake readBake(const std::filesystem::path& dir, const Scene& scene);
 
 // Writes <dir> whole or not at all (see above). bake.manifestJson must be a JSON object holding

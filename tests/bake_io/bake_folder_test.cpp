@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <bit>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -242,65 +243,6 @@ TEST(BakeFolder, WriterRefusesAnIncompleteManifestOrAMismatchedLightmap) {
   EXPECT_EQ(countEntries(dir.parent_path()), 0);
 }
 
-TEST(SceneContentHash, SameContentSameHashAnyChangeAnotherHash) {
-  const Scene base = testScene();
-  const std::string h = sceneContentHash(base);
-  EXPECT_EQ(h.size(), 16u);
-  EXPECT_EQ(h, sceneContentHash(testScene()));
-
-  // What does not change light does not change the hash.
-  Scene same = testScene();
-  same.cameras.push_back(Camera{});
-  same.warnings.push_back("ignored emissiveTexture");
-  same.source = "elsewhere.gltf";
-  same.meshes[0].name = "renamed";
-  same.instances[0].name = "renamed";
-  EXPECT_EQ(h, sceneContentHash(same));
-
-  const std::vector<std::pair<const char*, std::function<void(Scene&)>>> changes = {
-      {"vertex position", [](Scene& s) { s.meshes[0].positions[2].y += 1e-6f; }},
-      {"shading normal",
-       [](Scene& s) {
-         s.meshes[1].normals[0] = {0, 0.6f, 0.8f};
-       }},
-      {"material uv",
-       [](Scene& s) {
-         s.meshes[0].uv0.assign(4, {0, 0});
-       }},
-      {"index order", [](Scene& s) { std::swap(s.meshes[0].indices[1], s.meshes[0].indices[2]); }},
-      {"mesh material", [](Scene& s) { s.meshes[0].material = 1; }},
-      {"albedo", [](Scene& s) { s.materials[0].albedo.g = 0.81f; }},
-      {"albedo texture", [](Scene& s) { s.materials[1].albedoTexture.reset(); }},
-      {"emission",
-       [](Scene& s) {
-         s.materials[0].emission = {1, 1, 1};
-       }},
-      {"double sided", [](Scene& s) { s.materials[0].doubleSided = true; }},
-      {"texel", [](Scene& s) { s.textures[0].texels[1].b = 0.25f; }},
-      {"instance transform", [](Scene& s) { s.instances[0].transform[3].x = 0.5f; }},
-      {"instance mesh", [](Scene& s) { s.instances[0].mesh = 1; }},
-      {"mobility", [](Scene& s) { s.instances[1].mobility = Mobility::Static; }},
-      {"extra instance", [](Scene& s) { s.instances.push_back(s.instances[0]); }},
-      {"light intensity", [](Scene& s) { s.lights[0].intensity.r = 11; }},
-      {"light type", [](Scene& s) { s.lights[0].type = LightType::Spot; }},
-      {"light cone", [](Scene& s) { s.lights[0].outerConeAngle = 0.5f; }},
-      {"no light", [](Scene& s) { s.lights.clear(); }},
-      // A baked-only light's direct light is in the map, a live light's is not.
-      {"light baked", [](Scene& s) { s.lights[0].bakeDirect = true; }},
-  };
-  for (const auto& [what, change] : changes) {
-    Scene s = testScene();
-    change(s);
-    EXPECT_NE(h, sceneContentHash(s)) << what;
-  }
-  // Where a dynamic instance stands is no part of the bake (it is baked without it): moving it
-  // (--move, the viewer) keeps the bake current.
-  Scene moved = testScene();
-  ASSERT_EQ(moved.instances[1].mobility, Mobility::Dynamic);
-  moved.instances[1].transform[3] = glm::vec4(0.3f, 2.0f, -1.0f, 1.0f);
-  EXPECT_EQ(h, sceneContentHash(moved));
-}
-
 // ---- every rejection names the file and the reason
 
 class BakeRejection : public ::testing::Test {
@@ -383,9 +325,57 @@ TEST_F(BakeRejection, ManifestFormatVersion) {
                                  std::to_string(kBakeFormatVersion));
 }
 
-TEST_F(BakeRejection, AnotherScene) {
+// ---- a stale bake: the folder, both hashes, and why where bake.json or the files' times tell
+
+// Rewrites bake.json with the optional fields bounce-bake writes: the scene file's name and the
+// per-part hashes of `baked`.
+void writeManifestWithParts(const fs::path& dir, const Scene& baked, const std::string& file) {
+  const SceneHash hash = sceneHash(baked);
+  nlohmann::json parts = nlohmann::json::object();
+  for (std::size_t i = 0; i < hash.parts.size(); ++i) parts[kScenePartNames[i]] = hash.parts[i];
+  std::ofstream(dir / "bake.json") << nlohmann::json{{"formatVersion", kBakeFormatVersion},
+                                                     {"sceneHash", hash.whole},
+                                                     {"scene", file},
+                                                     {"sceneParts", parts}};
+}
+
+TEST_F(BakeRejection, StaleBakeGivesBothHashes) {
+  const std::string baked = sceneContentHash(scene_);
   scene_.materials[0].albedo = glm::vec3(0.5f);
-  expectRefused("bake.json", "bake made for another scene: rebake");
+  expectRefused("bake.json", "stale bake: it does not match the scene");
+  expectRefused("bake.json", "its scene hash is " + baked + ", test-scene.gltf hashes to " +
+                                 sceneContentHash(scene_) + ": rebake");
+  // testBake's manifest has no per-part hashes: it cannot tell more.
+  expectRefused("bake.json", "records no per-part hashes");
+}
+
+TEST_F(BakeRejection, StaleBakeNamesTheChangedParts) {
+  writeManifestWithParts(dir_, scene_, "test-scene.gltf");
+  ASSERT_EQ(readError(dir_, scene_), "");
+  scene_.lights[0].position.x += 0.25f;
+  expectRefused("bake.json", "(the scene changed since the bake: its lights differ)");
+  scene_.materials[1].doubleSided = true;
+  expectRefused("bake.json", "(the scene changed since the bake: its materials and lights differ)");
+  scene_.meshes[0].positions[0].y = 1.0f;
+  expectRefused("bake.json",
+                "(the scene changed since the bake: its meshes, materials and lights differ)");
+}
+
+TEST_F(BakeRejection, StaleBakeOfAnotherSceneFile) {
+  writeManifestWithParts(dir_, scene_, "other.gltf");
+  scene_.lights[0].irradiance = {1, 1, 1};
+  expectRefused("bake.json", "(it was made for another scene, other.gltf)");
+}
+
+TEST_F(BakeRejection, StaleBakeOfASceneFileModifiedAfterIt) {
+  const fs::path sceneFile = dir_.parent_path() / "test-scene.gltf";
+  std::ofstream(sceneFile) << "{}";
+  scene_.source = sceneFile.string();
+  fs::last_write_time(dir_ / "bake.json", fs::last_write_time(sceneFile) - std::chrono::hours(1));
+  ASSERT_EQ(readError(dir_, scene_), "");  // the times alone do not make a bake stale
+  scene_.lights[0].intensity = {1, 2, 3};
+  expectRefused("bake.json", "(the scene changed since the bake; " + sceneFile.string() +
+                                 " was modified after it)");
 }
 
 TEST_F(BakeRejection, LayoutBadMagic) {

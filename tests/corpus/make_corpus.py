@@ -556,7 +556,7 @@ if os.path.isdir(VALID):
               bake_json=b"{\"x\": " + b"[" * 100000 + b"]" * 100000 + b"}")
     bake_case("manifest_version_string", "error", "no integer \"formatVersion\"", bake_json=manifest_with(formatVersion="1"))
     bake_case("manifest_version_2", "error", "format version 2, this build reads version 1", bake_json=manifest_with(formatVersion=2))
-    bake_case("manifest_other_scene", "error", "bake made for another scene", bake_json=manifest_with(sceneHash="0123456789abcdef"))
+    bake_case("manifest_other_scene", "error", "stale bake: it does not match the scene (every part's hash matches", bake_json=manifest_with(sceneHash="0123456789abcdef"))
     bake_case("manifest_hash_number", "error", "no string \"sceneHash\"", bake_json=manifest_with(sceneHash=12))
     bake_case("layout_missing", "error", "layout.bin: missing", layout_bin=None)
     bake_case("layout_empty", "error", "layout.bin: truncated", layout_bin=b"")

@@ -261,7 +261,7 @@ TEST_F(ToolsTest, BakeForAnotherSceneOrFormatIsRefusedNamingTheFolder) {
             (std::string(program) == "bounce-render" ? " --out " + quote(out) : " --frames 1"));
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find((dir_ / "other.bake" / "bake.json").string() +
-                            ": bake made for another scene: rebake"),
+                            ": stale bake: it does not match the scene ("),
               std::string::npos)
         << r.output;
     writeConstantBake(dir_ / "old.bake", scene, scene, bounce::kBakeFormatVersion + 1);
