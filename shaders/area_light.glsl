@@ -72,7 +72,8 @@ vec3 emitterTriangleIrradiance(int i, vec3 p, vec3 n) {
 
 // Σ over area lights of V_l · E_l: E_l the exact unshadowed irradiance of light l's triangles,
 // V_l its visible fraction: baked per lightmap texel for static lights on a static surface
-// (baked_visibility.glsl), else from its shadow map when it has one (shadow_area.glsl), else 1
+// (baked_visibility.glsl; times the dynamic instances' own cube when the light has one), else
+// from its shadow map when it has one (shadow_area.glsl), else 1
 // (ng: the receiver's geometric normal; atlasUv: its lightmap UV).
 vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
   vec3 irradiance = vec3(0.0);
@@ -83,11 +84,13 @@ vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
     vec3 e = vec3(0.0);
     for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
     if (e == vec3(0.0)) continue;
+    int slot = areaShadowSlot(int(rows.x));
     if (uHasBakedVisibility && l < uBakedLightCount) {
+      // The static occluders are baked; the dynamic ones come from their own cubes.
       e *= bakedVisibility(baked, l);
-    } else {
-      int slot = areaShadowSlot(int(rows.x));
-      if (slot >= 0) e *= areaVisibility(slot, p, ng);
+      if (uAreaDynamicShadows && slot >= 0) e *= areaVisibility(slot, p, ng, true);
+    } else if (slot >= 0) {
+      e *= areaVisibility(slot, p, ng, false);
     }
     irradiance += e;
   }

@@ -26,6 +26,12 @@ uniform int uAreaShadowCount;
 uniform samplerCube uAreaShadowMap0;  // distance from c / far, read raw (no comparison)
 uniform samplerCube uAreaShadowMap1;
 uniform samplerCube uAreaShadowMap2;
+// The same cubes with only the dynamic instances drawn (uAreaDynamicShadows): what a static
+// surface with baked visibility still needs from the maps.
+uniform bool uAreaDynamicShadows;
+uniform samplerCube uAreaDynamicShadowMap0;
+uniform samplerCube uAreaDynamicShadowMap1;
+uniform samplerCube uAreaDynamicShadowMap2;
 uniform vec3 uAreaShadowOrigin[MAX_AREA_SHADOWS];  // c, metres
 // x: far (m), y: face size (texels), z: light radius (m), w: unused
 uniform vec4 uAreaShadowParams[MAX_AREA_SHADOWS];
@@ -34,11 +40,18 @@ uniform vec2 uAreaShadowRows[MAX_AREA_SHADOWS];  // the light's emitter-table ro
 uniform vec4 uAreaShadowNormal[MAX_AREA_SHADOWS];
 uniform vec3 uAreaShadowPoints[MAX_AREA_SHADOWS * AREA_SHADOW_SAMPLES];  // x_k, world metres
 
-// Distance (metres) from the light's centre to the nearest surface along `direction`.
-float areaShadowDistance(int light, vec3 direction) {
-  float stored = light == 0   ? texture(uAreaShadowMap0, direction).r
-                 : light == 1 ? texture(uAreaShadowMap1, direction).r
-                              : texture(uAreaShadowMap2, direction).r;
+// Distance (metres) from the light's centre to the nearest surface along `direction` (of the
+// dynamic instances alone when `dynamicOnly`).
+float areaShadowDistance(int light, vec3 direction, bool dynamicOnly) {
+  float stored;
+  if (dynamicOnly)
+    stored = light == 0   ? texture(uAreaDynamicShadowMap0, direction).r
+             : light == 1 ? texture(uAreaDynamicShadowMap1, direction).r
+                          : texture(uAreaDynamicShadowMap2, direction).r;
+  else
+    stored = light == 0   ? texture(uAreaShadowMap0, direction).r
+             : light == 1 ? texture(uAreaShadowMap1, direction).r
+                          : texture(uAreaShadowMap2, direction).r;
   return stored * uAreaShadowParams[light].x;
 }
 
@@ -56,16 +69,17 @@ float receiverDistance(vec3 c, vec3 w, vec3 p, vec3 n, float dR) {
 
 // True when the map holds a surface in front of the receiver along c→b.
 bool blockedTowards(int light, vec3 c, vec3 b, vec3 p, vec3 n, float dR, float texelAngle,
-                    out float hit) {
+                    bool dynamicOnly, out float hit) {
   vec3 w = normalize(b - c);
   float receiver = receiverDistance(c, w, p, n, dR);
-  hit = areaShadowDistance(light, w);
+  hit = areaShadowDistance(light, w, dynamicOnly);
   float bias = shadowBias(texelAngle * receiver, n, -w, 0.0).y;
   return hit < receiver - bias;
 }
 
-// V in [0, 1] for shadowed light `light` (0 ≤ light < uAreaShadowCount) at receiver p, normal n.
-float areaVisibility(int light, vec3 p, vec3 n) {
+// V in [0, 1] for shadowed light `light` (0 ≤ light < uAreaShadowCount) at receiver p, normal n,
+// from every caster or (dynamicOnly) from the dynamic instances alone.
+float areaVisibility(int light, vec3 p, vec3 n, bool dynamicOnly) {
   vec3 c = uAreaShadowOrigin[light];
   vec4 params = uAreaShadowParams[light];
   float dR = length(p - c);
@@ -75,13 +89,14 @@ float areaVisibility(int light, vec3 p, vec3 n) {
   int base = light * AREA_SHADOW_SAMPLES;
   float hit;
   // uShadowFilter 0 (hard): the light as a point at its centre, one lookup.
-  if (uShadowFilter == 0) return blockedTowards(light, c, p, p, n, dR, texelAngle, hit) ? 0.0 : 1.0;
+  if (uShadowFilter == 0) return blockedTowards(light, c, p, p, n, dR, texelAngle, dynamicOnly, hit) ? 0.0 : 1.0;
 
   float blockerSum = 0.0;
   int blockers = 0;
   for (int k = 0; k < AREA_SHADOW_SAMPLES; ++k) {
     vec3 x = uAreaShadowPoints[base + k];
-    if (blockedTowards(light, c, x + (p - x) * (dMin / dR), p, n, dR, texelAngle, hit)) {
+    if (blockedTowards(light, c, x + (p - x) * (dMin / dR), p, n, dR, texelAngle, dynamicOnly,
+                       hit)) {
       blockerSum += hit;
       ++blockers;
     }
@@ -100,7 +115,8 @@ float areaVisibility(int light, vec3 p, vec3 n) {
     float w = max(dot(n, d), 0.0) * emitterCos / (r2 * r2);
     if (w <= 0.0) continue;
     total += w;
-    if (!blockedTowards(light, c, x + (p - x) * (dB / dR), p, n, dR, texelAngle, hit)) visible += w;
+    if (!blockedTowards(light, c, x + (p - x) * (dB / dR), p, n, dR, texelAngle, dynamicOnly,
+                        hit)) visible += w;
   }
   return total > 0.0 ? visible / total : 1.0;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/draw_state.h"
+#include "gl/texture.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -45,9 +46,23 @@ void AreaShadowMaps::place(const GpuScene& scene) {
     if (resolution != cube.resolution) {
       cube.texture.reset();
       cube.texture.emplace(resolution);
+      cube.dynamicTexture.reset();
       cube.resolution = resolution;
     }
+    if (dynamicCubes_ && !cube.dynamicTexture) cube.dynamicTexture.emplace(resolution);
   }
+}
+
+bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
+  if (enabled &&
+      gl::Texture2D::maxFragmentUnits() < TextureUnit::kAreaDynamicShadow0 + kMaxAreaShadows)
+    return false;
+  dynamicCubes_ = enabled;
+  for (Cube& cube : cubes_) {
+    cube.dynamicTexture.reset();
+    if (enabled && cube.resolution > 0) cube.dynamicTexture.emplace(cube.resolution);
+  }
+  return true;
 }
 
 ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
@@ -60,23 +75,29 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
     for (int face = 0; face < 6; ++face) {
       const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
       cube.far = faceView.far;
-      target.bind(*cube.texture, face);
-      gl::clearDepth();
-      if (!view.mayReach(faceView.viewProjection, sceneBox)) continue;
-      // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
-      // through the map's origin and would hide everything from a double-sided light.
-      gl::setDepthTest(true);
-      gl::setBackFaceCulling(false);
-      depthProgram.set("uViewProjection", faceView.viewProjection);
-      depthProgram.set("uLightPosition", cube.origin);
-      depthProgram.set("uFar", faceView.far);
-      const Frustum frustum(faceView.viewProjection);
-      const std::span<const GpuInstance> instances = scene.instances();
-      ++count.views;
-      for (std::size_t i = 0; i < instances.size(); ++i) {
-        if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
-        scene.draw(instances[i], depthProgram);
-        ++count.casters;
+      const bool reaches = view.mayReach(faceView.viewProjection, sceneBox);
+      // Every caster, then (dynamicCubes_) the dynamic ones alone.
+      for (const bool dynamicOnly : {false, true}) {
+        if (dynamicOnly && !(dynamicCubes_ && cube.dynamicTexture)) break;
+        target.bind(dynamicOnly ? *cube.dynamicTexture : *cube.texture, face);
+        gl::clearDepth();
+        if (!reaches) continue;
+        // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
+        // through the map's origin and would hide everything from a double-sided light.
+        gl::setDepthTest(true);
+        gl::setBackFaceCulling(false);
+        depthProgram.set("uViewProjection", faceView.viewProjection);
+        depthProgram.set("uLightPosition", cube.origin);
+        depthProgram.set("uFar", faceView.far);
+        const Frustum frustum(faceView.viewProjection);
+        const std::span<const GpuInstance> instances = scene.instances();
+        ++count.views;
+        for (std::size_t i = 0; i < instances.size(); ++i) {
+          if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
+          if (dynamicOnly && instances[i].mobility != Mobility::Dynamic) continue;
+          scene.draw(instances[i], depthProgram);
+          ++count.casters;
+        }
       }
     }
   }
@@ -90,13 +111,24 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   std::vector<glm::vec4> normals(kMaxAreaShadows, glm::vec4(0.0f));
   std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
                                 glm::vec3(0.0f));
-  for (int slot = 0; slot < kMaxAreaShadows; ++slot)
+  for (int slot = 0; slot < kMaxAreaShadows; ++slot) {
     forward.set("uAreaShadowMap" + std::to_string(slot), TextureUnit::kAreaShadow0 + slot);
+    // Unused, they share the all-caster cubes' units (the same sampler type).
+    forward.set(
+        "uAreaDynamicShadowMap" + std::to_string(slot),
+        (dynamicCubes_ ? TextureUnit::kAreaDynamicShadow0 : TextureUnit::kAreaShadow0) + slot);
+  }
+  forward.set("uAreaDynamicShadows", dynamicCubes_ ? 1 : 0);
   for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
     const Cube& cube = cubes_[slot];
     const int unit = TextureUnit::kAreaShadow0 + static_cast<int>(slot);
     cube.texture->bind(unit);
     sampler_->bind(unit);
+    if (dynamicCubes_ && cube.dynamicTexture) {
+      const int dynamicUnit = TextureUnit::kAreaDynamicShadow0 + static_cast<int>(slot);
+      cube.dynamicTexture->bind(dynamicUnit);
+      sampler_->bind(dynamicUnit);
+    }
     origins[slot] = cube.origin;
     // The light's radius bounds the blocker search's reach (shaders/shadow_area.glsl, d_min).
     params[slot] = glm::vec4(cube.far, static_cast<float>(cube.resolution), cube.light.radius,

@@ -35,6 +35,11 @@ class AreaShadowMaps {
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
                          gl::DepthTarget& target);
   void bind(gl::Program& forward) const;
+  // With baked visibility the static surfaces already hold the static occluders' shadows; what
+  // they still need from the maps is the dynamic instances' (V = V_baked · V_dynamic): on, each
+  // cube gets a second one of only the dynamic instances (texture units kAreaDynamicShadow0..).
+  // Returns false, changing nothing, when the driver lacks those units.
+  bool setDynamicCasterCubes(bool enabled);
 
  private:
   struct Cube {
@@ -44,6 +49,7 @@ class AreaShadowMaps {
     std::vector<glm::vec3> points;  // kAreaShadowSamples points on the light, world metres
     glm::ivec2 rows{0};             // the light's rows [first, end) of the emitter table
     std::optional<gl::DepthCubeMap> texture;
+    std::optional<gl::DepthCubeMap> dynamicTexture;  // the dynamic instances only
     int resolution = 0;
     float far = 1.0f;
   };
@@ -53,6 +59,7 @@ class AreaShadowMaps {
   std::vector<Cube> cubes_;
   std::optional<gl::DepthValueSampler> sampler_;
   int emitterVersion_ = -1;
+  bool dynamicCubes_ = false;
 };
 
 }  // namespace bounce

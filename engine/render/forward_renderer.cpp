@@ -128,6 +128,13 @@ void ForwardRenderer::setBake(const Bake& bake) {
   if (!p.lightmap.visibilityRefusal().empty())
     warnings_.push_back("the bake's area-light visibility is not used (" +
                         p.lightmap.visibilityRefusal() + "): area lights use their shadow maps");
+  // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
+  // through cubes of their own.
+  if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&
+      !p.shadows.setDynamicCasterCubes(true))
+    warnings_.push_back(
+        "dynamic instances cast no area-light shadows on baked static surfaces: the driver has "
+        "too few fragment texture units");
   p.lights.setBakedDirectInLightmap(true);
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {

@@ -31,6 +31,8 @@ class ShadowPass {
   void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
+  // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
+  bool setDynamicCasterCubes(bool enabled) { return area_.setDynamicCasterCubes(enabled); }
   // Per punctual light: its map's slot among its kind's maps, −1 for none.
   std::span<const int> lightSlots() const { return lightSlot_; }
   // What the last render() drew (culling's effect).

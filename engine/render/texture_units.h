@@ -23,6 +23,9 @@ struct TextureUnit {
   // 16: on a driver without it the sampler shares kLightmap's unit (both sampler2D) and
   // LightmapPass leaves the visibility out (area lights fall back to their shadow maps).
   static constexpr int kBakedVisibility = 16;
+  // samplerCube × kMaxAreaShadows (17..19): the area-light cubes of the dynamic instances alone,
+  // for static receivers whose static shadows are baked (area_shadow_maps.h).
+  static constexpr int kAreaDynamicShadow0 = 17;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

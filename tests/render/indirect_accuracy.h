@@ -47,6 +47,7 @@ inline BakeRun bakeScene(const Scene& scene, const AtlasSettings& atlasSettings,
   run.stats = bakeLightmap(scene, geometry, *kernel, atlas.layout, bakeSettings);
   run.bake.layout = atlas.layout;
   run.bake.irradiance = run.stats.irradiance;
+  run.bake.visibility = run.stats.visibility;
   run.bake.manifestJson =
       nlohmann::json{{"formatVersion", kBakeFormatVersion}, {"sceneHash", sceneContentHash(scene)}}
           .dump();
@@ -68,19 +69,26 @@ struct Reference {
   Image stdError;  // per pixel and channel, of the mean
 };
 
-inline Reference traceIndirectReference(const Scene& scene, const Camera& camera, int width,
-                                        int height, int spp, uint32_t seed = 1) {
+// The path tracer's image of `paths` (IndirectOnly for the lightmap, DirectOnly for the direct
+// light) with each pixel's standard error.
+inline Reference traceReference(const Scene& scene, const Camera& camera, int width, int height,
+                                int spp, PathSet paths, uint32_t seed = 1) {
   const WorldGeometry geometry = flatten(scene);
   const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
   TraceSettings trace;
   trace.spp = spp;
-  trace.paths = PathSet::IndirectOnly;
+  trace.paths = paths;
   trace.seed = seed;
   const CameraRender traced = traceCamera(scene, geometry, *kernel, camera, width, height, trace);
   Reference r{traced.radiance, Image(width, height)};
   for (std::size_t i = 0; i < r.radiance.pixels.size(); ++i)
     r.stdError.pixels[i] = glm::sqrt(traced.sampleVariance.pixels[i] / static_cast<float>(spp));
   return r;
+}
+
+inline Reference traceIndirectReference(const Scene& scene, const Camera& camera, int width,
+                                        int height, int spp, uint32_t seed = 1) {
+  return traceReference(scene, camera, width, height, spp, PathSet::IndirectOnly, seed);
 }
 
 // --mode indirect; needs a current GL context.

@@ -58,6 +58,31 @@ TEST(SceneJson, ScalesTheModelAndAddsLightsAndCamera) {
   EXPECT_NEAR(scene.cameras[1].position().z, 0.5f * original.cameras[0].position().z, 1e-5f);
 }
 
+// An "emitters" entry is one static instance of one mesh holding all its quads (front u × v),
+// with its own emissive material; coordinates are metres, not scaled by the wrapper.
+TEST(SceneJson, EmittersAddOneMeshOfQuadsEach) {
+  const Scene original = loadScene(kCornell);
+  const fs::path path = writeWrapper("panels.json", R"({
+    "model": ")" + kCornell + R"(", "scale": 0.5,
+    "emitters": [{"name": "panels", "radiance": [3, 2, 1], "albedo": [0.1, 0.2, 0.3],
+                  "quads": [{"corner": [0, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, 0.25]},
+                            {"corner": [2, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, 0.25]}]}]})");
+  const Scene scene = loadScene(path);
+  ASSERT_EQ(scene.instances.size(), original.instances.size() + 1);
+  const Instance& added = scene.instances.back();
+  EXPECT_EQ(added.name, "panels");
+  EXPECT_EQ(added.mobility, Mobility::Static);
+  EXPECT_EQ(added.transform, glm::mat4(1.0f));
+  const Mesh& mesh = scene.meshes.at(added.mesh);
+  ASSERT_EQ(mesh.triangleCount(), 4u);
+  EXPECT_EQ(mesh.positions[5], glm::vec3(2.5f, 1.0f, 0.0f));  // metres as written
+  EXPECT_EQ(mesh.normals[0], glm::vec3(0, -1, 0));            // (x × z) = −y
+  const Material& m = scene.materials.at(mesh.material);
+  EXPECT_EQ(m.emission, glm::vec3(3, 2, 1));
+  EXPECT_EQ(m.albedo, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_FALSE(m.doubleSided);
+}
+
 TEST(SceneJson, MalformedWrappersNameTheWrapper) {
   const std::pair<std::string, std::string> cases[] = {
       {"{}", "needs \"model\""},
@@ -78,6 +103,14 @@ TEST(SceneJson, MalformedWrappersNameTheWrapper) {
           "target": [0, 0.1, 0], "znear": 1e-30}})",
        "znear below"},
       {std::string(100000, '[') + std::string(100000, ']'), "nest"},
+      {R"({"model": ")" + kCornell + R"(", "emitters": [{"radiance": [1, 1, 1]}]})",
+       "needs \"quads\""},
+      {R"({"model": ")" + kCornell + R"(", "emitters": [{"radiance": [1, 1, 1],
+          "quads": [{"corner": [0, 1, 0], "u": [1, 0, 0], "v": [2, 0, 0]}]}]})",
+       "quad of zero area"},
+      {R"({"model": ")" + kCornell + R"(", "emitters": [{"radiance": [-1, 1, 1],
+          "quads": [{"corner": [0, 1, 0], "u": [1, 0, 0], "v": [0, 0, 1]}]}]})",
+       "negative radiance"},
   };
   int i = 0;
   for (const auto& [text, reason] : cases) {
