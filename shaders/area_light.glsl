@@ -11,7 +11,9 @@
 // Emitter table (uEmitters, RGBA32F, 4 texels per row): first one row per triangle,
 //   texels 0..2: world vertices (xyz, metres); texel 3: radiance (rgb), w = 1 if double-sided;
 // then one row per area light (engine/scene/area_lights.h: emitters cut by their shape),
-//   texel 0: (first triangle row, end row, 0, 0); the static lights come first.
+//   texel 0: (first triangle row, end row, 1 if its direct light is baked (Material::bakeDirect)
+//   else 0, 0); the static lights come first. A baked light is skipped once a bake is attached
+//   (uHasBake): its direct light is in the lightmap.
 
 uniform sampler2D uEmitters;
 uniform int uEmitterCount;    // triangle rows
@@ -81,6 +83,7 @@ vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
   if (uHasBakedVisibility) baked = bakedVisibilityTexels(atlasUv, uLightmapSize);
   for (int l = 0; l < uAreaLightCount; ++l) {
     vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
+    if (rows.z > 0.5 && uHasBake) continue;
     vec3 e = vec3(0.0);
     for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
     if (e == vec3(0.0)) continue;

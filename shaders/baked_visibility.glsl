@@ -8,6 +8,7 @@
 // Table (uBakedVisibility, RGBA32F, 2·W × H, texelFetch): texel (2x, y) holds the 4 slots'
 // light indices (−1 empty, −2 every other light), texel (2x + 1, y) their V.
 
+uniform bool uHasBake;                // a bake is attached (baked-direct lights are not drawn)
 uniform bool uHasBakedVisibility;     // this draw: a static instance, the bake has visibility
 uniform int uBakedLightCount;         // static area lights the bake names (the first ones)
 uniform sampler2D uBakedVisibility;

@@ -166,6 +166,8 @@ int run(const Options& o) {
   nlohmann::json bakedDirect = nlohmann::json::array();
   for (const bounce::Light& light : scene.lights)
     if (light.bakeDirect) bakedDirect.push_back(light.name);
+  for (const bounce::Material& material : scene.materials)
+    if (material.bakeDirect && material.isEmissive()) bakedDirect.push_back(material.name);
   uint32_t fewest = 0xffffffffu, most = 0;
   for (std::size_t t = 0; t < bake.samples.size(); ++t) {
     if (!bake.covered[t] || bake.invalid[t]) continue;

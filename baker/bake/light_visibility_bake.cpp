@@ -62,6 +62,7 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
     uint64_t texelRays = 0;
     for (uint32_t l = 0; l < out.lightCount; ++l) {
       const AreaLight& light = lights.lights[l];
+      if (light.bakeDirect) continue;  // in the lightmap: the renderer never draws it live
       const uint32_t key =
           hashKeys(settings.seed ^ kVisibilitySalt, static_cast<uint32_t>(texel), l);
       const glm::vec2 rotation(uniformFloat(key, 0), uniformFloat(key, 1));

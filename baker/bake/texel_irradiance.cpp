@@ -48,14 +48,22 @@ class CountingRayKernel final : public RayKernel {
   mutable tbb::enumerable_thread_specific<uint64_t> count_{0};
 };
 
-// The scene seen by the baked direct light: only the lights marked bakeDirect, no emission.
+// The scene seen by the baked direct light: only the lights and emissive materials marked
+// bakeDirect.
 Scene bakedDirectScene(const Scene& scene) {
   Scene copy = scene;
   copy.lights.clear();
   for (const Light& light : scene.lights)
     if (light.bakeDirect) copy.lights.push_back(light);
-  for (Material& m : copy.materials) m.emission = glm::vec3(0.0f);
+  for (Material& m : copy.materials)
+    if (!m.bakeDirect) m.emission = glm::vec3(0.0f);
   return copy;
+}
+
+bool emits(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (m.isEmissive()) return true;
+  return false;
 }
 
 }  // namespace
@@ -70,7 +78,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   trace.paths = PathSet::IndirectOnly;
   const PathTracer indirect(scene, geometry, counting, trace);
   const Scene directScene = bakedDirectScene(scene);
-  const bool anyBakedDirect = !directScene.lights.empty();
+  const bool anyBakedDirect = !directScene.lights.empty() || emits(directScene);
   TraceSettings directTrace = trace;
   directTrace.paths = PathSet::DirectOnly;
   const PathTracer bakedDirect(directScene, geometry, counting, directTrace);

@@ -3,7 +3,8 @@
 //
 // What is gathered: E from light that reflected at least once before arriving (PathSet::
 // IndirectOnly: the renderer adds direct light live), plus the direct light of the lights the
-// scene marks as baked (Light::bakeDirect), which the renderer does not draw.
+// scene marks as baked (Light::bakeDirect, and emitters of a Material::bakeDirect), which the
+// renderer does not draw.
 //
 // Sample s of texel i uses the sampler pattern (seed, i): dimension 0 picks one of the texel's
 // points uniformly, the baked direct light uses dimensions 1–4 and the indirect path 5 on.

@@ -16,7 +16,7 @@ namespace {
 // part (or write there why it cannot change a bake), add its case to
 // tests/bake_io/scene_hash_test.cpp, and update the count here and there.
 static_assert(aggregateFieldCount<Texture>() == 4, "Texture changed: extend the scene hash");
-static_assert(aggregateFieldCount<Material>() == 5, "Material changed: extend the scene hash");
+static_assert(aggregateFieldCount<Material>() == 6, "Material changed: extend the scene hash");
 static_assert(aggregateFieldCount<Mesh>() == 7, "Mesh changed: extend the scene hash");
 static_assert(aggregateFieldCount<Instance>() == 4, "Instance changed: extend the scene hash");
 static_assert(aggregateFieldCount<Light>() == 9, "Light changed: extend the scene hash");
@@ -91,6 +91,7 @@ uint64_t hashMaterials(const std::vector<Material>& materials) {
     h.u64(m.albedoTexture ? uint64_t{*m.albedoTexture} + 1 : 0);
     h.vec(m.emission);
     h.u64(m.doubleSided ? 1 : 0);
+    h.u64(m.bakeDirect ? 1 : 0);  // whether its direct light is in the map
   }
   return h.state();
 }

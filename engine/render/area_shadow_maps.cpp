@@ -18,7 +18,9 @@ void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnin
   }
   if (lights.size() > cubes_.size())
     warnings.push_back(std::to_string(lights.size() - cubes_.size()) + " area lights beyond the " +
-                       std::to_string(kMaxAreaShadows) + " most powerful cast no shadows");
+                       std::to_string(kMaxAreaShadows) +
+                       " most powerful have no shadow map: they shadow only static surfaces of a "
+                       "bake with their visibility (visibility.bin)");
   if (!cubes_.empty()) sampler_.emplace();
   place(scene);
 }

@@ -142,7 +142,8 @@ void GpuScene::uploadEmitters() {
   }
   for (const AreaLight& light : lights.lights) {
     table.emplace_back(static_cast<float>(light.first),
-                       static_cast<float>(light.first + light.count), 0.0f, 0.0f);
+                       static_cast<float>(light.first + light.count),
+                       light.bakeDirect ? 1.0f : 0.0f, 0.0f);
     for (int k = 0; k < 3; ++k) table.emplace_back(0.0f);
   }
   emitterCount_ = static_cast<int>(lights.triangles.size());

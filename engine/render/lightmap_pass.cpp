@@ -106,6 +106,7 @@ void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   irradiance_->bind(TextureUnit::kLightmap);
   charts_->bind(TextureUnit::kLightmapCharts);
   program.set("uBakedLightCount", bakedLights_);
+  program.set("uHasBake", attached_ ? 1 : 0);
   if (visibility_) {
     program.set("uBakedVisibility", TextureUnit::kBakedVisibility);
     visibility_->bind(TextureUnit::kBakedVisibility);

@@ -38,7 +38,7 @@ std::vector<EmitterTriangle> emitterTriangles(const Scene& scene,
       if (mirrored) std::swap(p[1], p[2]);
       if (!isEmitterTriangle(material, glm::cross(p[1] - p[0], p[2] - p[0]))) continue;
       triangles.push_back({p[0], p[1], p[2], radiance, material.doubleSided,
-                           static_cast<uint32_t>(i), mesh.material});
+                           static_cast<uint32_t>(i), mesh.material, material.bakeDirect});
     }
   }
   return triangles;
@@ -282,6 +282,7 @@ AreaLightSet splitAreaLights(const std::vector<EmitterTriangle>& triangles,
         light.material = cell.front().material;
         light.mobility = mobilityOf(light.instance);
         light.doubleSided = cell.front().doubleSided;
+        light.bakeDirect = cell.front().bakeDirect;
         double cumulative = 0.0;
         for (const EmitterTriangle& e : cell) {
           cumulative += 0.5 * glm::length(crossOf(e));

@@ -34,8 +34,9 @@ struct EmitterTriangle {
   glm::vec3 v0, v1, v2;  // world, metres, counter-clockwise = the emitting front face
   glm::vec3 radiance;    // W/(sr·m²)
   bool doubleSided = false;
-  uint32_t instance = 0;  // Scene::instances index
-  uint32_t material = 0;  // Scene::materials index
+  uint32_t instance = 0;    // Scene::instances index
+  uint32_t material = 0;    // Scene::materials index
+  bool bakeDirect = false;  // Material::bakeDirect: its direct light is in the lightmap
 };
 
 struct AreaLight {
@@ -48,6 +49,9 @@ struct AreaLight {
   float radius = 0.0f;     // largest distance of a vertex from the centre, metres
   glm::vec3 flux{0.0f};    // W emitted: Σ π·L·A (×2 when double-sided)
   bool doubleSided = false;
+  // Its material's Material::bakeDirect: with a bake, its direct light is in the lightmap and the
+  // renderer skips it; the baker bakes no visibility for it (it keeps its index).
+  bool bakeDirect = false;
 };
 
 // The lights and their triangles, each light's contiguous. Static lights come first (in

@@ -279,6 +279,15 @@ class GltfBuilder {
       material.emission = glm::vec3(factor);
     }
     material.doubleSided = m.doubleSided;
+    // extras.bounce.bake: "all" bakes an emitter's direct light too (scene.h,
+    // Material::bakeDirect).
+    if (m.extras.Has("bounce") && m.extras.Get("bounce").Has("bake")) {
+      const tinygltf::Value& bake = m.extras.Get("bounce").Get("bake");
+      const std::string mode = bake.IsString() ? bake.Get<std::string>() : "";
+      if (mode != "all" && mode != "indirect")
+        fail(what + ": material extras.bounce.bake must be \"all\" or \"indirect\"");
+      material.bakeDirect = mode == "all";
+    }
     warnIgnored(m, material.name);
     scene_.materials.push_back(std::move(material));
   }

@@ -32,6 +32,10 @@ struct Material {
   std::optional<uint32_t> albedoTexture;  // index into Scene::textures, multiplies albedo
   glm::vec3 emission{0.0f};               // emitted radiance, W/(sr·m²)
   bool doubleSided = false;               // emission and shading on both faces
+  // Baked only (glTF material extras.bounce.bake = "all"): an emissive material's direct light
+  // is baked into the lightmap with its indirect light, and the renderer does not draw it live
+  // once a bake is attached (as Light::bakeDirect for punctual lights).
+  bool bakeDirect = false;
 
   // True when emittedRadiance(*this) (scene/surface_rules.h) is positive in some channel.
   bool isEmissive() const;

@@ -13,6 +13,7 @@
 //                 "inner_cone": a, "outer_cone": b}],  (radians; spot)
 //     "emitters": [{"name": "...", "radiance": [r, g, b],     (W/(sr·m²), emitted by the front)
 //                   "albedo": [r, g, b], "double_sided": false,  (default 0.8, false)
+//                   "bake": "indirect" | "all",  ("all": its direct light is baked too)
 //                   "quads": [{"corner": [x, y, z], "u": [..], "v": [..]}, ...]}],
 //                                   (metres, not scaled: corner, corner+u, corner+u+v, corner+v,
 //                                    front face u × v; all quads of one entry are one mesh, as
@@ -109,6 +110,13 @@ void addEmitter(const std::filesystem::path& path, const json& entry, Scene& sce
   material.name = entry.value("name", std::string("emitter"));
   material.emission = vec3Of(path, entry.value("radiance", json()), "radiance");
   if (entry.contains("albedo")) material.albedo = vec3Of(path, entry["albedo"], "albedo");
+  if (entry.contains("bake")) {
+    const json& bake = entry["bake"];
+    if (!bake.is_string() || (bake != "all" && bake != "indirect"))
+      throw LoadError(path,
+                      "emitter '" + material.name + "': 'bake' must be \"all\" or \"indirect\"");
+    material.bakeDirect = bake == "all";
+  }
   if (entry.contains("double_sided")) {
     if (!entry["double_sided"].is_boolean())
       throw LoadError(path, "'double_sided' must be true or false");

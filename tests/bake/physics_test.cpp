@@ -94,5 +94,57 @@ TEST(BakePhysics, BakedOnlyLightHasItsDirectLightBaked) {
   }
 }
 
+// An emissive quad whose material is marked bakeDirect (extras.bounce.bake = "all") has its
+// direct light in the map: E at a floor texel against the point-to-rectangle integral
+// L·∫ cosθ_x cosθ_y / r² dA (midpoint rule); unmarked, the map holds only reflected light, and
+// here there is none (the emitter is black, the floor sees nothing else).
+TEST(BakePhysics, BakedOnlyEmitterHasItsDirectLightBaked) {
+  for (const bool bakeDirect : {false, true}) {
+    test::World world;
+    const uint32_t floor = test::addMaterial(world.scene, glm::vec3(0.5f));
+    test::addQuad(world.scene, {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, floor);
+    const glm::vec3 le(3.0f, 2.0f, 1.0f);
+    const uint32_t lamp = test::addMaterial(world.scene, glm::vec3(0.0f), le);
+    world.scene.materials[lamp].bakeDirect = bakeDirect;
+    // 0.4 m square at y = 0.8 m facing down (its corners clockwise seen from below).
+    test::addQuad(world.scene, {-0.2f, 0.8f, -0.2f}, {0.2f, 0.8f, -0.2f}, {0.2f, 0.8f, 0.2f},
+                  {-0.2f, 0.8f, 0.2f}, lamp);
+    world.build();
+    const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.1f, 48);
+    LightmapBakeSettings settings = test::testBakeSettings(256);
+    const LightmapBake bake =
+        bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+    int checked = 0;
+    for (int y = 0; y < atlas.layout.height; ++y)
+      for (int x = 0; x < atlas.layout.width; ++x) {
+        const std::size_t t = bake.irradiance.index(x, y);
+        glm::vec3 p;
+        uint32_t instance;
+        if (!bake.covered[t] || !atlas.texelCentre(x, y, p, instance) || instance != 0) continue;
+        const glm::vec3 e = bake.irradiance.pixels[t];
+        if (!bakeDirect) {
+          EXPECT_EQ(e, glm::vec3(0.0f));
+        } else {
+          double exact = 0.0;  // sr: ∫ cosθ_x cosθ_y / r² dA over the light (cos = 0.8 / r)
+          const int n = 100;
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+              const double qx = -0.2 + 0.4 * (i + 0.5) / n - p.x,
+                           qz = -0.2 + 0.4 * (j + 0.5) / n - p.z;
+              const double r2 = qx * qx + qz * qz + 0.64;
+              exact += 0.64 / (r2 * r2) * (0.16 / (n * n));
+            }
+          // The texel's mean over its 10 cm square against the value at its centre (E is smooth
+          // at 0.8 m: its curvature moves the mean ≲ 1%) and 4 of the texel's standard errors.
+          const double tolerance = 0.01 * exact * le.r + 4.0 * bake.relativeError[t] * e.r;
+          EXPECT_NEAR(e.r, le.r * exact, tolerance) << p.x << "," << p.z;
+          EXPECT_NEAR(e.b / e.r, le.b / le.r, 1e-3);
+        }
+        ++checked;
+      }
+    EXPECT_EQ(checked, 20 * 20);
+  }
+}
+
 }  // namespace
 }  // namespace bounce

@@ -110,9 +110,9 @@ Scene richScene() {
   tri.indices = {0, 1, 2};
   tri.material = 1;
   s.meshes = {quad, tri};
-  Material white{"white", glm::vec3(0.8f), std::nullopt, glm::vec3(0.0f), false};
-  Material red{"red", {0.7f, 0.1f, 0.1f}, 0u, glm::vec3(0.0f), false};
-  Material lamp{"lamp", glm::vec3(0.5f), 1u, {4.0f, 3.0f, 2.0f}, true};
+  Material white{"white", glm::vec3(0.8f), std::nullopt, glm::vec3(0.0f), false, false};
+  Material red{"red", {0.7f, 0.1f, 0.1f}, 0u, glm::vec3(0.0f), false, false};
+  Material lamp{"lamp", glm::vec3(0.5f), 1u, {4.0f, 3.0f, 2.0f}, true, false};
   s.materials = {white, red, lamp};
   s.textures = {{"checker", 3, 1, {{1, 1, 1}, {0.5f, 0.5f, 0.5f}, {0.2f, 0.3f, 0.4f}}},
                 {"column", 1, 3, {{0.9f, 0.8f, 0.7f}, {0.1f, 0.2f, 0.3f}, {0.6f, 0.6f, 0.6f}}}};
@@ -209,7 +209,8 @@ TEST(SceneHash, EveryMaterialField) {
         {[](Material& m) { m.albedoTexture = m.albedoTexture ? std::nullopt : std::optional(0u); },
          [](Material& m) { m.albedoTexture = m.albedoTexture.value_or(0u) + 1; }}},
        {"emission", Expect::Changes, eachComponent(&Material::emission)},
-       {"doubleSided", Expect::Changes, {flip(&Material::doubleSided)}}},
+       {"doubleSided", Expect::Changes, {flip(&Material::doubleSided)}},
+       {"bakeDirect", Expect::Changes, {flip(&Material::bakeDirect)}}},
       "materials");
 }
 

@@ -124,5 +124,24 @@ TEST(BakedVisibility, TheAtlasIsReadWhereTheFloorIs) {
     }
 }
 
+// An emitter whose material is marked bakeDirect is drawn live without a bake and skipped with
+// one (its direct light is in the lightmap, here black): the floor's direct frame goes to 0.
+TEST(BakedVisibility, ABakedDirectEmitterIsNotDrawnLiveOnceABakeIsAttached) {
+  Scene scene = floorUnderPanel();
+  scene.materials[scene.meshes[1].material].bakeDirect = true;
+  const Image live = renderDirect(scene, nullptr);
+  const Bake bake = visibilityBake(scene, [](int, int) { return named(0, 1.0f); });
+  const Image baked = renderDirect(scene, &bake);
+  int checked = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (!floorPixel(x, y)) continue;
+      EXPECT_GT(live.at(x, y).r, 0.0f);
+      EXPECT_EQ(baked.at(x, y), glm::vec3(0.0f)) << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 100);
+}
+
 }  // namespace
 }  // namespace bounce::test

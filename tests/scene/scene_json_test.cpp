@@ -64,7 +64,7 @@ TEST(SceneJson, EmittersAddOneMeshOfQuadsEach) {
   const Scene original = loadScene(kCornell);
   const fs::path path = writeWrapper("panels.json", R"({
     "model": ")" + kCornell + R"(", "scale": 0.5,
-    "emitters": [{"name": "panels", "radiance": [3, 2, 1], "albedo": [0.1, 0.2, 0.3],
+    "emitters": [{"name": "panels", "radiance": [3, 2, 1], "albedo": [0.1, 0.2, 0.3], "bake": "all",
                   "quads": [{"corner": [0, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, 0.25]},
                             {"corner": [2, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, 0.25]}]}]})");
   const Scene scene = loadScene(path);
@@ -81,6 +81,7 @@ TEST(SceneJson, EmittersAddOneMeshOfQuadsEach) {
   EXPECT_EQ(m.emission, glm::vec3(3, 2, 1));
   EXPECT_EQ(m.albedo, glm::vec3(0.1f, 0.2f, 0.3f));
   EXPECT_FALSE(m.doubleSided);
+  EXPECT_TRUE(m.bakeDirect);
 }
 
 TEST(SceneJson, MalformedWrappersNameTheWrapper) {
@@ -111,6 +112,9 @@ TEST(SceneJson, MalformedWrappersNameTheWrapper) {
       {R"({"model": ")" + kCornell + R"(", "emitters": [{"radiance": [-1, 1, 1],
           "quads": [{"corner": [0, 1, 0], "u": [1, 0, 0], "v": [0, 0, 1]}]}]})",
        "negative radiance"},
+      {R"({"model": ")" + kCornell + R"(", "emitters": [{"radiance": [1, 1, 1], "bake": "some",
+          "quads": [{"corner": [0, 1, 0], "u": [1, 0, 0], "v": [0, 0, 1]}]}]})",
+       "'bake' must be"},
   };
   int i = 0;
   for (const auto& [text, reason] : cases) {
