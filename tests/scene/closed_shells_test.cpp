@@ -2,7 +2,10 @@
 // and nothing else changes.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "scene/closed_shells.h"
+#include "scene/world_geometry.h"
 
 namespace bounce {
 namespace {
@@ -91,6 +94,29 @@ TEST(ClosedShells, BoxWoundHalfInwardsIsWoundOutwardsWhole) {
   EXPECT_EQ(result.closedShells, 1u);
   EXPECT_EQ(result.turned, 1u);
   EXPECT_EQ(facing(scene.meshes[0], glm::vec3(0.0f)), 1);
+}
+
+TEST(ClosedShells, MirroredInstanceIsJudgedWhereItStands) {
+  // Decided in the mesh's own space with the lights brought there: the box (x 1..2 in its
+  // mesh, x −2..−1 in the world) with a light inside it in the world is a room and keeps its
+  // inward winding; with the light above it, it is turned and faces out in the world, where
+  // flatten() reverses a mirroring instance's winding.
+  Mesh box;
+  addBox(box, glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(2.0f, 1.0f, 1.0f), false);
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+  const glm::vec3 centre(-1.5f, 0.5f, 0.5f);
+  Scene room = sceneWith({box});
+  room.instances[0].transform = mirror;
+  room.lights.push_back(pointAt(centre));
+  EXPECT_EQ(orientClosedShells(room).turned, 0u);
+  Scene solid = sceneWith({box});
+  solid.instances[0].transform = mirror;
+  solid.lights.push_back(pointAt({-1.5f, 3.0f, 0.5f}));
+  EXPECT_EQ(orientClosedShells(solid).turned, 1u);
+  const WorldGeometry world = flatten(solid);
+  for (std::size_t t = 0; t < world.triangleCount(); ++t)
+    EXPECT_GT(glm::dot(world.triangleCross(t), world.positions[world.triangles[t].x] - centre),
+              0.0f);
 }
 
 TEST(ClosedShells, RoomLitFromInsideKeepsItsInwardWinding) {
