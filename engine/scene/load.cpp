@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
+#include <string>
 #include <system_error>
 
+#include "scene/closed_shells.h"
 #include "scene/loaders.h"
 
 namespace bounce {
 
-Scene loadScene(const std::filesystem::path& path) {
+Scene loadSceneAsWritten(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw LoadError(path, "file not found");
   if (!std::filesystem::is_regular_file(path, ec)) throw LoadError(path, "not a regular file");
@@ -29,6 +31,16 @@ Scene loadScene(const std::filesystem::path& path) {
     throw LoadError(path, std::string("cannot load: ") + e.what());
   }
   scene.source = path.string();
+  return scene;
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+  Scene scene = loadSceneAsWritten(path);
+  if (const ShellOrientation shells = orientClosedShells(scene); shells.turned > 0)
+    scene.warnings.push_back(
+        std::to_string(shells.turned) + " of " + std::to_string(shells.closedShells) +
+        " closed shells had triangles wound towards their unlit side (every light source is on "
+        "the other side): turned, so that the renderer draws and the lightmap holds the lit side");
   return scene;
 }
 

@@ -1,6 +1,8 @@
 // Scene loading: picks the loader by the file's extension (.gltf, .glb, .obj, or a .json wrapper
 // that names a model file, its scale to metres, lights and a camera: scene_json_load.cpp).
 // Every bad input throws LoadError naming the file and the reason; nothing crashes.
+// Closed shells wound towards their unlit side are turned around (closed_shells.h), with a
+// warning.
 #pragma once
 
 #include <filesystem>

@@ -7,6 +7,9 @@
 
 namespace bounce {
 
+// The scene as its file describes it, picked by extension (loadScene then orients its closed
+// shells, closed_shells.h). Throws LoadError.
+Scene loadSceneAsWritten(const std::filesystem::path& path);
 // glTF 2.0, text (.gltf) or binary (.glb). Throws LoadError.
 Scene loadGltf(const std::filesystem::path& path);
 // Wavefront OBJ with its MTL materials. Throws LoadError.

@@ -205,7 +205,7 @@ Scene loadSceneJson(const std::filesystem::path& path) {
   const float scale = numberOf(path, doc, "scale", 1.0f);
   if (!(scale > 0.0f)) throw LoadError(path, "'scale' must be positive");
 
-  Scene scene = loadScene(model);  // its own errors name the model file
+  Scene scene = loadSceneAsWritten(model);  // its own errors name the model file
   // Uniform scale of every instance (lengths only: radiance and intensity do not change).
   const glm::mat4 toMetres = glm::scale(glm::mat4(1.0f), glm::vec3(scale));
   for (Instance& instance : scene.instances) instance.transform = toMetres * instance.transform;
