@@ -83,6 +83,7 @@ TEST_P(Corpus, LoadsOrFailsAsTheManifestSays) {
       expectProperty("width", static_cast<std::size_t>(bake.irradiance.width));
       expectProperty("height", static_cast<std::size_t>(bake.irradiance.height));
       expectProperty("vpls", bake.vpls ? bake.vpls->size() : 0);
+      expectProperty("vislights", bake.visibility ? bake.visibility->lightCount : 0);
     } else if (exr) {
       const Image image = readExr(path);
       std::size_t nonFinite = 0;

@@ -6,7 +6,7 @@ Usage: /usr/bin/python3 tests/corpus/make_corpus.py   (stdlib only; deterministi
 Each manifest row: <path relative to tests/corpus> TAB <expect> TAB <detail>
   error  <substring the LoadError / reader error must contain; the file's name must appear too>
   ok     <properties of the loaded result: key=value;...  (triangles, lights, cameras,
-          textures, width, height, nonfinite)>
+          textures, width, height, nonfinite; bake folders: vpls, vislights = visibility.bin's L)>
 The corpus test (tests/corpus/corpus_test.cpp) loads every file through the real loaders;
 the fuzz targets (tests/fuzz) start from the same files.
 """
@@ -468,16 +468,20 @@ write("exr/chunk_count_huge.exr", exr(2, 2, tamper=with_chunk_count(1 << 30)), "
 write("exr/window_pixels_over_limit.exr", exr(2, 2, window=(0, 0, 3, 1 << 28)), "error", "exceeds bounce's limit of 67108864 pixels")
 
 # ---------------------------------------------------------------- bake folders -------------
-# readBake (engine/bake/bake_folder.h) against tests/corpus/bake/scene.gltf: a floor and a wall
-# (two static instances) and a point light. bake/valid.bake is bounce-bake's own output,
+# readBake (engine/bake/bake_folder.h) against tests/corpus/bake/scene.gltf: a floor, a wall and a
+# 0.4 m x 0.4 m emissive panel facing down through the top of the wall (three static instances;
+# the panel is the one static area light, so bounce-bake writes visibility.bin) and a point light. bake/valid.bake is bounce-bake's own output,
 # committed; regenerate it (after a format or scene-hash change) with
 #   build/release/bin/bounce-bake tests/corpus/bake/scene.gltf -o tests/corpus/bake/valid.bake \
 #     --texel-budget 64 --spp 16 --vpls 16 --quiet
 # Every other folder is valid.bake with one file tampered. Rows: "<folder> error <reason>".
 def bake_scene():
-    quads = [  # (corners, normal) floor 2 m x 2 m at y = 0; wall at x = -1
+    # (corners, normal) floor 2 m x 2 m at y = 0; wall at x = -1; panel at y = 1.9 straddling
+    # the wall, so the wall hides part of it from the floor and the texels' V lie inside (0, 1)
+    quads = [
         ([(-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)], (0, 1, 0)),
         ([(-1, 0, -1), (-1, 2, -1), (-1, 2, 1), (-1, 0, 1)], (1, 0, 0)),
+        ([(-1.2, 1.9, -0.2), (-0.8, 1.9, -0.2), (-0.8, 1.9, 0.2), (-1.2, 1.9, 0.2)], (0, -1, 0)),
     ]
     binary, views, accessors, meshes, nodes = b"", [], [], [], []
     for i, (corners, normal) in enumerate(quads):
@@ -493,20 +497,23 @@ def bake_scene():
             accessors.append(accessor)
             binary += data
         meshes.append({"primitives": [{"attributes": {"POSITION": 3 * i, "NORMAL": 3 * i + 1},
-                                       "indices": 3 * i + 2, "material": 0}]})
-        nodes.append({"name": ["floor", "wall"][i], "mesh": i})
+                                       "indices": 3 * i + 2, "material": 1 if i == 2 else 0}]})
+        nodes.append({"name": ["floor", "wall", "panel"][i], "mesh": i})
     nodes.append({"name": "lamp", "translation": [0, 1.5, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})
-    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}], "nodes": nodes,
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3]}], "nodes": nodes,
            "meshes": meshes, "accessors": accessors, "bufferViews": views,
            "buffers": [{"byteLength": len(binary)}],
-           "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.6, 0.4, 1]}}],
-           "extensionsUsed": ["KHR_lights_punctual"],
+           "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.6, 0.4, 1]}},
+                         {"emissiveFactor": [1, 0.9, 0.8],  # radiance 3 x this, W/(sr·m²)
+                          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 3.0}}}],
+           "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength"],
            "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5.0}]}}}
     return gltf_bytes(doc, binary)
 
 
-write("bake/scene.gltf", bake_scene(), "ok", "triangles=4;lights=1")
+write("bake/scene.gltf", bake_scene(), "ok", "triangles=6;lights=1")
 VALID = os.path.join(ROOT, "bake", "valid.bake")
+BAKE_FILES = ("bake.json", "layout.bin", "lightmap.exr", "vpls", "visibility.bin")
 
 
 def bake_file(name):
@@ -517,7 +524,7 @@ def bake_file(name):
 def bake_case(name, expect, detail, **files):
     """A copy of valid.bake with files replaced (bytes) or removed (None)."""
     folder = "bake/%s.bake" % name
-    for f in ("bake.json", "layout.bin", "lightmap.exr", "vpls"):
+    for f in BAKE_FILES:
         path = os.path.join(ROOT, folder, f)
         content = files.get(f.replace(".", "_"), bake_file(f))
         if os.path.exists(path):
@@ -530,9 +537,10 @@ def bake_case(name, expect, detail, **files):
 
 if os.path.isdir(VALID):
     manifest = json.loads(bake_file("bake.json"))
-    layout, vpls = bake_file("layout.bin"), bake_file("vpls")
-    rows.append(("bake/valid.bake", "ok", "width=%d;height=%d;vpls=%d" % (
-        struct.unpack_from("<ii", layout, 12) + struct.unpack_from("<I", vpls, 12))))
+    layout, vpls, vis = bake_file("layout.bin"), bake_file("vpls"), bake_file("visibility.bin")
+    rows.append(("bake/valid.bake", "ok", "width=%d;height=%d;vpls=%d;vislights=%d" % (
+        struct.unpack_from("<ii", layout, 12) + struct.unpack_from("<I", vpls, 12) +
+        struct.unpack_from("<I", vis, 20))))
 
     def manifest_with(**kv):
         m = dict(manifest)
@@ -567,7 +575,7 @@ if os.path.isdir(VALID):
     bake_case("layout_width_zero", "error", "atlas size 0x", layout_bin=layout_with(12, "<i", 0))
     bake_case("layout_texel_nan", "error", "texel size nan m is not positive", layout_bin=layout_with(20, "<f", float("nan")))
     bake_case("layout_region_count_huge", "error", "instance regions announced", layout_bin=layout_with(36, "<I", 0xFFFFFFF0))
-    bake_case("layout_instance_out_of_range", "error", "out of range (the scene has 2 instances)", layout_bin=layout_with(40, "<I", 7))
+    bake_case("layout_instance_out_of_range", "error", "out of range (the scene has 3 instances)", layout_bin=layout_with(40, "<I", 7))
     bake_case("layout_corner_nan", "error", "has a non-finite corner UV", layout_bin=layout_with(48, "<f", float("inf")))
     bake_case("lightmap_missing", "error", "lightmap.exr: missing", lightmap_exr=None)
     bake_case("lightmap_not_exr", "error", "lightmap.exr: cannot read EXR: not an OpenEXR file", lightmap_exr=b"P6\n2 2\n255\n" + b"\0" * 12)
@@ -586,11 +594,45 @@ if os.path.isdir(VALID):
               vpls=vpls_with(56, "<f", float("nan")))
     bake_case("vpls_path_decreasing", "error", "is smaller than the previous VPL's",
               vpls=vpls_with(64, "<I", 0xFFFFFFFF))
+    # visibility.bin (docs/bake_folder.md): header 24 bytes (magic, version at 8, width 12,
+    # height 16, light count L at 20), then per texel 4 x u16 light, 4 x f32 V (24 bytes). The
+    # scene has L = 1 static area light (the panel). Texel 0's slot 0 is at 24, its V at 32.
+    def vis_with(offset, fmt, *values):
+        b = bytearray(vis)
+        struct.pack_into(fmt, b, offset, *values)
+        return bytes(b)
+
+    def vis_texel(width, height):  # a well-formed file of another size: every slot empty, V = 1
+        return (b"BNCVISIB" + struct.pack("<IiiI", 1, width, height, 1) +
+                (struct.pack("<4H", *[0xFFFF] * 4) + struct.pack("<4f", *[1.0] * 4)) * (width * height))
+
+    bake_case("visibility_bad_magic", "error", "visibility.bin: bad magic: not a bounce visibility file",
+              visibility_bin=b"BNCVISIX" + vis[8:])
+    bake_case("visibility_version_9", "error", "visibility.bin: format version 9, this build reads version 1: rebake",
+              visibility_bin=vis_with(8, "<I", 9))
+    bake_case("visibility_header_cut", "error", "visibility.bin: truncated: 10 bytes, the header needs 24",
+              visibility_bin=vis[:10])
+    bake_case("visibility_cut", "error", "visibility.bin: %dx%d texels need %d bytes, the file has %d" % (struct.unpack_from("<ii", vis, 12) + (len(vis), len(vis) - 24)),
+              visibility_bin=vis[:-24])
+    bake_case("visibility_trailing", "error", "visibility.bin: %dx%d texels need %d bytes, the file has %d" % (struct.unpack_from("<ii", vis, 12) + (len(vis), len(vis) + 1)),
+              visibility_bin=vis + b"\0")
+    bake_case("visibility_other_size", "error", "visibility.bin: is 2x2, layout.bin says %dx%d" % struct.unpack_from("<ii", layout, 12),
+              visibility_bin=vis_texel(2, 2))
+    bake_case("visibility_light_out_of_range", "error", "visibility.bin: texel 0: light 1 of 1",
+              visibility_bin=vis_with(24, "<H", 1))
+    bake_case("visibility_light_twice", "error", "visibility.bin: texel 0: names light 0 twice",
+              visibility_bin=vis_with(24, "<2H2f", 0, 0, 0.5, 0.5))
+    for name, v in (("nan", float("nan")), ("1_5", 1.5), ("negative", -0.1)):
+        bake_case("visibility_v_" + name, "error", "visibility.bin: texel 0: visible fraction is not in [0, 1]",
+                  visibility_bin=vis_with(32, "<f", v))
+    bake_case("visibility_light_count_2", "error", "visibility.bin: holds 2 static area lights, ",
+              visibility_bin=vis_with(20, "<I", 2))
     # Seeds of fuzz_bake (tests/fuzz/fuzz_bake.cpp): a byte picking the file, then its content.
-    for i, f in enumerate(("bake.json", "layout.bin", "lightmap.exr", "vpls")):
+    for i, f in enumerate(BAKE_FILES):
         write("bake_fuzz_seeds/valid_%s" % f.replace(".", "_"), bytes([i]) + bake_file(f), None, None)
     for name, i, f in (("layout_cut", 1, "layout.bin"), ("vpls_normal_long", 3, "vpls"),
-                       ("manifest_other_scene", 0, "bake.json")):
+                       ("manifest_other_scene", 0, "bake.json"),
+                       ("visibility_light_twice", 4, "visibility.bin")):
         with open(os.path.join(ROOT, "bake", name + ".bake", f), "rb") as src:
             write("bake_fuzz_seeds/%s" % name, bytes([i]) + src.read(), None, None)
 else:

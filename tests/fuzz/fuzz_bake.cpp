@@ -1,10 +1,13 @@
 // libFuzzer target: the bake-folder reader (engine/bake/bake_folder.h). The input's first byte
-// picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls; modulo 4),
-// the rest of the input is that file's content; the other three are those of
-// tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf. Allowed outcomes:
-// a Bake that the renderer can use blindly (lightmap size = layout size, one region per static
-// instance with 3 UVs per triangle, finite UVs; VPLs finite with unit normals and non-negative
-// flux), or a LoadError naming a file of the folder. Anything else aborts.
+// picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls,
+// 4 visibility.bin; modulo 5), the rest of the input is that file's content; the other four are
+// those of tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf (one static
+// area light, so it has a visibility.bin). Allowed outcomes: a Bake that the renderer can use
+// blindly (lightmap size = layout size, one region per static instance with 3 UVs per triangle,
+// finite UVs; VPLs finite with unit normals and non-negative flux; a visibility of the layout's
+// size whose V are finite and in [0, 1] and whose lights are < the scene's static area-light
+// count or one of the two marks), or a LoadError naming a file of the folder. Anything else
+// aborts.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -18,23 +21,26 @@
 
 #include "bake/bake_folder.h"
 #include "fuzz_input_file.h"
+#include "scene/area_lights.h"
 #include "scene/load.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-const char* const kFiles[4] = {"bake.json", "layout.bin", "lightmap.exr", "vpls"};
+constexpr int kFileCount = 5;
+const char* const kFiles[kFileCount] = {"bake.json", "layout.bin", "lightmap.exr", "vpls",
+                                        "visibility.bin"};
 
 struct ValidBake {
   bounce::Scene scene;
-  std::vector<char> files[4];
+  std::vector<char> files[kFileCount];
 };
 
 const ValidBake& valid() {
   static const ValidBake v = [] {
     const fs::path corpus = fs::path(BOUNCE_SOURCE_DIR) / "tests" / "corpus" / "bake";
     ValidBake out{bounce::loadScene(corpus / "scene.gltf"), {}};
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kFileCount; ++i) {
       std::ifstream in(corpus / "valid.bake" / kFiles[i], std::ios::binary);
       out.files[i].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
       if (out.files[i].empty()) std::abort();  // the seed bake is missing: nothing to fuzz
@@ -47,6 +53,25 @@ const ValidBake& valid() {
 [[noreturn]] void finding(const std::string& what) {
   std::fprintf(stderr, "fuzz_bake: %s\n", what.c_str());
   std::abort();
+}
+
+// The renderer indexes its static area lights by these and scales their irradiance by V.
+void checkVisibility(const bounce::BakedVisibility& visibility,
+                     const bounce::LightmapLayout& layout, const bounce::Scene& scene) {
+  if (visibility.width != layout.width || visibility.height != layout.height ||
+      visibility.texels.size() !=
+          static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height))
+    finding("visibility size disagrees with the layout");
+  const std::size_t lights = bounce::sceneAreaLights(scene).staticCount();
+  if (visibility.lightCount != lights) finding("visibility light count is not the scene's");
+  for (const bounce::TexelVisibility& texel : visibility.texels)
+    for (int s = 0; s < bounce::kVisibilitySlots; ++s) {
+      const uint16_t l = texel.light[s];
+      if (l != bounce::kNoLight && l != bounce::kOtherLights && l >= lights)
+        finding("visibility names a light index >= the static area-light count");
+      if (!std::isfinite(texel.visible[s]) || texel.visible[s] < 0.0f || texel.visible[s] > 1.0f)
+        finding("visible fraction V not finite or outside [0, 1]");
+    }
 }
 
 void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
@@ -76,6 +101,7 @@ void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
   if (bake.vpls)
     for (std::size_t i = 1; i < bake.vpls->size(); ++i)
       if ((*bake.vpls)[i].path < (*bake.vpls)[i - 1].path) finding("VPL path indices decrease");
+  if (bake.visibility) checkVisibility(*bake.visibility, layout, scene);
 }
 
 }  // namespace
@@ -83,10 +109,10 @@ void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const ValidBake& v = valid();
-  const int which = data[0] % 4;
+  const int which = data[0] % kFileCount;
   const fs::path dir = bounce::fuzz::writeInput(data, 0, "unused").parent_path() / "f.bake";
   fs::create_directories(dir);
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < kFileCount; ++i) {
     std::ofstream out(dir / kFiles[i], std::ios::binary | std::ios::trunc);
     if (i == which)
       out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));

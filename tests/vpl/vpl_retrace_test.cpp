@@ -1,6 +1,7 @@
 // VPLs traced again with the dynamic instances where they are (vpl/vpl_retrace.h).
 //  - Nothing dynamic moved: the re-trace with the bake's count rule (read from its bake.json) is
-//    the bake's own VPL set, bit for bit (the corpus bake: a floor, a wall, a point light).
+//    the bake's own VPL set, bit for bit (the corpus bake: a floor, a wall, an emissive panel,
+//    a point light).
 //  - A dynamic square placed under a point light: the bounce-1 VPLs on it carry ρ·I·Ω (W per
 //    channel), Ω the solid angle it subtends from the light, a closed form, at each of two
 //    placements; and no bounce-1 VPL lies on the floor inside its shadow. Tolerance: 4 standard
