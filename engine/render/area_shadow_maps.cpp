@@ -70,7 +70,7 @@ bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
 ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
                                        gl::Program& depthProgram, gl::DepthTarget& target) {
   ShadowDrawCount count;
-  if (cubes_.empty()) return count;
+  if (cubes_.empty() || !allCastersNeeded_) return count;
   if (scene.emitterVersion() != emitterVersion_) place(scene);
   const Box sceneBox = scene.bounds();
   for (Cube& cube : cubes_) {
@@ -140,7 +140,7 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
     std::copy(cube.points.begin(), cube.points.end(),
               points.begin() + static_cast<std::ptrdiff_t>(slot * kAreaShadowSamples));
   }
-  forward.set("uAreaShadowCount", static_cast<int>(cubes_.size()));
+  forward.set("uAreaShadowCount", allCastersNeeded_ ? static_cast<int>(cubes_.size()) : 0);
   forward.set("uAreaShadowOrigin", std::span<const glm::vec3>(origins));
   forward.set("uAreaShadowParams", std::span<const glm::vec4>(params));
   forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));

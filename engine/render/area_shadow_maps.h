@@ -40,6 +40,9 @@ class AreaShadowMaps {
   // cube gets a second one of only the dynamic instances (texture units kAreaDynamicShadow0..).
   // Returns false, changing nothing, when the driver lacks those units.
   bool setDynamicCasterCubes(bool enabled);
+  // Off, the all-caster cubes are not drawn (nothing reads them: every surface has baked
+  // visibility and no dynamic instance exists); the lit pass is told there are none.
+  void setAllCasterCubesNeeded(bool needed) { allCastersNeeded_ = needed; }
 
  private:
   struct Cube {
@@ -60,6 +63,7 @@ class AreaShadowMaps {
   std::optional<gl::DepthValueSampler> sampler_;
   int emitterVersion_ = -1;
   bool dynamicCubes_ = false;
+  bool allCastersNeeded_ = true;
 };
 
 }  // namespace bounce

@@ -128,6 +128,9 @@ void ForwardRenderer::setBake(const Bake& bake) {
   if (!p.lightmap.visibilityRefusal().empty())
     warnings_.push_back("the bake's area-light visibility is not used (" +
                         p.lightmap.visibilityRefusal() + "): area lights use their shadow maps");
+  // With every surface reading baked visibility and nothing dynamic, the area cubes are unused.
+  p.shadows.setAreaCubesNeeded(
+      !(p.lightmap.visibilityCoversEveryInstance(p.scene) && !hasDynamicInstance(p.scene)));
   // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
   // through cubes of their own.
   if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&

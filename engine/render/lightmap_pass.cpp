@@ -98,6 +98,13 @@ void LightmapPass::attachVisibility(const Bake& bake) {
   bakedLights_ = static_cast<int>(v.lightCount);
 }
 
+bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {
+  if (!visibility_) return false;
+  for (std::size_t i = 0; i < scene.instances().size(); ++i)
+    if (i >= lightmapped_.size() || !lightmapped_[i]) return false;
+  return true;
+}
+
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   program.set("uLightingMode", lightingModeIndex(attached_ ? mode : RenderMode::Direct));
   program.set("uLightmap", TextureUnit::kLightmap);

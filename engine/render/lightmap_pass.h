@@ -30,6 +30,9 @@ class LightmapPass {
   // Whether static surfaces read the static area lights' visibility from the bake; when the
   // bake has some but this is false, `why` says why not (for a renderer warning).
   bool hasBakedVisibility() const { return visibility_.has_value(); }
+  // Whether every instance of `scene` reads the baked visibility (static, with an atlas region):
+  // then no surface needs the area lights' all-caster cubes.
+  bool visibilityCoversEveryInstance(const GpuScene& scene) const;
   const std::string& visibilityRefusal() const { return visibilityRefusal_; }
 
   // Per frame: mode, textures, atlas size.

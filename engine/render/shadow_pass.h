@@ -33,6 +33,7 @@ class ShadowPass {
   void bind(gl::Program& forward) const;
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
   bool setDynamicCasterCubes(bool enabled) { return area_.setDynamicCasterCubes(enabled); }
+  void setAreaCubesNeeded(bool needed) { area_.setAllCasterCubesNeeded(needed); }
   // Per punctual light: its map's slot among its kind's maps, −1 for none.
   std::span<const int> lightSlots() const { return lightSlot_; }
   // What the last render() drew (culling's effect).

@@ -143,5 +143,24 @@ TEST(BakedVisibility, ABakedDirectEmitterIsNotDrawnLiveOnceABakeIsAttached) {
   EXPECT_GT(checked, 100);
 }
 
+// The area cubes are drawn only when something reads them: not when every instance has baked
+// visibility and none is dynamic, but as soon as one instance has no atlas region.
+TEST(BakedVisibility, AreaCubesAreDrawnOnlyWhereSomethingReadsThem) {
+  const Scene scene = floorUnderPanel();
+  Bake bake = visibilityBake(scene, [](int, int) { return named(0, 1.0f); });
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Direct;
+  {
+    ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+    renderer.renderImage(downCamera(1.0f), kSize, kSize);
+    EXPECT_EQ(renderer.shadowDrawCount().views, 0);
+  }
+  bake.layout.instances.pop_back();  // the panel reads no visibility: it needs the cube
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+  renderer.renderImage(downCamera(1.0f), kSize, kSize);
+  EXPECT_GT(renderer.shadowDrawCount().views, 0);
+}
+
 }  // namespace
 }  // namespace bounce::test
