@@ -236,10 +236,12 @@ std::string whyStale(const fs::path& manifestFile, const Manifest& m, const Scen
       list += (i + 1 == changed.size() ? " and " : ", ") + changed[i];
     return "the scene changed since the bake: its " + list + " differ" + edited;
   }
-  if (editedSince) return "the scene changed since the bake" + edited;
+  // What the hashes say comes first: file times are not kept by a checkout or a copy.
   if (recorded)
     return "every part's hash matches but the whole does not: made by a build of bounce that "
-           "hashes scenes differently";
+           "hashes scenes differently" +
+           edited;
+  if (editedSince) return "the scene changed since the bake" + edited;
   return "made for another scene or the scene changed since the bake (bake.json records no "
          "per-part hashes to tell which)";
 }
