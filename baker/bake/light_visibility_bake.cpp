@@ -13,21 +13,12 @@
 #include "trace/progress_line.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
+#include "trace/sobol_sampler.h"  // reverseBits: the base-2 radical inverse
 
 namespace bounce {
 namespace {
 
 constexpr uint32_t kVisibilitySalt = 0x5bd1e995u;
-
-// The radical inverse in base 2 of k: the second coordinate of a Hammersley set.
-float radicalInverse2(uint32_t k) {
-  k = (k << 16u) | (k >> 16u);
-  k = ((k & 0x55555555u) << 1u) | ((k & 0xAAAAAAAAu) >> 1u);
-  k = ((k & 0x33333333u) << 2u) | ((k & 0xCCCCCCCCu) >> 2u);
-  k = ((k & 0x0F0F0F0Fu) << 4u) | ((k & 0xF0F0F0F0u) >> 4u);
-  k = ((k & 0x00FF00FFu) << 8u) | ((k & 0xFF00FF00u) >> 8u);
-  return static_cast<float>(k >> 8) * 0x1p-24f;
-}
 
 struct LightEstimate {
   uint16_t light = 0;
@@ -70,7 +61,7 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
       for (int k = 0; k < samples; ++k) {
         const TexelPoint& x = coverage.points[begin + static_cast<uint32_t>(k) % points];
         glm::vec2 u((static_cast<float>(k) + rotation.x) / static_cast<float>(samples),
-                    radicalInverse2(static_cast<uint32_t>(k)) + rotation.y);
+                    unitFloat(reverseBits(static_cast<uint32_t>(k))) + rotation.y);
         u.y -= std::floor(u.y);
         const glm::vec3 y = pointOnLight(lights, l, u);
         const glm::vec3 d = y - x.position;
