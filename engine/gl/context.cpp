@@ -28,6 +28,11 @@ std::string Context::version() const {
 std::string Context::renderer() const {
   return glString(GL_RENDERER);
 }
+int Context::subpixelBits() const {
+  GLint bits = 0;
+  glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
+  return bits;
+}
 
 std::unique_ptr<Context> createOffscreenContext(std::optional<ContextBackend> backend,
                                                 std::string* eglFailure) {

@@ -36,6 +36,10 @@ class Context {
   // of the current context (make this one current first when several exist).
   std::string version() const;
   std::string renderer() const;
+  // GL_SUBPIXEL_BITS of the current context: the rasterizer snaps vertices to 2^-bits of a pixel
+  // (GL 3.3 asks for at least 4; llvmpipe and NVIDIA's driver have 8), so what a pixel's sample
+  // sees is known to that step, not exactly at the pixel's centre.
+  int subpixelBits() const;
 
  protected:
   Context() = default;

@@ -18,7 +18,7 @@ const char* kWriteDepth =
     "void main() { gl_FragDepth = uDepth; }\n";
 
 TEST(DepthTexture, ComparisonSamplerReadsWhatADepthPassWrote) {
-  osmesa();
+  testContext();
   const ScratchDir dir("depth2d");
   Program write(shaderDirectory() / "fullscreen.vert", dir.write("write.frag", kWriteDepth));
   const auto read = dir.write("read.frag",
@@ -58,7 +58,7 @@ TEST(DepthTexture, ComparisonSamplerReadsWhatADepthPassWrote) {
 }
 
 TEST(DepthTexture, EachCubeFaceHoldsItsOwnDepth) {
-  osmesa();
+  testContext();
   const ScratchDir dir("depthcube");
   Program write(shaderDirectory() / "fullscreen.vert", dir.write("write.frag", kWriteDepth));
   // Face f gets depth (f + 1)/10; looking along each face's axis must find it.
@@ -101,7 +101,7 @@ TEST(DepthTexture, EachCubeFaceHoldsItsOwnDepth) {
 }
 
 TEST(DepthTexture, RejectsImpossibleSizesAndFaces) {
-  osmesa();
+  testContext();
   EXPECT_THROW(DepthTexture2D(0, 4), std::invalid_argument);
   EXPECT_THROW(DepthCubeMap(-1), std::invalid_argument);
   DepthCubeMap cube(2);

@@ -1,4 +1,5 @@
-// Shared by the GL layer's tests: one OSMesa context per process and scratch shader folders.
+// Shared by the GL layer's tests: one context per process (support/test_context.h) and scratch
+// shader folders.
 #pragma once
 
 #include <unistd.h>
@@ -9,14 +10,11 @@
 #include <string>
 
 #include "gl/context.h"
+#include "support/test_context.h"
 
 namespace bounce::gl::test {
 
-inline Context& osmesa() {
-  static std::unique_ptr<Context> context = createOSMesaContext();
-  context->makeCurrent();
-  return *context;
-}
+using bounce::test::testContext;
 
 // A fresh folder under the system temp dir, removed when the object dies.
 class ScratchDir {

@@ -28,7 +28,7 @@ void main() { gl_Position = vec4(0.0); }
 )";
 
 TEST(Shader, SyntaxErrorNamesFileAndLine) {
-  osmesa();
+  testContext();
   const ScratchDir dir("syntax");
   const auto vertex = dir.write("ok.vert", kVertex);
   const auto fragment = dir.write("broken.frag",
@@ -44,7 +44,7 @@ TEST(Shader, SyntaxErrorNamesFileAndLine) {
 }
 
 TEST(Shader, ErrorInIncludedFileNamesThatFileAndItsLine) {
-  osmesa();
+  testContext();
   const ScratchDir dir("include");
   const auto vertex = dir.write("ok.vert", kVertex);
   const auto included = dir.write("helpers.glsl",
@@ -64,7 +64,7 @@ TEST(Shader, ErrorInIncludedFileNamesThatFileAndItsLine) {
 }
 
 TEST(Shader, MissingFileNamesThePath) {
-  osmesa();
+  testContext();
   const ScratchDir dir("missing");
   const auto vertex = dir.write("ok.vert", kVertex);
   const std::string error = buildError(vertex, dir.path() / "absent.frag");
@@ -113,7 +113,7 @@ TEST(ShaderDirectory, EnvironmentOverridesAndBadValueIsNamed) {
 // Readback is top row first: a shader lights the lower half of the target (gl_FragCoord.y
 // counts from the bottom), which must come back as the image's last rows.
 TEST(RenderTarget, ReadbackIsTopRowFirst) {
-  osmesa();
+  testContext();
   const ScratchDir dir("readback");
   const auto fragment =
       dir.write("lower_half.frag",

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "image/image_io.h"
 #include "render/forward_renderer.h"
 #include "scene/scene.h"
+#include "support/test_context.h"
 
 namespace bounce::test {
 
@@ -64,27 +66,41 @@ inline Camera downCamera(float height, float yfov = 0.8f) {
   return camera;
 }
 
-// World direction of the ray through the centre of pixel (x, y) (row 0 at the top).
-inline glm::vec3 pixelRay(const Camera& camera, int width, int height, int x, int y) {
+// World direction of the ray through the raster point (px, py) (pixels from the top-left
+// corner; pixel (x, y)'s centre is (x + 0.5, y + 0.5)).
+inline glm::vec3 pixelRay(const Camera& camera, int width, int height, float px, float py) {
   const float t = std::tan(0.5f * camera.yfov);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const float ndcX = (static_cast<float>(x) + 0.5f) / static_cast<float>(width) * 2.0f - 1.0f;
-  const float ndcY = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(height) * 2.0f;
+  const float ndcX = px / static_cast<float>(width) * 2.0f - 1.0f;
+  const float ndcY = 1.0f - py / static_cast<float>(height) * 2.0f;
   return glm::mat3(camera.cameraToWorld) * glm::vec3(ndcX * t * aspect, ndcY * t, -1.0f);
 }
+inline glm::vec3 pixelRay(const Camera& camera, int width, int height, int x, int y) {
+  return pixelRay(camera, width, height, static_cast<float>(x) + 0.5f,
+                  static_cast<float>(y) + 0.5f);
+}
 
-// The point of the floor y = 0 that pixel (x, y) sees.
-inline glm::vec3 floorPoint(const Camera& camera, int width, int height, int x, int y) {
-  const glm::vec3 d = pixelRay(camera, width, height, x, y);
+// The point of the floor y = 0 seen through the raster point (px, py), or pixel (x, y)'s centre.
+inline glm::vec3 floorPoint(const Camera& camera, int width, int height, float px, float py) {
+  const glm::vec3 d = pixelRay(camera, width, height, px, py);
   const glm::vec3 o = camera.position();
   return o + d * (-o.y / d.y);
 }
+inline glm::vec3 floorPoint(const Camera& camera, int width, int height, int x, int y) {
+  return floorPoint(camera, width, height, static_cast<float>(x) + 0.5f,
+                    static_cast<float>(y) + 0.5f);
+}
 
-// One OSMesa context per test process (gtest_discover_tests runs each test on its own).
-inline gl::Context& testContext() {
-  static std::unique_ptr<gl::Context> context = gl::createOSMesaContext();
-  context->makeCurrent();
-  return *context;
+// Where the rasterizer's sample of a pixel may lie around the pixel's centre: one sub-pixel step
+// (2^-GL_SUBPIXEL_BITS of a pixel, the grid vertices snap to) along each raster axis. A quantity
+// the renderer computes from interpolated positions is compared with the CPU's value at the
+// centre within what that value changes over these offsets: exact rasterizers (llvmpipe) land
+// on the centre, real GPUs within the step.
+inline std::array<glm::vec2, 4> subpixelOffsets(const gl::Context& context) {
+  const int bits = context.subpixelBits();
+  const float step = std::ldexp(1.0f, -(bits > 0 ? bits : 4));
+  return {glm::vec2(step, 0.0f), glm::vec2(-step, 0.0f), glm::vec2(0.0f, step),
+          glm::vec2(0.0f, -step)};
 }
 
 // Renders offscreen and returns the pixels as they come back from the EXR file bounce-render

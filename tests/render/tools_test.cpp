@@ -15,11 +15,13 @@
 #include "bake/bake_folder.h"
 #include "image/image_io.h"
 #include "scene/load.h"
+#include "support/test_context.h"
 #include "support/tool_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using bounce::test::testBackendName;
 
 using bounce::test::runCommand;
 constexpr auto& quote = bounce::test::shellQuote;  // the commands' paths, for the shell
@@ -60,7 +62,7 @@ TEST_F(ToolsTest, RenderMatchesPointOverPlaneThroughLoaderAndExr) {
   const fs::path exr = dir_ / "plane.exr";
   const ToolRun r =
       run(tool("bounce-render") + " " + content("point_over_plane/point_over_plane.gltf") +
-          " --width 32 --height 32 --context osmesa --out " + quote(exr));
+          " --width 32 --height 32 --context " + testBackendName() + " --out " + quote(exr));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const bounce::Image image = bounce::readExr(exr);
   ASSERT_EQ(image.width, 32);
@@ -239,7 +241,8 @@ TEST_F(ToolsTest, RenderWithBakeAddsReflectanceOverPiTimesE) {
   const fs::path exr = dir_ / "indirect.exr";
   const ToolRun r =
       run(tool("bounce-render") + " " + quote(sceneFile) + " --bake " + quote(dir_ / "plane.bake") +
-          " --mode indirect --width 16 --height 16 --context osmesa --out " + quote(exr));
+          " --mode indirect --width 16 --height 16 --context " + testBackendName() + " --out " +
+          quote(exr));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const bounce::Image image = bounce::readExr(exr);
   const glm::vec3 expected = 0.5f / std::numbers::pi_v<float> * glm::vec3(2, 3, 5);
@@ -290,9 +293,9 @@ TEST_F(ToolsTest, VplModeNeedsVplsAndReportsTheClamp) {
       fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf";
   const bounce::Scene scene = bounce::loadScene(sceneFile);
   writeConstantBake(dir_ / "plane.bake", scene, scene);
-  const std::string render = tool("bounce-render") + " " + quote(sceneFile) + " --bake " +
-                             quote(dir_ / "plane.bake") +
-                             " --mode vpl --width 16 --height 16 --context osmesa --out ";
+  const std::string render =
+      tool("bounce-render") + " " + quote(sceneFile) + " --bake " + quote(dir_ / "plane.bake") +
+      " --mode vpl --width 16 --height 16 --context " + testBackendName() + " --out ";
   ToolRun r = run(render + quote(dir_ / "none.exr"));
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("mode 'vpl' draws virtual point lights, but the bake has none"),

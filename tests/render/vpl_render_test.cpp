@@ -81,12 +81,31 @@ Image renderVpls(const VplScene& s, const Bake& bake, RenderMode mode, bool cull
   return renderer.renderImage(s.camera, kSize, kSize);
 }
 
-// |a − b| ≤ 1e-4·|b| + 1e-7 per channel (float evaluation of the same sum in another order).
-void expectClose(glm::vec3 gpu, glm::dvec3 cpu, int x, int y, const char* what) {
+// |a − b| ≤ 1e-4·|b| + 1e-7 + spread per channel: float evaluation of the same sum in another
+// order, and what the CPU value changes by over the rasterizer's sub-pixel step (`spread`,
+// subpixelSpread below): the GPU's floor point is interpolated, not the pixel centre's exactly.
+void expectClose(glm::vec3 gpu, glm::dvec3 cpu, glm::dvec3 spread, int x, int y, const char* what) {
   for (int c = 0; c < 3; ++c)
-    ASSERT_NEAR(gpu[c], cpu[c], 1e-4 * std::abs(cpu[c]) + 1e-7)
-        << what << " pixel (" << x << ", " << y << ") channel " << c;
+    ASSERT_NEAR(gpu[c], cpu[c], 1e-4 * std::abs(cpu[c]) + 1e-7 + spread[c])
+        << what << " pixel (" << x << ", " << y << ") channel " << c << " (sub-pixel spread "
+        << spread[c] << ")";
 }
+
+// The largest change of f (a CPU value at a floor point) from pixel (x, y)'s centre to the floor
+// points one sub-pixel step away (test_scenes.h: subpixelOffsets).
+template <class F>
+glm::dvec3 subpixelSpread(const VplScene& s, int x, int y, F f) {
+  const glm::dvec3 centre = f(floorPoint(s.camera, kSize, kSize, x, y));
+  glm::dvec3 spread(0.0);
+  for (const glm::vec2 o : subpixelOffsets(testContext())) {
+    const glm::vec3 p = floorPoint(s.camera, kSize, kSize, static_cast<float>(x) + 0.5f + o.x,
+                                   static_cast<float>(y) + 0.5f + o.y);
+    spread = glm::max(spread, glm::abs(f(p) - centre));
+  }
+  return spread;
+}
+
+const glm::dvec3 kLuminance(0.2126, 0.7152, 0.0722);
 
 class VplRender : public testing::TestWithParam<float> {};
 
@@ -95,19 +114,26 @@ TEST_P(VplRender, EveryPixelIsReflectanceOverPiTimesTheCpuGather) {
   const VplScene s = vplScene(Mobility::Static);
   const Bake bake = vplBake(s, r);
   const Image image = renderVpls(s, bake, RenderMode::Vpl, false);
-  const Image clampView = renderVpls(s, bake, RenderMode::VplClamp, false);
+  const Image clampImage = renderVpls(s, bake, RenderMode::VplClamp, false);
   double removedTotal = 0.0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
+      const auto reflected = [&](glm::vec3 p) {
+        return glm::dvec3(kAlbedo) / kPi *
+               gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r).irradiance;
+      };
+      const auto clampView = [&](glm::vec3 p) {
+        const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
+        return glm::dvec3(glm::dot(kLuminance, e.irradiance), glm::dot(kLuminance, e.removed),
+                          0.0) /
+               kPi;
+      };
       const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
-      const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
       const std::size_t i = static_cast<std::size_t>(y) * kSize + x;
-      expectClose(image.pixels[i], glm::dvec3(kAlbedo) / kPi * e.irradiance, x, y, "vpl");
-      const glm::dvec3 lum(0.2126, 0.7152, 0.0722);
-      expectClose(clampView.pixels[i],
-                  glm::dvec3(glm::dot(lum, e.irradiance), glm::dot(lum, e.removed), 0.0) / kPi, x,
-                  y, "vpl-clamp");
-      removedTotal += glm::dot(lum, e.removed);
+      expectClose(image.pixels[i], reflected(p), subpixelSpread(s, x, y, reflected), x, y, "vpl");
+      expectClose(clampImage.pixels[i], clampView(p), subpixelSpread(s, x, y, clampView), x, y,
+                  "vpl-clamp");
+      removedTotal += clampView(p).y * kPi;
     }
   // The clamped case must remove something (VPLs within r of the floor), the other nothing.
   if (r > 0.0f)
@@ -131,18 +157,27 @@ TEST(VplRender, ClampReportSumsTheFrame) {
   EXPECT_EQ(renderer.settings().mode, RenderMode::Vpl);
   EXPECT_EQ(report.vplCount, s.vpls.size());
   EXPECT_EQ(report.clampDistance, r);
-  const glm::dvec3 lum(0.2126, 0.7152, 0.0722);
-  double irradiance = 0.0, removed = 0.0;
+  // Per pixel, the float rounding (1e-4) and the sub-pixel spread of each sum, added up.
+  double irradiance = 0.0, removed = 0.0, irradianceSpread = 0.0, removedSpread = 0.0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const VplIrradiance e = gatherVplIrradiance(s.vpls, floorPoint(s.camera, kSize, kSize, x, y),
-                                                  {0, 1, 0}, nullptr, r);
-      irradiance += glm::dot(lum, e.irradiance);
-      removed += glm::dot(lum, e.removed);
+      const auto sums = [&](glm::vec3 p) {
+        const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
+        return glm::dvec3(glm::dot(kLuminance, e.irradiance), glm::dot(kLuminance, e.removed), 0.0);
+      };
+      const glm::dvec3 e = sums(floorPoint(s.camera, kSize, kSize, x, y));
+      const glm::dvec3 spread = subpixelSpread(s, x, y, sums);
+      irradiance += e.x;
+      removed += e.y;
+      irradianceSpread += spread.x;
+      removedSpread += spread.y;
     }
-  EXPECT_NEAR(report.irradiance, irradiance, 1e-4 * irradiance);
-  EXPECT_NEAR(report.removed, removed, 1e-4 * removed);
-  EXPECT_NEAR(report.removedFraction(), removed / (irradiance + removed), 1e-4);
+  EXPECT_NEAR(report.irradiance, irradiance, 1e-4 * irradiance + irradianceSpread);
+  EXPECT_NEAR(report.removed, removed, 1e-4 * removed + removedSpread);
+  const double fraction = removed / (irradiance + removed);
+  EXPECT_NEAR(report.removedFraction(), fraction,
+              1e-4 + (removedSpread + fraction * (irradianceSpread + removedSpread)) /
+                         (irradiance + removed));
   EXPECT_GT(report.removedFraction(), 0.0);
 }
 
@@ -168,10 +203,13 @@ TEST(VplRender, CulledFrameIsTheCpuCut) {
   EXPECT_LT(fewest, s.vpls.size() / 2);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
-      const VplIrradianceSum e = vplCutIrradiance(groups, cuts, p, {0, 1, 0}, r);
+      const auto reflected = [&](glm::vec3 p) {
+        return glm::dvec3(kAlbedo) / kPi *
+               vplCutIrradiance(groups, cuts, p, {0, 1, 0}, r).irradiance;
+      };
       expectClose(image.pixels[static_cast<std::size_t>(y) * kSize + x],
-                  glm::dvec3(kAlbedo) / kPi * e.irradiance, x, y, "culled vpl");
+                  reflected(floorPoint(s.camera, kSize, kSize, x, y)),
+                  subpixelSpread(s, x, y, reflected), x, y, "culled vpl");
     }
 }
 

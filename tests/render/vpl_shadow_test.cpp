@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -564,7 +565,9 @@ namespace {
 // face that clearly may see the sphere's own far side in front of p (a convex receiver never
 // occludes a VPL it faces, but a cube at another point than the VPL can see its back) and read
 // 0. So |L_maps − L_rays| ≤ ρ/π·E_rays(VPLs of such cubes) + 0.01·L_noV plus the float rounding
-// of VplRender (1e-4 relative); at least 100 pixels face every origin (the first term 0).
+// of VplRender (1e-4 relative) and what L changes by over the rasterizer's sub-pixel step (a real
+// GPU's interpolated point is not the ray's exactly: NVIDIA's differs by 2-5e-4 of L here); at
+// least 100 pixels face every origin (the first term 0).
 TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
   testContext();
   Scene scene;
@@ -626,18 +629,27 @@ TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
   double sumRays = 0.0, sumNone = 0.0, sumError = 0.0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const Ray ray = cameraRay(camera, kSize, kSize, static_cast<float>(x) + 0.5f,
-                                static_cast<float>(y) + 0.5f);
-      const Hit hit = kernel->intersect(ray);
-      if (!hit.valid() || geometry.triangleInstance[hit.triangle] != sphere) continue;
-      const glm::uvec3 t = geometry.triangles[hit.triangle];
-      const glm::vec3 p = ray.origin + hit.t * ray.direction;
-      const glm::vec3 n =
-          glm::normalize((1 - hit.u - hit.v) * geometry.normals[t.x] +
-                         hit.u * geometry.normals[t.y] + hit.v * geometry.normals[t.z]);
-      const glm::vec3 ng =
-          glm::normalize(glm::cross(geometry.positions[t.y] - geometry.positions[t.x],
-                                    geometry.positions[t.z] - geometry.positions[t.x]));
+      // The sphere point a raster point (px, py) sees: position, interpolated and geometric
+      // normal.
+      struct SpherePoint {
+        glm::vec3 p, n, ng;
+      };
+      const auto sphereAt = [&](float px, float py) -> std::optional<SpherePoint> {
+        const Hit hit = kernel->intersect(cameraRay(camera, kSize, kSize, px, py));
+        if (!hit.valid() || geometry.triangleInstance[hit.triangle] != sphere) return std::nullopt;
+        const glm::uvec3 t = geometry.triangles[hit.triangle];
+        const Ray ray = cameraRay(camera, kSize, kSize, px, py);
+        return SpherePoint{
+            ray.origin + hit.t * ray.direction,
+            glm::normalize((1 - hit.u - hit.v) * geometry.normals[t.x] +
+                           hit.u * geometry.normals[t.y] + hit.v * geometry.normals[t.z]),
+            glm::normalize(glm::cross(geometry.positions[t.y] - geometry.positions[t.x],
+                                      geometry.positions[t.z] - geometry.positions[t.x]))};
+      };
+      const std::optional<SpherePoint> seen =
+          sphereAt(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      if (!seen) continue;
+      const glm::vec3 p = seen->p, n = seen->n, ng = seen->ng;
       // The VPLs whose cube origin p does not face by the margin: that cube may see the
       // sphere's own far side in front of p (or p within the maps' uncertainty of its own
       // horizon) and shadow p from a VPL that does light it.
@@ -650,11 +662,24 @@ TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
       const glm::dvec3 none = rhoPi * gatherVplIrradiance(vpls, p, n, nullptr, kClamp).irradiance;
       const glm::dvec3 selfShadow =
           rhoPi * gatherVplIrradiance(uncertain, p, n, kernel.get(), kClamp).irradiance;
+      // What the unshadowed light changes by over the rasterizer's sub-pixel step (a sample
+      // off the sphere counts as all of it).
+      glm::dvec3 spread(0.0);
+      for (const glm::vec2 o : subpixelOffsets(testContext())) {
+        const std::optional<SpherePoint> q =
+            sphereAt(static_cast<float>(x) + 0.5f + o.x, static_cast<float>(y) + 0.5f + o.y);
+        spread = glm::max(
+            spread,
+            q ? glm::abs(rhoPi * gatherVplIrradiance(vpls, q->p, q->n, nullptr, kClamp).irradiance -
+                         none)
+              : none);
+      }
       for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(without.pixels[i][c], none[c], 1e-4 * none[c] + 1e-9)
-            << "no VPL shadows, pixel (" << x << ", " << y << ") channel " << c;
+        EXPECT_NEAR(without.pixels[i][c], none[c], 1e-4 * none[c] + 1e-9 + spread[c])
+            << "no VPL shadows, pixel (" << x << ", " << y << ") channel " << c
+            << " (sub-pixel spread " << spread[c] << ")";
         EXPECT_NEAR(withMaps.pixels[i][c], rays[c],
-                    selfShadow[c] + 0.01 * none[c] + 1e-4 * rays[c] + 1e-9)
+                    selfShadow[c] + 0.01 * none[c] + 1e-4 * rays[c] + 1e-9 + spread[c])
             << "pixel (" << x << ", " << y << ") channel " << c << ": without visibility "
             << none[c] << ", from VPLs whose cube p does not face " << selfShadow[c];
         sumError += std::abs(withMaps.pixels[i][c] - rays[c]);
