@@ -60,12 +60,18 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   app.add_option("--texel-size", settings.texelSize,
-                 "metres per texel edge (default: from --texel-budget and the static area)")
+                 "texel edge on the surface, metres, where extras.bounce.lightmapScale is 1 "
+                 "(default: the rule bounce-bake uses: 5 cm, finer on a small scene so it still "
+                 "gets 16384 texels; docs/lightmap_atlas.md)")
       ->check(CLI::PositiveNumber);
   app.add_option("--texel-budget", settings.texelBudget,
-                 "texels the static surface should cover when no --texel-size is given")
-      ->capture_default_str()
+                 "texels the static surface should cover, instead of the default rule")
       ->check(CLI::PositiveNumber);
+  app.add_option("--max-texels", settings.maxTexels,
+                 "cap on the texels the static surface takes: beyond it the texels grow, with a "
+                 "note")
+      ->capture_default_str()
+      ->check(CLI::Range(int64_t{16}, int64_t{1} << 28));
   app.add_option("--padding", settings.padding, "texels kept free between charts")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
@@ -90,6 +96,8 @@ int main(int argc, char** argv) {
                                    {"width", layout.width},
                                    {"height", layout.height},
                                    {"texelSizeMetres", layout.texelSize},
+                                   {"texelRule", atlas.texelRule},
+                                   {"weightedAreaSquareMetres", atlas.weightedArea},
                                    {"paddingTexels", layout.padding},
                                    {"staticAreaSquareMetres", atlas.staticArea},
                                    {"staticInstances", layout.instances.size()},
@@ -104,8 +112,9 @@ int main(int argc, char** argv) {
     if (json) {
       std::cout << report.dump(2) << "\n";
     } else {
-      std::printf("atlas %d x %d texels, %.4g m per texel, %d texels padding\n", layout.width,
-                  layout.height, static_cast<double>(layout.texelSize), layout.padding);
+      std::printf("atlas %d x %d texels, %.4g m per texel (%s), %d texels padding\n", layout.width,
+                  layout.height, static_cast<double>(layout.texelSize), atlas.texelRule.c_str(),
+                  layout.padding);
       std::printf("static surface %.4g m^2 in %zu instances\n", atlas.staticArea,
                   layout.instances.size());
       std::printf("charts %d (planar %d, conformal %d, mesh TEXCOORD_1 %d, degenerate %d)\n",

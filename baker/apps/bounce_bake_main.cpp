@@ -33,7 +33,8 @@ struct Options {
   std::filesystem::path scene;
   std::filesystem::path out;
   float texelSize = 0.0f;
-  int texelBudget = bounce::kDefaultTexelBudget;
+  int texelBudget = 0;  // 0: the density rule (atlas/texel_density.h)
+  int64_t maxTexels = bounce::kDefaultMaxTexels;
   int spp = kDefaults.irradiance.maxSpp;
   float targetError = kDefaults.irradiance.targetError;
   int maxDepth = kDefaults.irradiance.maxDepth;
@@ -117,6 +118,7 @@ int run(const Options& o) {
   bounce::AtlasSettings atlasSettings;
   atlasSettings.texelSize = o.texelSize;
   atlasSettings.texelBudget = o.texelBudget;
+  atlasSettings.maxTexels = o.maxTexels;
   const bounce::Atlas atlas = bounce::buildAtlas(scene, atlasSettings);
   for (const std::string& note : atlas.notes)
     std::fprintf(stderr, "bounce-bake: note: %s\n", note.c_str());
@@ -177,6 +179,7 @@ int run(const Options& o) {
   const uint64_t valid = bake.coveredTexels - bake.invalidTexels;
   const nlohmann::json settingsJson = {{"texelSize", atlas.layout.texelSize},
                                        {"texelBudget", o.texelSize > 0 ? 0 : o.texelBudget},
+                                       {"maxTexels", o.maxTexels},
                                        {"maxSpp", o.spp},
                                        {"targetError", o.targetError},
                                        {"maxDepth", o.maxDepth},
@@ -212,6 +215,9 @@ int run(const Options& o) {
        {{"width", atlas.layout.width},
         {"height", atlas.layout.height},
         {"texelSize", atlas.layout.texelSize},
+        {"texelRule", atlas.texelRule},
+        {"staticArea", atlas.staticArea},
+        {"weightedArea", atlas.weightedArea},
         {"padding", atlas.layout.padding},
         {"charts", atlas.layout.chartCount},
         {"utilisation", atlas.layout.utilisation},
@@ -332,11 +338,18 @@ int main(int argc, char** argv) {
   app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
   app.add_option("-o,--out", o.out, "bake folder (default: <scene without extension>.bake)");
   app.add_option("--texel-size", o.texelSize,
-                 "texel edge on the surface, metres (default: from --texel-budget)")
+                 "texel edge on the surface, metres, where extras.bounce.lightmapScale is 1 "
+                 "(default 0: 5 cm, finer on a small scene so it still gets 16384 texels; "
+                 "docs/lightmap_atlas.md)")
       ->check(CLI::PositiveNumber);
   app.add_option("--texel-budget", o.texelBudget,
-                 "texels the static surface area should cover when --texel-size is not given")
-      ->check(CLI::Range(16, 1 << 26));
+                 "texels the static surface should cover, instead of the default rule (0: the "
+                 "rule; ignored with --texel-size)")
+      ->check(CLI::Range(16, 1 << 26) | CLI::IsMember({0}));
+  app.add_option("--max-texels", o.maxTexels,
+                 "cap on the texels the static surface takes: beyond it the texels grow, with a "
+                 "note")
+      ->check(CLI::Range(int64_t{16}, int64_t{1} << 28));
   app.add_option("--spp", o.spp, "most samples per texel")->check(CLI::Range(16, 1 << 24));
   app.add_option("--target-error", o.targetError,
                  "sample a texel until its relative standard error is below this (0: always "

@@ -10,6 +10,7 @@
 #include "atlas/chart_pack.h"
 #include "atlas/chart_segment.h"
 #include "atlas/mesh_uv1.h"
+#include "atlas/texel_density.h"
 #include "atlas/uv_geometry.h"
 
 namespace bounce {
@@ -92,29 +93,40 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   if (settings.padding < 0) throw std::invalid_argument("atlas padding must be ≥ 0 texels");
   if (settings.texelSize < 0.0f || !std::isfinite(settings.texelSize))
     throw std::invalid_argument("atlas texel size must be a positive number of metres (or 0)");
-  if (settings.texelSize == 0.0f && settings.texelBudget < 1)
-    throw std::invalid_argument("atlas texel budget must be ≥ 1 texel");
+  if (settings.texelBudget < 0) throw std::invalid_argument("atlas texel budget must be ≥ 1 texel");
+  if (settings.maxTexels < 1) throw std::invalid_argument("atlas texel cap must be ≥ 1 texel");
   if (settings.maxSize < 1) throw std::invalid_argument("atlas maximum size must be ≥ 1 texel");
 
   Atlas atlas;
   atlas.layout.padding = settings.padding;
   std::vector<StaticInstance> statics;
-  double staticArea = 0.0;  // m²
+  double staticArea = 0.0, weightedArea = 0.0;  // m²
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
     if (instance.mobility != Mobility::Static) continue;
     StaticInstance s{i, worldMeshOf(scene, instance), {}};
     if (s.world.triangleCount() == 0) continue;
+    double area = 0.0;
     for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
-      if (const double a = s.world.area(t); std::isfinite(a)) staticArea += a;
+      if (const double a = s.world.area(t); std::isfinite(a)) area += a;
+    staticArea += area;
+    const double scale = instance.lightmapScale;
+    weightedArea += area * scale * scale;
     statics.push_back(std::move(s));
   }
   atlas.staticArea = staticArea;
+  atlas.weightedArea = weightedArea;
   if (statics.empty() || !(staticArea > 0.0)) return atlas;
 
-  float texelSize = settings.texelSize > 0.0f
-                        ? settings.texelSize
-                        : static_cast<float>(std::sqrt(staticArea / settings.texelBudget));
+  const TexelDensity density = chooseTexelDensity(
+      weightedArea, {settings.texelSize, settings.texelBudget, settings.maxTexels});
+  float texelSize = density.texelSize;
+  atlas.texelRule = density.rule;
+  if (!density.note.empty()) atlas.notes.push_back(density.note);
+  // Instance i's texel edge: the scene's over its lightmapScale.
+  const auto instanceTexel = [&](const StaticInstance& s) {
+    return texelSize / scene.instances[s.instance].lightmapScale;
+  };
   std::vector<std::string> uv1Notes;
   for (;;) {
     // Charts at this texel size: the mesh's own uv1 when usable, else generated ones.
@@ -123,8 +135,8 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     uv1Notes.clear();
     for (StaticInstance& s : statics) {
       const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
-      const Uv1Check uv1 =
-          checkMeshUv1(mesh, s.world, texelSize, settings.padding, settings.maxSize);
+      const float texel = instanceTexel(s);
+      const Uv1Check uv1 = checkMeshUv1(mesh, s.world, texel, settings.padding, settings.maxSize);
       if (uv1.usable) {
         Chart chart{s.instance, {}, {}, ChartSource::MeshUv1};
         for (uint32_t t = 0; t < mesh.triangleCount(); ++t) chart.triangles.push_back(t);
@@ -138,9 +150,9 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
         uv1Notes.push_back("mesh '" + mesh.name + "' (instance '" +
                            scene.instances[s.instance].name + "'): " + uv1.reason +
                            ", so its lightmap UVs were generated");
-      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texelSize);
+      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texel);
       for (Chart chart : s.charts) {
-        cells.push_back(toTexels(chart, texelSize));
+        cells.push_back(toTexels(chart, texel));
         charts.push_back(std::move(chart));
       }
     }
@@ -163,10 +175,10 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
       texelSize *= 1.1f;
       continue;
     }
-    if (texelSize != settings.texelSize && settings.texelSize > 0.0f) {
+    if (texelSize != density.texelSize) {
       std::ostringstream note;
-      note << "the charts do not fit in " << settings.maxSize << "² texels at "
-           << settings.texelSize << " m per texel, so the texel size is " << texelSize << " m";
+      note << "the charts do not fit in " << settings.maxSize << "² texels at " << density.texelSize
+           << " m per texel, so the texel size is " << texelSize << " m";
       atlas.notes.push_back(note.str());
     }
 

@@ -10,16 +10,20 @@
 #include <string>
 #include <vector>
 
+#include "atlas/texel_density.h"
 #include "bake/lightmap_layout.h"
 #include "scene/scene.h"
 
 namespace bounce {
 
 struct AtlasSettings {
-  float texelSize = 0.0f;   // metres per texel edge; 0 = derive it from texelBudget
-  int texelBudget = 65536;  // texels the static surface area should cover when texelSize is 0
-  int padding = 2;          // texels between charts (dilation and bilinear filtering need ≥ 2)
-  int maxSize = 4096;       // largest atlas edge, texels
+  // Texel edge in metres where an instance's lightmapScale is 1 (instance i's is texelSize/s_i).
+  // 0 = the density rule of texel_density.h (or √(A / texelBudget) when texelBudget > 0).
+  float texelSize = 0.0f;
+  int texelBudget = 0;                    // texels the static surface should cover; 0 = the rule
+  int64_t maxTexels = kDefaultMaxTexels;  // cap on the texels the surface takes (texel_density.h)
+  int padding = 2;     // texels between charts (dilation and bilinear filtering need ≥ 2)
+  int maxSize = 4096;  // largest atlas edge, texels
 };
 
 struct Atlas {
@@ -37,12 +41,16 @@ struct Atlas {
     int degenerate = 0;  // groups of area-less triangles (one texel each)
   } chartKinds;
   double staticArea = 0.0;  // m², surface of all static instances (world space)
+  // m², Σ area × lightmapScale²: the area the texel density applies to.
+  double weightedArea = 0.0;
+  std::string texelRule;  // how the texel size was chosen (TexelDensity::rule)
 };
 
 // Throws std::invalid_argument for settings that make no sense (padding < 0, texelSize < 0,
-// texelBudget < 1 when texelSize is 0, maxSize < 1). A scene without static surface gives an
-// empty layout (0 × 0). When the charts do not fit in maxSize², the texel size grows by 10 % until
-// they do (with a note); throws std::runtime_error when they do not fit even at one texel each.
+// texelBudget < 0, maxTexels < 1, maxSize < 1). A scene without static surface gives an empty
+// layout (0 × 0). When the texel cap coarsens the texels, a note says so; when the charts do not
+// fit in maxSize², the texel size grows by 10 % until they do (with a note); throws
+// std::runtime_error when they do not fit even at one texel each.
 Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings);
 
 }  // namespace bounce

@@ -61,9 +61,9 @@ struct LightmapBake {
   VisibilityBakeReport visibilityReport;
 };
 
-// bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): the atlas texel budget, at
-// most 4096 samples per texel, target relative standard error 10%, denoiser on.
-inline constexpr int kDefaultTexelBudget = 16384;
+// bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): at most 4096 samples per
+// texel, target relative standard error 10%, denoiser on. The texel size has its own rule
+// (atlas/texel_density.h).
 LightmapBakeSettings defaultBakeSettings();
 
 LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,

@@ -18,7 +18,7 @@ namespace {
 static_assert(aggregateFieldCount<Texture>() == 4, "Texture changed: extend the scene hash");
 static_assert(aggregateFieldCount<Material>() == 6, "Material changed: extend the scene hash");
 static_assert(aggregateFieldCount<Mesh>() == 7, "Mesh changed: extend the scene hash");
-static_assert(aggregateFieldCount<Instance>() == 4, "Instance changed: extend the scene hash");
+static_assert(aggregateFieldCount<Instance>() == 5, "Instance changed: extend the scene hash");
 static_assert(aggregateFieldCount<Light>() == 9, "Light changed: extend the scene hash");
 static_assert(aggregateFieldCount<Scene>() == 8, "Scene changed: extend the scene hash");
 
@@ -116,7 +116,10 @@ uint64_t hashInstances(const std::vector<Instance>& instances) {
     h.u64(instance.mesh);
     // A dynamic instance is in neither the lightmap nor the VPLs (the bake runs without it):
     // the bake holds wherever it is placed, so its transform is left out.
-    if (instance.mobility == Mobility::Static) h.mat(instance.transform);
+    if (instance.mobility == Mobility::Static) {
+      h.mat(instance.transform);
+      h.f32(instance.lightmapScale);  // sets its texels (a dynamic instance has none)
+    }
   }
   return h.state();
 }

@@ -412,6 +412,20 @@ class GltfBuilder {
     fail(what + ": extras.bounce.mobility must be \"static\" or \"dynamic\"");
   }
 
+  // extras.bounce.lightmapScale of a node, else its parent's: a number in (0, kMaxLightmapScale].
+  float lightmapScale(const tinygltf::Node& node, float inherited, const std::string& what) const {
+    if (!node.extras.Has("bounce")) return inherited;
+    const tinygltf::Value& bounce = node.extras.Get("bounce");
+    if (!bounce.Has("lightmapScale")) return inherited;
+    const tinygltf::Value& value = bounce.Get("lightmapScale");
+    const double scale = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+    if (!(scale > 0.0 && scale <= kMaxLightmapScale))
+      fail(what + ": extras.bounce.lightmapScale must be a number in (0, " +
+           std::to_string(static_cast<int>(kMaxLightmapScale)) +
+           "] (texels per metre relative to the scene's)");
+    return static_cast<float>(scale);
+  }
+
   void addLight(int index, const glm::mat4& world, const std::string& what) {
     checkIndex(index, model_.lights, what + " KHR_lights_punctual light");
     const tinygltf::Light& gl = model_.lights[static_cast<std::size_t>(index)];
@@ -521,10 +535,11 @@ class GltfBuilder {
       int node;
       glm::mat4 parent;
       Mobility mobility;
+      float lightmapScale;
     };
     std::vector<Pending> stack;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-      stack.push_back({*it, glm::mat4(1.0f), Mobility::Static});
+      stack.push_back({*it, glm::mat4(1.0f), Mobility::Static, 1.0f});
     std::vector<bool> visited(model_.nodes.size(), false);
     while (!stack.empty()) {
       const Pending item = stack.back();
@@ -540,12 +555,13 @@ class GltfBuilder {
       const glm::mat4 world = item.parent * localTransform(node);
       if (!allFinite(world)) fail(what + ": transform is not finite");
       const Mobility mob = mobility(node, item.mobility, what);
+      const float scale = lightmapScale(node, item.lightmapScale, what);
       if (node.mesh >= 0) {
         checkIndex(node.mesh, model_.meshes, what + " mesh");
         for (const uint32_t mesh : meshesOf_[static_cast<std::size_t>(node.mesh)]) {
           checkWorldCoordinates(scene_.meshes[mesh], world, what);
-          scene_.instances.push_back(
-              Instance{node.name.empty() ? scene_.meshes[mesh].name : node.name, mesh, world, mob});
+          scene_.instances.push_back(Instance{
+              node.name.empty() ? scene_.meshes[mesh].name : node.name, mesh, world, mob, scale});
         }
       } else if (node.mesh < -1) {
         fail(what + ": mesh index " + std::to_string(node.mesh) + " is out of range");
@@ -557,7 +573,7 @@ class GltfBuilder {
         addLight(light.Get<int>(), world, what);
       }
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
-        stack.push_back({*c, world, mob});
+        stack.push_back({*c, world, mob, scale});
     }
   }
 

@@ -26,6 +26,9 @@ inline constexpr double kMinZnear = 1e-6;
 
 // Texture width and height (texels): GL_MAX_TEXTURE_SIZE of llvmpipe (Mesa 22.3) is 16384, the
 // smallest maximum bounce runs on; and at most 2^26 texels in all (768 MiB as float RGB).
+// Largest extras.bounce.lightmapScale: 64× the scene's texels per metre (4096× per m²).
+inline constexpr double kMaxLightmapScale = 64.0;
+
 inline constexpr int kMaxTextureSide = 16384;
 inline constexpr std::size_t kMaxTextureTexels = std::size_t{1} << 26;
 

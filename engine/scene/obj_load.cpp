@@ -297,7 +297,8 @@ Scene loadObj(const std::filesystem::path& path) {
     }
   }
   for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-    scene.instances.push_back(Instance{scene.meshes[m].name, m, glm::mat4(1.0f), Mobility::Static});
+    scene.instances.push_back(
+        Instance{scene.meshes[m].name, m, glm::mat4(1.0f), Mobility::Static, 1.0f});
   }
   return scene;
 }

@@ -67,6 +67,9 @@ struct Instance {
   uint32_t mesh = 0;          // index into Scene::meshes
   glm::mat4 transform{1.0f};  // object to world
   Mobility mobility = Mobility::Static;
+  // Lightmap texels per metre relative to the scene's density (glTF extras.bounce.lightmapScale,
+  // inherited by child nodes): 2 gives texels half as wide, 4× as many per m². In (0, 64].
+  float lightmapScale = 1.0f;
 };
 
 enum class LightType : uint8_t { Point, Spot, Directional };

@@ -173,6 +173,57 @@ TEST(AtlasDensity, TexelBudgetSetsTheDensityForSmallAndLargeScenes) {
   }
 }
 
+// The default rule (texel_density.h): a small scene gets kSmallSceneTexels texels, a room 5 cm
+// texels, a hall too large for the cap kDefaultMaxTexels texels, with a note; bounce-atlas and
+// bounce-bake both build with these defaults.
+TEST(AtlasDensity, DefaultRuleFitsSmallScenesRoomsAndHalls) {
+  struct Case {
+    float side;  // m, of a cube: 6·side² of static surface
+    double texelSize;
+    bool capped;
+  };
+  const double hall = 6.0 * 400.0 * 400.0;
+  for (const Case c :
+       {Case{0.5f, std::sqrt(1.5 / kSmallSceneTexels), false}, Case{10.0f, kRoomTexelSize, false},
+        Case{400.0f, std::sqrt(hall / static_cast<double>(kDefaultMaxTexels)), true}}) {
+    Scene scene;
+    addInstance(scene, addUnitCubeMesh(scene), glm::scale(glm::mat4(1), glm::vec3(c.side)));
+    const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+    EXPECT_NEAR(atlas.layout.texelSize, c.texelSize, 1e-6 * c.texelSize) << c.side;
+    const bool noted =
+        !atlas.notes.empty() && atlas.notes[0].find("--max-texels") != std::string::npos;
+    EXPECT_EQ(noted, c.capped) << c.side;
+    const double covered = recountUtilisation(atlas) * atlas.layout.width * atlas.layout.height;
+    const double texels = 6.0 * c.side * c.side / (c.texelSize * c.texelSize);
+    EXPECT_GE(covered, texels) << c.side;  // plus the faces' partial border texels
+    EXPECT_LE(covered, 1.1 * texels) << c.side;
+  }
+}
+
+// extras.bounce.lightmapScale: an instance at scale s gets s² times the texels per m², and the
+// rule applies to the area weighted by s² (a finer object does not coarsen the others).
+TEST(AtlasInstances, LightmapScaleSetsAnInstancesTexelsPerMetre) {
+  Scene scene;
+  const uint32_t quad = addUnitQuadMesh(scene);
+  for (int i = 0; i < 3; ++i)
+    addInstance(scene, quad, glm::translate(glm::mat4(1), glm::vec3(2.0f * i, 0, 0)));
+  scene.instances[1].lightmapScale = 2.0f;
+  scene.instances[2].lightmapScale = 0.5f;
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_NEAR(atlas.staticArea, 3.0, 1e-6);
+  EXPECT_NEAR(atlas.weightedArea, 1.0 + 4.0 + 0.25, 1e-6);
+  EXPECT_NEAR(atlas.layout.texelSize, std::sqrt(5.25 / kSmallSceneTexels), 1e-7);
+  double area[3] = {0, 0, 0};
+  for (uint32_t i = 0; i < 3; ++i)
+    for (std::size_t t = 0; t < 2; ++t) area[i] += texelArea(atlas, i, t);
+  const double t = atlas.layout.texelSize;
+  EXPECT_NEAR(area[0], 1.0 / (t * t), 1e-3 * area[0]);
+  EXPECT_NEAR(area[1] / area[0], 4.0, 1e-2);
+  EXPECT_NEAR(area[2] / area[0], 0.25, 1e-2);
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+}
+
 // Curved charts (least-squares conformal maps): angles nearly kept, the whole chart at the
 // density. A spherical cap of half-angle θ mapped conformally (stereographically) has area scales
 // from its centre to its rim in the ratio 1/cos⁴(θ/2): 1.35 at the segmentation's 43° cone, so
@@ -411,7 +462,10 @@ TEST(AtlasSettingsCheck, NonsenseIsRefused) {
   s.texelSize = -0.1f;
   EXPECT_THROW(buildAtlas(scene, s), std::invalid_argument);
   s = AtlasSettings{};
-  s.texelBudget = 0;
+  s.texelBudget = -1;
+  EXPECT_THROW(buildAtlas(scene, s), std::invalid_argument);
+  s = AtlasSettings{};
+  s.maxTexels = 0;
   EXPECT_THROW(buildAtlas(scene, s), std::invalid_argument);
   // A texel size too fine for the largest atlas is coarsened, with a note.
   s = AtlasSettings{};

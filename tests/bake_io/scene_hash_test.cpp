@@ -241,7 +241,8 @@ TEST(SceneHash, EveryMeshFieldAndElement) {
 }
 
 // Where a dynamic instance stands is no part of the bake (bounce-bake bakes without it): moving
-// it (--move, the viewer) keeps the bake current. Its mesh and its mobility do count.
+// it (--move, the viewer) keeps the bake current. Its mesh and its mobility do count; a static
+// instance's lightmapScale sets its texels.
 TEST(SceneHash, EveryInstanceFieldButADynamicInstancesTransform) {
   ASSERT_EQ(richScene().instances[1].mobility, Mobility::Dynamic);
   checkEveryField<Instance>(
@@ -251,6 +252,10 @@ TEST(SceneHash, EveryInstanceFieldButADynamicInstancesTransform) {
        {"transform", Expect::ChangesUnlessDynamic, eachComponent(&Instance::transform)},
        {"mobility", Expect::Changes, {[](Instance& i) {
           i.mobility = i.mobility == Mobility::Static ? Mobility::Dynamic : Mobility::Static;
+        }}},
+       // A dynamic instance has no lightmap, so its scale is no part of the bake either.
+       {"lightmapScale", Expect::ChangesUnlessDynamic, {[](Instance& i) {
+          i.lightmapScale *= 2.0f;
         }}}},
       "instances");
 }

@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
   // The default bake, timed from the atlas on (as bounce-bake runs it, minus loading and writing).
   const double w0 = wallSeconds(), c0 = cpuSeconds();
   AtlasSettings atlasSettings;
-  atlasSettings.texelBudget = kDefaultTexelBudget;
+  atlasSettings.texelBudget = kSmallSceneTexels;
   const Atlas atlas = buildAtlas(scene, atlasSettings);
   const LightmapBakeSettings defaults = defaultBakeSettings();
   const LightmapBake bake = bakeLightmap(scene, geometry, *kernel, atlas.layout, defaults);
@@ -235,8 +235,8 @@ int main(int argc, char** argv) {
     std::fprintf(csv,
                  "texel_budget,texel_size_m,denoise,target_error,wall_s,cpu_s,spp_mean,"
                  "estimated_error,mean_abs_rel_error,rms_rel_error,reference_error\n");
-    for (const int budget : {kDefaultTexelBudget, kDefaultTexelBudget / 4}) {
-      if (coarseOnly && budget == kDefaultTexelBudget) continue;
+    for (const int budget : {kSmallSceneTexels, kSmallSceneTexels / 4}) {
+      if (coarseOnly && budget == kSmallSceneTexels) continue;
       AtlasSettings s;
       s.texelBudget = budget;
       const Atlas a = buildAtlas(scene, s);

@@ -56,6 +56,46 @@ TEST(GltfHierarchy, WithoutScenesEveryRootNodeIsPlaced) {
   EXPECT_EQ(loadScene(dir / "noscene.gltf").instances.size(), 3u);  // roots 0, 2 and child 1
 }
 
+// extras.bounce.lightmapScale: read from a node, inherited by its children unless they set
+// their own, 1 where no node sets it; a value outside (0, 64] is refused naming the node.
+TEST(GltfHierarchy, LightmapScaleIsReadAndInherited) {
+  test::TempDir dir;
+  test::GltfFixture f = test::GltfFixture::triangle();
+  f.doc["nodes"] = {
+      {{"name", "parent"},
+       {"mesh", 0},
+       {"children", {1, 2}},
+       {"extras", {{"bounce", {{"lightmapScale", 2.5}}}}}},
+      {{"name", "child"}, {"mesh", 0}},
+      {{"name", "own"}, {"mesh", 0}, {"extras", {{"bounce", {{"lightmapScale", 0.25}}}}}},
+      {{"name", "plain"}, {"mesh", 0}}};
+  f.doc["scenes"][0]["nodes"] = {0, 3};
+  f.writeGltf(dir / "scales.gltf");
+  const Scene scene = loadScene(dir / "scales.gltf");
+  ASSERT_EQ(scene.instances.size(), 4u);
+  for (const Instance& i : scene.instances) {
+    const float expected = i.name == "parent" || i.name == "child" ? 2.5f
+                           : i.name == "own"                       ? 0.25f
+                                                                   : 1.0f;
+    EXPECT_EQ(i.lightmapScale, expected) << i.name;
+  }
+  for (const nlohmann::json& bad : {nlohmann::json(0), nlohmann::json(-1), nlohmann::json(65),
+                                    nlohmann::json("2"), nlohmann::json::array({2})}) {
+    test::GltfFixture g = test::GltfFixture::triangle();
+    g.doc["nodes"][0]["name"] = "lamp";
+    g.doc["nodes"][0]["extras"] = {{"bounce", {{"lightmapScale", bad}}}};
+    g.writeGltf(dir / "bad.gltf");
+    try {
+      loadScene(dir / "bad.gltf");
+      ADD_FAILURE() << bad.dump() << " was accepted";
+    } catch (const LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find("'lamp': extras.bounce.lightmapScale"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(GltfHierarchy, CyclesAndBadMobilityAreErrors) {
   test::TempDir dir;
   test::GltfFixture f = test::GltfFixture::triangle();
