@@ -16,10 +16,13 @@
 #include "vpl.glsl"
 #include "vpl_shadows.glsl"
 
-in vec3 vWorldPosition;
-in vec3 vNormal;
+// Centroid: with multisampling a pixel on a triangle's edge whose centre lies outside it is
+// shaded at a covered sample, so the position (shadow and visibility lookups) and the lightmap
+// UV (which would read the chart's padding or its neighbour) stay on the triangle.
+centroid in vec3 vWorldPosition;
+centroid in vec3 vNormal;
 in vec2 vUv;
-in vec2 vLightmapUv;
+centroid in vec2 vLightmapUv;
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)

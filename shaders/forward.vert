@@ -10,10 +10,10 @@ uniform mat4 uModel;         // object → world
 uniform mat3 uNormalMatrix;  // inverse transpose of uModel's linear part
 uniform mat4 uViewProjection;
 
-out vec3 vWorldPosition;
-out vec3 vNormal;
+centroid out vec3 vWorldPosition;
+centroid out vec3 vNormal;
 out vec2 vUv;
-out vec2 vLightmapUv;
+centroid out vec2 vLightmapUv;
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);

@@ -15,6 +15,8 @@
 //   vpl       ρ/π · E_vpl on every surface        (the VPLs instead of the lightmap)
 //   vpl-clamp (lum(E_vpl), lum(E_removed), 0) / π: what the VPLs give and what their clamp
 //             removed, for a white surface (luminance; the clamp report sums these)
+//   error     each texel's estimated relative error as a false colour (bake/texel_error.h,
+//             computed on the CPU and bound where the chart colours are; nearest texel)
 // E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
 const int LIGHTING_FULL = 0;
 const int LIGHTING_DIRECT = 1;
@@ -23,11 +25,13 @@ const int LIGHTING_LIGHTMAP = 3;
 const int LIGHTING_CHARTS = 4;
 const int LIGHTING_VPL = 5;
 const int LIGHTING_VPL_CLAMP = 6;
+const int LIGHTING_ERROR = 7;
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region
 uniform sampler2D uLightmap;         // E, W/m², RGB32F, bilinear, clamped at the borders
-uniform sampler2D uLightmapCharts;   // chart colour per texel, nearest (black: uncovered)
+uniform sampler2D uLightmapCharts;   // chart colour per texel, nearest (black: uncovered); in
+                                     // the error mode the error's false colour per texel
 uniform vec2 uLightmapSize;          // atlas width, height in texels
 uniform bool uVplReceiver;           // this draw: a dynamic instance lit by the VPLs
 
@@ -72,6 +76,8 @@ vec3 shadeForMode(vec3 albedo, vec3 directIrradiance, vec3 emission, vec2 atlasU
     return albedo / PI * indirectIrradiance(atlasUv, vplIrradiance);
   if (uLightingMode == LIGHTING_LIGHTMAP) return bakedIrradiance(atlasUv) / PI;
   if (uLightingMode == LIGHTING_CHARTS) return chartView(atlasUv);
+  if (uLightingMode == LIGHTING_ERROR)
+    return uHasLightmap ? texture(uLightmapCharts, atlasUv).rgb : vec3(0.18);
   if (uLightingMode == LIGHTING_VPL) return albedo / PI * vplIrradiance;
   if (uLightingMode == LIGHTING_VPL_CLAMP)
     return vec3(luminance(vplIrradiance), luminance(vplRemoved), 0.0) / PI;

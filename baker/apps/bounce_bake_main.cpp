@@ -75,6 +75,17 @@ nlohmann::json vplManifest(const bounce::VplSet& set, double area, const Options
           {"clampDistance", bounce::vplClampDistance(area, set.vpls.size())}};
 }
 
+// The bake folder's error.exr: each texel's estimated relative standard error (before
+// denoising), kNoErrorEstimate where the texel has no samples of its own (uncovered padding,
+// or covered with every point dropped by the leak guard and filled from its neighbours).
+bounce::Image errorMap(const bounce::LightmapBake& bake) {
+  bounce::Image map(bake.irradiance.width, bake.irradiance.height,
+                    glm::vec3(bounce::kNoErrorEstimate));
+  for (std::size_t t = 0; t < map.pixels.size(); ++t)
+    if (bake.covered[t] && !bake.invalid[t]) map.pixels[t] = glm::vec3(bake.relativeError[t]);
+  return map;
+}
+
 double since(std::chrono::steady_clock::time_point& last) {
   const auto now = std::chrono::steady_clock::now();
   const double s = std::chrono::duration<double>(now - last).count();
@@ -235,6 +246,7 @@ int run(const Options& o) {
        {{"what",
          "relative standard error of each texel's irradiance (luminance), from its "
          "sample variance; before denoising"},
+        {"file", "error.exr"},
         {"mean", bake.meanRelativeError},
         {"p95", bake.p95RelativeError},
         {"target", o.targetError}}},
@@ -289,6 +301,7 @@ int run(const Options& o) {
   folder.manifestJson = manifest.dump(1) + "\n";
   if (o.vpls > 0) folder.vpls = vpls.vpls;
   folder.visibility = bake.visibility;
+  folder.relativeError = errorMap(bake);
   bounce::writeBake(out, folder);
   if (!o.png.empty()) {
     // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.

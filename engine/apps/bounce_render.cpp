@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bake/bake_folder.h"
+#include "bake/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "gl/context.h"
 #include "gl/shader.h"
@@ -34,6 +35,7 @@ struct Options {
   int frames = 1;
   std::string mode;  // default: full with a bake, direct without
   std::string bake;
+  bool noBake = false;
   bool noShadows = false;
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
@@ -43,13 +45,14 @@ struct Options {
   bool noVplShadows = false;
   std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
+  int msaa = 4;  // samples per pixel
 };
 
-bounce::RendererSettings rendererSettings(const Options& options) {
+bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) {
   bounce::RendererSettings settings;
-  settings.mode = options.mode.empty() ? (options.bake.empty() ? bounce::RenderMode::Direct
-                                                               : bounce::RenderMode::Full)
-                                       : *bounce::parseRenderMode(options.mode);  // CLI11 checked
+  settings.mode = options.mode.empty()
+                      ? (hasBake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
+                      : *bounce::parseRenderMode(options.mode);  // CLI11 checked
   settings.shadows.enabled = !options.noShadows;
   settings.shadows.resolution = options.shadowResolution;
   settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
@@ -89,17 +92,26 @@ int run(const Options& options) {
     return std::chrono::duration<double, std::milli>(b - a).count();
   };
   const auto start = Clock::now();
-  bounce::RendererSettings settings = rendererSettings(options);
-  if (bounce::renderModeNeedsBake(settings.mode) && options.bake.empty())
-    throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
-                             " draws baked light: give --bake DIR");
   std::optional<bounce::Bake> bake;
+  std::string bakeDir = options.bake;
   if (!options.bake.empty()) {
     bake = bounce::readBake(options.bake, scene);
-    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
-                 options.bake.c_str(), bake->layout.width, bake->layout.height,
-                 bake->layout.instances.size());
+  } else if (!options.noBake) {
+    bounce::BakeSearch found = bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
+    for (const std::string& note : found.notes)
+      std::fprintf(stderr, "bounce-render: %s\n", note.c_str());
+    bake = std::move(found.bake);
+    bakeDir = found.dir.string();
   }
+  bounce::RendererSettings settings = rendererSettings(options, bake.has_value());
+  if (bounce::renderModeNeedsBake(settings.mode) && !bake)
+    throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
+                             " draws baked light: give --bake DIR" +
+                             (options.noBake ? " (and no --no-bake)" : ""));
+  if (bake)
+    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
+                 bakeDir.c_str(), bake->layout.width, bake->layout.height,
+                 bake->layout.instances.size());
   // The bake's count rule over the scene with its dynamic instances placed (--move).
   if (bake && bake->vpls && options.dynamicVpls == "retrace")
     settings.vplTracer = bounce::placedVplTracer(scene, *bake);
@@ -112,17 +124,18 @@ int run(const Options& options) {
   for (const std::string& warning : renderer.warnings())
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
   const auto uploaded = Clock::now();
-  const bounce::Image image = renderer.renderImage(camera, options.width, options.height);
+  const bounce::Image image =
+      renderer.renderImage(camera, options.width, options.height, options.msaa);
   const auto rendered = Clock::now();
   std::fprintf(stderr,
                "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
-               "%.1f ms (render + readback, includes the driver's shader JIT), mode %s\n",
+               "%.1f ms (render + readback, includes the driver's shader JIT), mode %s, msaa %d\n",
                options.width, options.height, camera.name.c_str(), scene.triangleCount(),
                ms(start, uploaded), ms(uploaded, rendered),
-               std::string(bounce::renderModeName(settings.mode)).c_str());
+               std::string(bounce::renderModeName(settings.mode)).c_str(), options.msaa);
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time.
-    bounce::gl::RenderTarget target(options.width, options.height);
+    bounce::gl::RenderTarget target(options.width, options.height, options.msaa);
     const auto repeatStart = Clock::now();
     for (int i = 1; i < options.frames; ++i) {
       renderer.render(camera, target);
@@ -188,14 +201,24 @@ int main(int argc, char** argv) {
                  "render the frame this many times and report the mean time (benchmark)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light");
+                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
+                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
+                 "content scene, when one exists and matches the scene)");
+  app.add_option("--msaa", options.msaa,
+                 "samples per pixel (multisample anti-aliasing; the radiance is averaged over "
+                 "each pixel before tone mapping, a box filter as bounce-trace's); 1 turns it "
+                 "off (default 4)")
+      ->check(CLI::Range(1, 64));
+  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
+      ->excludes("--bake");
   app.add_option("--mode", options.mode,
-                 "what to draw: full (direct + baked indirect; the default with --bake), direct "
+                 "what to draw: full (direct + baked indirect; the default with a bake), direct "
                  "(real-time direct light only; the default without), indirect (only the baked "
                  "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
                  "(lightmap charts and texels), vpl (indirect light of every surface from the "
                  "bake's VPLs, rho/pi*E_vpl), vpl-clamp (red: the VPLs' E/pi on a white surface, "
-                 "green: what their clamp removed)")
+                 "green: what their clamp removed), error (each texel's estimated relative error: "
+                 "blue 0, green at the bake's target, red at twice it or more)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")

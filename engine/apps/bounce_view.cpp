@@ -1,7 +1,8 @@
 // bounce-view: the scene in a window (GLFW, OpenGL 3.3 core) with a fly camera. Controls:
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
-//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With --bake: M cycles the
+//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
+//   one found for the scene as bounce-render finds it, bake/bake_search.h): M cycles the
 //   modes (full, direct, indirect, lightmap, charts, and with the bake's VPLs vpl, vpl-clamp),
 //   C toggles the chart/texel-density view.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "bake/bake_folder.h"
+#include "bake/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
@@ -52,6 +54,8 @@ struct Options {
   std::string screenshot;
   std::string mode;  // default: full with a bake, direct without
   std::string bake;
+  bool noBake = false;
+  int msaa = 4;                    // samples per pixel
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::string dynamicVpls = "retrace";
 };
@@ -157,7 +161,7 @@ class Viewer {
   }
 
   // The modes in the order M steps through them; without a bake only direct; the VPL modes
-  // (vpl, vpl-clamp) only when the bake has VPLs.
+  // (vpl, vpl-clamp) only when the bake has VPLs, error only when it has error.exr.
   void nextMode() {
     if (!renderer_.hasBake()) return;
     const std::vector<std::string> names = bounce::renderModeNames();
@@ -167,6 +171,7 @@ class Viewer {
     for (std::size_t step = 1; step <= names.size(); ++step) {
       const bounce::RenderMode next = *bounce::parseRenderMode(names[(i + step) % names.size()]);
       if (bounce::renderModeNeedsVpls(next) && !renderer_.hasVpls()) continue;
+      if (bounce::renderModeNeedsErrorMap(next) && !renderer_.hasErrorMap()) continue;
       setMode(next);
       return;
     }
@@ -187,6 +192,9 @@ class Viewer {
                      ? " (pixels are E/pi: the baked irradiance on a white surface)"
                  : mode == bounce::RenderMode::VplClamp
                      ? " (red: the VPLs' E/pi on a white surface; green: what their clamp removed)"
+                 : mode == bounce::RenderMode::Error
+                     ? " (each texel's estimated relative error: blue 0, green at the bake's "
+                       "target, red at twice it or more, dark grey none)"
                      : "");
   }
 
@@ -251,7 +259,7 @@ class Viewer {
   void draw() {
     const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
     if (!target_ || target_->width() != size.x || target_->height() != size.y)
-      target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
+      target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y, options_.msaa);
     renderer_.render(fly_->camera(), *target_);
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
     tonemap_.draw(target_->color(), exposure_);
@@ -297,7 +305,7 @@ int main(int argc, char** argv) {
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits. With --bake: M cycles the modes, C toggles the chart view. Dynamic "
+      "exposure, Esc quits. With a bake: M cycles the modes, C toggles the chart view. Dynamic "
       "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
@@ -316,11 +324,20 @@ int main(int argc, char** argv) {
         return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
       });
   app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light");
+                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
+                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
+                 "content scene, when one exists and matches the scene)");
+  app.add_option("--msaa", options.msaa,
+                 "samples per pixel (multisample anti-aliasing, averaged in linear radiance "
+                 "before tone mapping); 1 turns it off (default 4)")
+      ->check(CLI::Range(1, 64));
+  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
+      ->excludes("--bake");
   app.add_option("--mode", options.mode,
-                 "start in this mode: full (direct + baked indirect; the default with --bake), "
+                 "start in this mode: full (direct + baked indirect; the default with a bake), "
                  "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
-                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed)")
+                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
+                 "error (each texel's estimated relative error in false colour)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--dynamic-vpls", options.dynamicVpls,
                  "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
@@ -333,12 +350,21 @@ int main(int argc, char** argv) {
     bounce::Scene scene = bounce::loadScene(options.scene);
     bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
     std::optional<bounce::Bake> bake;
-    if (!options.bake.empty()) bake = bounce::readBake(options.bake, scene);
+    if (!options.bake.empty()) {
+      bake = bounce::readBake(options.bake, scene);
+    } else if (!options.noBake) {
+      bounce::BakeSearch found =
+          bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
+      for (const std::string& note : found.notes)
+        std::fprintf(stderr, "bounce-view: %s\n", note.c_str());
+      bake = std::move(found.bake);
+    }
     const bounce::RenderMode mode =
         options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
                              : *bounce::parseRenderMode(options.mode);
     if (bounce::renderModeNeedsBake(mode) && !bake)
-      throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR");
+      throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR" +
+                               (options.noBake ? " (and no --no-bake)" : ""));
     Viewer viewer(options, std::move(scene), std::move(bake), mode);
     return viewer.run();
   } catch (const std::exception& e) {

@@ -31,6 +31,7 @@ namespace {
 
 constexpr char kManifestName[] = "bake.json";
 constexpr char kLightmapName[] = "lightmap.exr";
+constexpr char kErrorMapName[] = "error.exr";
 constexpr char kLayoutName[] = "layout.bin";
 
 // layout.bin, all values little-endian, no padding:
@@ -278,6 +279,24 @@ void replaceFolder(const fs::path& fresh, const fs::path& dir) {
   fs::remove_all(old, ec);
 }
 
+// An EXR of the bake folder, one texel per atlas texel: its size must be the layout's.
+Image readLayoutExr(const fs::path& file, const LightmapLayout& layout) {
+  Image image;
+  try {
+    image = readExr(file);
+  } catch (const std::runtime_error& e) {
+    std::string why = e.what();
+    const std::string prefix = file.string() + ": ";
+    if (why.starts_with(prefix)) why.erase(0, prefix.size());
+    throw LoadError(file, why);
+  }
+  if (image.width != layout.width || image.height != layout.height)
+    throw LoadError(file, "is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                              ", " + kLayoutName + " says " + std::to_string(layout.width) + "x" +
+                              std::to_string(layout.height));
+  return image;
+}
+
 }  // namespace
 
 Bake readBake(const fs::path& dir, const Scene& scene) {
@@ -310,19 +329,19 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
 
   const fs::path lightmapFile = dir / kLightmapName;
   if (!fs::exists(lightmapFile)) throw LoadError(lightmapFile, "missing");
-  try {
-    bake.irradiance = readExr(lightmapFile);
-  } catch (const std::runtime_error& e) {
-    std::string why = e.what();
-    const std::string prefix = lightmapFile.string() + ": ";
-    if (why.starts_with(prefix)) why.erase(0, prefix.size());
-    throw LoadError(lightmapFile, why);
+  bake.irradiance = readLayoutExr(lightmapFile, bake.layout);
+  const fs::path errorFile = dir / kErrorMapName;
+  if (fs::exists(errorFile)) {
+    bake.relativeError = readLayoutExr(errorFile, bake.layout);
+    for (const glm::vec3& e : bake.relativeError->pixels)
+      if (!(e.r == kNoErrorEstimate || (e.r >= 0.0f && e.r <= kMaxRelativeError)) || e.g != e.r ||
+          e.b != e.r)
+        throw LoadError(errorFile, "holds a texel of (" + std::to_string(e.r) + ", " +
+                                       std::to_string(e.g) + ", " + std::to_string(e.b) +
+                                       "): each texel is one relative error in [0, " +
+                                       std::to_string(kMaxRelativeError) +
+                                       "] in all three channels, or -1 for none");
   }
-  if (bake.irradiance.width != bake.layout.width || bake.irradiance.height != bake.layout.height)
-    throw LoadError(lightmapFile, "is " + std::to_string(bake.irradiance.width) + "x" +
-                                      std::to_string(bake.irradiance.height) + ", " + kLayoutName +
-                                      " says " + std::to_string(bake.layout.width) + "x" +
-                                      std::to_string(bake.layout.height));
   if (fs::exists(dir / kVplFileName)) bake.vpls = readVplFile(dir / kVplFileName);
   const fs::path visibilityFile = dir / kVisibilityFileName;
   if (fs::exists(visibilityFile)) {
@@ -360,6 +379,11 @@ void writeBake(const fs::path& dir, const Bake& bake) {
          std::to_string(bake.irradiance.height) + " does not match the layout's " +
          std::to_string(bake.layout.width) + "x" + std::to_string(bake.layout.height));
 
+  if (bake.relativeError && (bake.relativeError->width != bake.layout.width ||
+                             bake.relativeError->height != bake.layout.height))
+    fail("error map " + std::to_string(bake.relativeError->width) + "x" +
+         std::to_string(bake.relativeError->height) + " does not match the layout");
+
   fs::path tmp = dir;
   tmp += ".tmp-" + std::to_string(::getpid());
   std::error_code ec;
@@ -372,6 +396,7 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     writeExr(tmp / kLightmapName, bake.irradiance);
     if (bake.vpls) writeVplFile(tmp / kVplFileName, *bake.vpls);
     if (bake.visibility) writeVisibilityFile(tmp / kVisibilityFileName, *bake.visibility);
+    if (bake.relativeError) writeExr(tmp / kErrorMapName, *bake.relativeError);
     const std::string& json = bake.manifestJson;
     writeFileAtomically(tmp / kManifestName,
                         {reinterpret_cast<const unsigned char*>(json.data()), json.size()});

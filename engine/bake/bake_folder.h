@@ -11,6 +11,10 @@
 //   <dir>/vpls            the virtual point lights (optional; engine/bake/vpl_file.h)
 //   <dir>/visibility.bin  the static area lights' visibility per texel (optional;
 //                         engine/bake/visibility_file.h, bake/light_visibility.h)
+//   <dir>/error.exr       per texel, the estimated relative standard error of its irradiance
+//                         (dimensionless, the same in R, G and B; -1 where the texel has no
+//                         estimate of its own: uncovered, or filled from its neighbours)
+//                         (optional; the renderer's --mode error shows it)
 //
 // A folder is written whole or not at all: into "<dir>.tmp-<pid>", then renamed over <dir>, so
 // an interrupted bake leaves the previous one intact.
@@ -41,7 +45,13 @@ struct Bake {
   std::optional<std::vector<Vpl>> vpls;
   // The static area lights' baked visibility (<dir>/visibility.bin when present).
   std::optional<BakedVisibility> visibility;
+  // Per texel the estimated relative standard error of E, or kNoErrorEstimate (<dir>/error.exr
+  // when present).
+  std::optional<Image> relativeError;
 };
+
+inline constexpr float kNoErrorEstimate = -1.0f;
+inline constexpr float kMaxRelativeError = 1e6f;  // what a reader accepts
 
 // Reads <dir>; throws LoadError naming the file and the reason when a file is missing or
 // malformed, when the format version is not kBakeFormatVersion, or when the bake is stale: its

@@ -20,9 +20,24 @@ int checkedSize(int width, int height) {
   return height;
 }
 
+int checkedSamples(int samples) {
+  if (samples < 1 || samples > RenderTarget::maxSamples())
+    throw std::invalid_argument("multisampling with " + std::to_string(samples) +
+                                " samples per pixel (the driver allows 1 to " +
+                                std::to_string(RenderTarget::maxSamples()) + ")");
+  return samples;
+}
+
 }  // namespace
 
-RenderTarget::RenderTarget(int width, int height) : depth_(width, checkedSize(width, height)) {
+int RenderTarget::maxSamples() {
+  GLint samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &samples);
+  return samples;
+}
+
+RenderTarget::RenderTarget(int width, int height, int samples)
+    : depth_(width, checkedSize(width, height)), samples_(checkedSamples(samples)) {
   color_.width_ = width;
   color_.height_ = height;
   glGenTextures(1, &color_.id_);
@@ -42,15 +57,58 @@ RenderTarget::RenderTarget(int width, int height) : depth_(width, checkedSize(wi
     glDeleteFramebuffers(1, &framebuffer_);
     throw std::runtime_error("the driver cannot render to an RGBA32F + depth32F framebuffer");
   }
+  if (samples_ == 1) return;
+  glGenRenderbuffers(1, &multisampleColor_);
+  glBindRenderbuffer(GL_RENDERBUFFER, multisampleColor_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA32F, width, height);
+  glGenRenderbuffers(1, &multisampleDepth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, multisampleDepth_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT32F, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glGenFramebuffers(1, &multisampleFramebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, multisampleFramebuffer_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                            multisampleColor_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                            multisampleDepth_);
+  const GLenum multisampleStatus = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (multisampleStatus != GL_FRAMEBUFFER_COMPLETE) {
+    release();
+    throw std::runtime_error(
+        "the driver cannot render to an RGBA32F + depth32F framebuffer "
+        "with " +
+        std::to_string(samples_) + " samples per pixel");
+  }
 }
 
 RenderTarget::~RenderTarget() {
+  release();
+}
+
+void RenderTarget::release() {
   glDeleteFramebuffers(1, &framebuffer_);
+  glDeleteFramebuffers(1, &multisampleFramebuffer_);
+  glDeleteRenderbuffers(1, &multisampleColor_);
+  glDeleteRenderbuffers(1, &multisampleDepth_);
+  framebuffer_ = multisampleFramebuffer_ = multisampleColor_ = multisampleDepth_ = 0;
 }
 
 void RenderTarget::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? multisampleFramebuffer_ : framebuffer_);
   glViewport(0, 0, width(), height());
+}
+
+void RenderTarget::resolve() const {
+  if (samples_ == 1) return;
+  // A blit from a multisampled to a single-sampled buffer of the same size converts each
+  // pixel's samples to one value: the mean for colour; depth takes one sample (NEAREST).
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleFramebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glBlitFramebuffer(0, 0, width(), height(), 0, 0, width(), height(),
+                    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
 }
 
 Image RenderTarget::read() const {

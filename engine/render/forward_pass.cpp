@@ -37,6 +37,7 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Sh
     scene.draw(instance, program_);
   }
   gl::setBackFaceCulling(false);
+  target.resolve();  // multisampled: each pixel's mean radiance, before any tone mapping
   gl::checkErrors("forward pass");
 }
 

@@ -37,7 +37,7 @@ struct ForwardRenderer::Passes {
 
 namespace {
 
-void requireLight(RenderMode mode, bool hasBake, bool hasVpls) {
+void requireLight(RenderMode mode, bool hasBake, bool hasVpls, bool hasErrorMap) {
   if (renderModeNeedsBake(mode) && !hasBake)
     throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
                                 "' needs a bake (--bake DIR)");
@@ -45,6 +45,10 @@ void requireLight(RenderMode mode, bool hasBake, bool hasVpls) {
     throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
                                 "' draws virtual point lights, but the bake has none (no 'vpls' "
                                 "file: bake with bounce-bake --vpls N, N > 0)");
+  if (renderModeNeedsErrorMap(mode) && !hasErrorMap)
+    throw std::invalid_argument("mode '" + std::string(renderModeName(mode)) +
+                                "' shows the bake's per-texel error, but the bake has no "
+                                "error.exr (bake it again with this version of bounce-bake)");
 }
 
 bool hasDynamicInstance(const GpuScene& scene) {
@@ -58,7 +62,8 @@ bool hasDynamicInstance(const GpuScene& scene) {
 ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path& shaderDir,
                                  const RendererSettings& settings, const Bake* bake)
     : settings_(settings), scene_(scene) {
-  requireLight(settings.mode, bake != nullptr, bake && bake->vpls && !bake->vpls->empty());
+  requireLight(settings.mode, bake != nullptr, bake && bake->vpls && !bake->vpls->empty(),
+               bake && bake->relativeError);
   passes_ = std::make_unique<Passes>(scene, shaderDir, settings, warnings_);
   if (bake) setBake(*bake);
   if (scene.lights.empty() && passes_->scene.emitterCount() == 0)
@@ -172,6 +177,10 @@ bool ForwardRenderer::hasVpls() const {
   return passes_->vpls.attached();
 }
 
+bool ForwardRenderer::hasErrorMap() const {
+  return passes_->lightmap.hasErrorMap();
+}
+
 const VplPass& ForwardRenderer::vpls() const {
   return passes_->vpls;
 }
@@ -198,7 +207,7 @@ VplClampReport ForwardRenderer::measureVplClamp(const Camera& camera, int width,
 }
 
 void ForwardRenderer::setMode(RenderMode mode) {
-  requireLight(mode, hasBake(), hasVpls());
+  requireLight(mode, hasBake(), hasVpls(), hasErrorMap());
   settings_.mode = mode;
 }
 
@@ -215,8 +224,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
                  cameraViewProjection, target);
 }
 
-Image ForwardRenderer::renderImage(const Camera& camera, int width, int height) {
-  gl::RenderTarget target(width, height);
+Image ForwardRenderer::renderImage(const Camera& camera, int width, int height, int samples) {
+  gl::RenderTarget target(width, height, samples);
   render(camera, target);
   return target.read();
 }

@@ -71,8 +71,9 @@ class ForwardRenderer {
 
   // Draws radiance seen by `camera` into `target` (cleared to black first). Aspect = target's.
   void render(const Camera& camera, gl::RenderTarget& target);
-  // Renders offscreen at width x height and reads the radiance back, rows top to bottom.
-  Image renderImage(const Camera& camera, int width, int height);
+  // Renders offscreen at width x height with `samples` per pixel (multisampling, resolved to
+  // each pixel's mean radiance) and reads the radiance back, rows top to bottom.
+  Image renderImage(const Camera& camera, int width, int height, int samples = 1);
 
   // Moves instance `index` (object → world) without re-uploading its mesh. After moving dynamic
   // instances, the next frame re-traces the VPLs once (RendererSettings::vplTracer), else
@@ -94,6 +95,7 @@ class ForwardRenderer {
   void setBake(const Bake& bake);
   bool hasBake() const;
   bool hasVpls() const;
+  bool hasErrorMap() const;  // the bake's error.exr (mode error)
   // Switches what the lit pass draws; throws std::invalid_argument for a mode that needs a bake
   // (or VPLs) when none is set.
   void setMode(RenderMode mode);

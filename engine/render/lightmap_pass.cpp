@@ -1,6 +1,7 @@
 #include "render/lightmap_pass.h"
 
 #include "bake/lightmap_charts.h"
+#include "bake/texel_error.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -25,6 +26,8 @@ int lightingModeIndex(RenderMode mode) {
       return 5;
     case RenderMode::VplClamp:
       return 6;
+    case RenderMode::Error:
+      return 7;
   }
   return 1;
 }
@@ -47,6 +50,12 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   charts_.reset();
   charts_.emplace(layout.width, layout.height, charts.pixels, gl::Filter::Nearest,
                   gl::Wrap::ClampToEdge);
+  errorColours_.reset();
+  if (bake.relativeError)
+    errorColours_.emplace(
+        layout.width, layout.height,
+        errorFalseColourImage(*bake.relativeError, bakeErrorTarget(bake.manifestJson)).pixels,
+        gl::Filter::Nearest, gl::Wrap::ClampToEdge);
   size_ = {static_cast<float>(layout.width), static_cast<float>(layout.height)};
   attachVisibility(bake);
   const std::span<const GpuInstance> instances = scene.instances();
@@ -111,7 +120,9 @@ void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   program.set("uLightmapCharts", TextureUnit::kLightmapCharts);
   program.set("uLightmapSize", size_);
   irradiance_->bind(TextureUnit::kLightmap);
-  charts_->bind(TextureUnit::kLightmapCharts);
+  // The error view reads its false colours where the chart view reads chart colours.
+  (mode == RenderMode::Error && errorColours_ ? *errorColours_ : *charts_)
+      .bind(TextureUnit::kLightmapCharts);
   program.set("uBakedLightCount", bakedLights_);
   program.set("uHasBake", attached_ ? 1 : 0);
   if (visibility_) {

@@ -27,6 +27,7 @@ class LightmapPass {
   // of its regions' instances in `scene`. Dynamic instances never get a region.
   void attach(const Bake& bake, GpuScene& scene);
   bool attached() const { return attached_; }
+  bool hasErrorMap() const { return errorColours_.has_value(); }
   // Whether static surfaces read the static area lights' visibility from the bake; when the
   // bake has some but this is false, `why` says why not (for a renderer warning).
   bool hasBakedVisibility() const { return visibility_.has_value(); }
@@ -45,8 +46,9 @@ class LightmapPass {
 
   std::optional<gl::Texture2D> irradiance_;
   std::optional<gl::Texture2D> charts_;
-  std::optional<gl::Texture2D> visibility_;  // bake/light_visibility.h as 2·W × H RGBA32F
-  int bakedLights_ = 0;                      // static area lights the visibility names
+  std::optional<gl::Texture2D> errorColours_;  // bake/texel_error.h per texel, when it has them
+  std::optional<gl::Texture2D> visibility_;    // bake/light_visibility.h as 2·W × H RGBA32F
+  int bakedLights_ = 0;                        // static area lights the visibility names
   glm::vec2 size_{1.0f};
   std::vector<uint8_t> lightmapped_;  // per instance
   bool attached_ = false;

@@ -7,7 +7,7 @@ namespace {
 
 constexpr std::array kModes = {RenderMode::Full,     RenderMode::Direct, RenderMode::Indirect,
                                RenderMode::Lightmap, RenderMode::Charts, RenderMode::Vpl,
-                               RenderMode::VplClamp};
+                               RenderMode::VplClamp, RenderMode::Error};
 
 }  // namespace
 
@@ -27,6 +27,8 @@ std::string_view renderModeName(RenderMode mode) {
       return "vpl";
     case RenderMode::VplClamp:
       return "vpl-clamp";
+    case RenderMode::Error:
+      return "error";
   }
   return "direct";
 }
@@ -37,6 +39,10 @@ bool renderModeNeedsBake(RenderMode mode) {
 
 bool renderModeNeedsVpls(RenderMode mode) {
   return mode == RenderMode::Vpl || mode == RenderMode::VplClamp;
+}
+
+bool renderModeNeedsErrorMap(RenderMode mode) {
+  return mode == RenderMode::Error;
 }
 
 std::optional<RenderMode> parseRenderMode(std::string_view name) {

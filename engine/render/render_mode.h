@@ -19,12 +19,16 @@ enum class RenderMode {
   Vpl,       // indirect light of every surface from the VPLs, ρ/π·E_vpl (needs a bake with VPLs)
   VplClamp,  // (lum E_vpl, lum E_removed, 0)/π: the VPLs and what their clamp removed, white
              // surfaces (needs VPLs; bounce-render's clamp report reads it)
+  Error,     // each texel's estimated relative error as a false colour (bake/texel_error.h;
+             // needs a bake with error.exr)
 };
 
 // Whether the mode reads the lightmap or the VPLs (and so needs a bake).
 bool renderModeNeedsBake(RenderMode mode);
 // Whether the mode draws every surface from the VPLs (and so needs a bake with VPLs).
 bool renderModeNeedsVpls(RenderMode mode);
+// Whether the mode shows the bake's error map (and so needs a bake with error.exr).
+bool renderModeNeedsErrorMap(RenderMode mode);
 
 // "direct", …: the names the tools' --mode accepts.
 std::string_view renderModeName(RenderMode mode);

@@ -8,6 +8,7 @@
 
 #include <bit>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -166,6 +167,27 @@ TEST(BakeFolder, RoundTripIsBitExact) {
   expectSameBake(bake, readBake(dir, scene));
   // Nothing but the folder itself is left next to it.
   EXPECT_EQ(countEntries(dir.parent_path()), 1);
+}
+
+// error.exr: each texel's relative error (or kNoErrorEstimate) comes back bit for bit; a bake
+// without it reads back without it.
+TEST(BakeFolder, ErrorMapRoundTripsAndIsOptional) {
+  const Scene scene = testScene();
+  Bake bake = testBake(scene);
+  const fs::path dir = freshDir("error_map") / "scene.bake";
+  writeBake(dir, bake);
+  EXPECT_FALSE(fs::exists(dir / "error.exr"));
+  EXPECT_FALSE(readBake(dir, scene).relativeError.has_value());
+  bake.relativeError = Image(16, 8, glm::vec3(kNoErrorEstimate));
+  for (int x = 0; x < 16; ++x) bake.relativeError->at(x, 3) = glm::vec3(0.013f * x);
+  writeBake(dir, bake);
+  const Bake back = readBake(dir, scene);
+  ASSERT_TRUE(back.relativeError.has_value());
+  ASSERT_EQ(back.relativeError->pixels.size(), bake.relativeError->pixels.size());
+  for (std::size_t i = 0; i < back.relativeError->pixels.size(); ++i)
+    EXPECT_TRUE(bitEqual(back.relativeError->pixels[i].g, bake.relativeError->pixels[i].g)) << i;
+  bake.relativeError = Image(8, 8);
+  EXPECT_THROW(writeBake(dir, bake), std::runtime_error);
 }
 
 TEST(BakeFolder, RewriteReplacesTheWholeFolder) {
@@ -434,6 +456,27 @@ TEST_F(BakeRejection, NonFiniteCornerUv) {
 TEST_F(BakeRejection, LightmapSizeDisagreesWithLayout) {
   writeExr(dir_ / "lightmap.exr", Image(16, 9));
   expectRefused("lightmap.exr", "is 16x9, layout.bin says 16x8");
+}
+
+TEST_F(BakeRejection, ErrorMapSizeDisagreesWithLayout) {
+  writeExr(dir_ / "error.exr", Image(8, 8));
+  expectRefused("error.exr", "is 8x8, layout.bin says 16x8");
+}
+
+TEST_F(BakeRejection, ErrorMapWithANegativeOrUnequalTexel) {
+  Image error(16, 8, glm::vec3(0.1f));
+  error.at(3, 2) = glm::vec3(-0.5f);
+  writeExr(dir_ / "error.exr", error);
+  expectRefused("error.exr", "each texel is one relative error");
+  error.at(3, 2) = glm::vec3(0.1f, 0.2f, 0.1f);
+  writeExr(dir_ / "error.exr", error);
+  expectRefused("error.exr", "each texel is one relative error");
+  error.at(3, 2) = glm::vec3(NAN);
+  writeExr(dir_ / "error.exr", error);
+  expectRefused("error.exr", "each texel is one relative error");
+  error.at(3, 2) = glm::vec3(kNoErrorEstimate);
+  writeExr(dir_ / "error.exr", error);
+  EXPECT_EQ(readError(dir_, scene_), "");
 }
 
 TEST_F(BakeRejection, LightmapNotAnExr) {

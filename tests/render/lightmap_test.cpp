@@ -179,6 +179,42 @@ TEST(Lightmap, BakedOnlyLightIsNotDrawnLiveOnceABakeIsAttached) {
   EXPECT_GT(live.at(2, 2).g, 0.1f);
 }
 
+// Mode error: each texel's estimated relative error e against the bake's target (bake.json
+// "estimatedError"."target" = 0.2) as blue (0) → green (target) → red (twice it or more), dark
+// grey where a texel has no estimate, mid grey on surfaces without a lightmap. A 2×2 error map
+// over the floor: one pixel in each quadrant (clear of the hovering quad) shows its texel.
+TEST(Lightmap, ErrorModeShowsEachTexelsErrorAgainstTheTarget) {
+  const PlaneScene p = planeScene();
+  Bake bake = planeBake(p.scene, Image(2, 2, glm::vec3(1.0f)));
+  nlohmann::json manifest = nlohmann::json::parse(bake.manifestJson);
+  manifest["estimatedError"] = {{"target", 0.2}};
+  bake.manifestJson = manifest.dump();
+  bake.relativeError = Image(2, 2);
+  bake.relativeError->at(0, 0) = glm::vec3(0.1f);              // half the target
+  bake.relativeError->at(1, 0) = glm::vec3(0.3f);              // 1.5 × the target
+  bake.relativeError->at(0, 1) = glm::vec3(kNoErrorEstimate);  // none
+  bake.relativeError->at(1, 1) = glm::vec3(0.8f);              // 4 × the target
+  const Image error = renderMode(p.scene, p.camera, bake, RenderMode::Error);
+  const auto expectPixel = [&](int x, int y, glm::vec3 expected) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(error.at(x, y)[c], expected[c], 1e-6f) << x << "," << y;
+  };
+  expectPixel(4, 4, {0.0f, 0.5f, 0.5f});
+  expectPixel(kSize - 5, 4, {0.5f, 0.5f, 0.0f});
+  expectPixel(4, kSize - 5, glm::vec3(0.05f));
+  expectPixel(kSize - 5, kSize - 5, {1.0f, 0.0f, 0.0f});
+  expectPixel(kSize / 2, kSize / 2, glm::vec3(0.18f));  // the dynamic quad: no lightmap
+
+  bake.relativeError.reset();  // a bake without error.exr: the mode is refused, saying why
+  testContext();
+  ForwardRenderer renderer(p.scene, gl::shaderDirectory(), {}, &bake);
+  try {
+    renderer.setMode(RenderMode::Error);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("no error.exr"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Lightmap, ModesThatNeedABakeRefuseToStartWithoutOne) {
   const PlaneScene p = planeScene();
   testContext();

@@ -60,12 +60,15 @@ class ToolsTest : public testing::Test {
 // whatever the camera's roll. Exact up to float rounding, so 1%.
 TEST_F(ToolsTest, RenderMatchesPointOverPlaneThroughLoaderAndExr) {
   const fs::path exr = dir_ / "plane.exr";
-  const ToolRun r =
-      run(tool("bounce-render") + " " + content("point_over_plane/point_over_plane.gltf") +
-          " --width 32 --height 32 --context " + testBackendName() + " --out " + quote(exr));
+  const ToolRun r = run(
+      tool("bounce-render") + " " + content("point_over_plane/point_over_plane.gltf") +
+      " --width 32 --height 32 --msaa 1 --context " + testBackendName() + " --out " + quote(exr));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const bounce::Image image = bounce::readExr(exr);
   ASSERT_EQ(image.width, 32);
+  // --msaa 1: each pixel is the closed form at its centre. (With 4 samples a pixel the plane's
+  // diagonal crosses is shaded once per triangle at a covered sample, up to half a pixel off
+  // its centre: 3% here in the corner, where E changes 4% over half a pixel.)
   const double t = std::tan(std::numbers::pi / 6);
   for (const auto& [x, y] : {std::pair{15, 15}, {16, 16}, {0, 0}, {31, 5}, {8, 24}}) {
     const double nx = (x + 0.5) / 16 - 1, ny = (y + 0.5) / 16 - 1;
@@ -279,12 +282,125 @@ TEST_F(ToolsTest, BakeForAnotherSceneOrFormatIsRefusedNamingTheFolder) {
 }
 
 TEST_F(ToolsTest, ModesOfBakedLightNeedABake) {
+  // point_over_plane has no bake anywhere; the Cornell box's build-step bake is turned down.
+  for (const std::string& scene : {content("point_over_plane/point_over_plane.gltf"),
+                                   content("cornell_box/cornell_box.gltf") + " --no-bake"}) {
+    const ToolRun r = run(tool("bounce-render") + " " + scene + " --mode indirect --out " +
+                          quote(dir_ / "x.png"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("--mode indirect draws baked light: give --bake DIR"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+  }
+}
+
+// Without --bake the tools use <scene>.bake beside the scene when it matches (bounce-bake's
+// default output) and say so; --no-bake turns that off; a stale one is passed over with the
+// reason, and the scene is drawn without baked light. Both tools find the same folder.
+TEST_F(ToolsTest, FindsTheBakeBesideTheSceneAndSaysWhich) {
+  const fs::path sceneFile = dir_ / "plane.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf",
+                sceneFile);
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const std::string render = tool("bounce-render") + " " + quote(sceneFile) +
+                             " --width 16 --height 16 --context " + testBackendName();
+  ToolRun found = run(render + " --out " + quote(dir_ / "found.exr"));
+  ASSERT_EQ(found.exitCode, 0) << found.output;
+  EXPECT_NE(found.output.find("using the bake " + (dir_ / "plane.bake").string()),
+            std::string::npos)
+      << found.output;
+  EXPECT_NE(found.output.find("mode full"), std::string::npos) << found.output;
+  ToolRun named =
+      run(render + " --bake " + quote(dir_ / "plane.bake") + " --out " + quote(dir_ / "named.exr"));
+  ASSERT_EQ(named.exitCode, 0) << named.output;
+  EXPECT_TRUE(bounce::readExr(dir_ / "found.exr").pixels ==
+              bounce::readExr(dir_ / "named.exr").pixels);
+  ToolRun without = run(render + " --no-bake --out " + quote(dir_ / "without.exr"));
+  ASSERT_EQ(without.exitCode, 0) << without.output;
+  EXPECT_EQ(without.output.find("using the bake"), std::string::npos) << without.output;
+  EXPECT_NE(without.output.find("mode direct"), std::string::npos) << without.output;
+  // The constant bake adds ρ/π·E = 0.5/π·(2, 3, 5) to every pixel.
+  const bounce::Image a = bounce::readExr(dir_ / "found.exr");
+  const bounce::Image b = bounce::readExr(dir_ / "without.exr");
+  EXPECT_NEAR(a.pixels[0].b - b.pixels[0].b, 2.5f / std::numbers::pi_v<float>, 1e-3f);
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") == 0) {  // the viewer finds it too
+    const ToolRun view = run("xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                             " --mode indirect --width 16 --height 16 --frames 1");
+    ASSERT_EQ(view.exitCode, 0) << view.output;
+    EXPECT_NE(view.output.find("bounce-view: using the bake " + (dir_ / "plane.bake").string()),
+              std::string::npos)
+        << view.output;
+  }
+
+  bounce::Scene other = scene;
+  other.materials.at(0).albedo *= 0.5f;
+  fs::remove_all(dir_ / "plane.bake");
+  writeConstantBake(dir_ / "plane.bake", scene, other);  // stale: another albedo
+  ToolRun stale = run(render + " --out " + quote(dir_ / "stale.exr"));
+  ASSERT_EQ(stale.exitCode, 0) << stale.output;
+  EXPECT_NE(stale.output.find("not using the bake " + (dir_ / "plane.bake").string()),
+            std::string::npos)
+      << stale.output;
+  EXPECT_NE(stale.output.find("mode direct"), std::string::npos) << stale.output;
+  EXPECT_TRUE(bounce::readExr(dir_ / "stale.exr").pixels == b.pixels);
+}
+
+// A content scene finds the bake the build made for it (build/<preset>/content/...), next to the
+// tools; skipped where the build baked no content (BOUNCE_BAKE_CONTENT=OFF).
+TEST_F(ToolsTest, FindsTheBuildStepsBakeOfAContentScene) {
+  const fs::path built =
+      fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
+  if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
   const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
-                        " --mode indirect --out " + quote(dir_ / "x.png"));
-  EXPECT_EQ(r.exitCode, 1) << r.output;
-  EXPECT_NE(r.output.find("--mode indirect draws baked light: give --bake DIR"), std::string::npos)
-      << r.output;
-  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+                        " --width 16 --height 16 --context " + testBackendName() + " --out " +
+                        quote(dir_ / "cornell.png"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("using the bake "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("content/cornell_box/cornell_box.bake"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mode full"), std::string::npos) << r.output;
+}
+
+// bounce-bake's error.exr (the build step's Cornell bake): one relative error per texel with
+// samples, -1 elsewhere; its mean over the lit texels is bake.json's estimatedError.mean (the
+// same estimates, averaged by the baker before denoising: 2% covers texels whose E changed sign
+// of zero in the denoiser); --mode error draws it.
+TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
+  const fs::path built =
+      fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
+  if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
+  const bounce::Image error = bounce::readExr(built / "error.exr");
+  const bounce::Image irradiance = bounce::readExr(built / "lightmap.exr");
+  ASSERT_EQ(error.pixels.size(), irradiance.pixels.size());
+  double sum = 0.0;
+  std::size_t lit = 0, none = 0;
+  for (std::size_t t = 0; t < error.pixels.size(); ++t) {
+    const float e = error.pixels[t].r;
+    if (e == bounce::kNoErrorEstimate) {
+      ++none;
+      continue;
+    }
+    ASSERT_GE(e, 0.0f) << t;
+    const glm::vec3 E = irradiance.pixels[t];
+    if (0.2126f * E.r + 0.7152f * E.g + 0.0722f * E.b > 0.0f) {
+      sum += e;
+      ++lit;
+    }
+  }
+  std::ifstream in(built / "bake.json");
+  const nlohmann::json manifest = nlohmann::json::parse(in);
+  const double mean = manifest["estimatedError"]["mean"].get<double>();
+  ASSERT_GT(lit, 1000u);
+  EXPECT_GT(none, 0u);  // the padding between charts
+  EXPECT_NEAR(sum / static_cast<double>(lit), mean, 0.02 * mean);
+  const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+                        " --mode error --width 16 --height 16 --context " + testBackendName() +
+                        " --out " + quote(dir_ / "error.exr"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image shown = bounce::readExr(dir_ / "error.exr");
+  // The box's walls are lightmapped and under twice the target: some green or blue, no grey.
+  EXPECT_GT(shown.at(8, 8).g + shown.at(8, 8).b, 0.5f) << r.output;
 }
 
 // --mode vpl: without VPLs in the bake a clear error; with them the frame and the clamp line.

@@ -1,0 +1,35 @@
+// The bake a tool uses when none is named (bounce-render, bounce-view): the first of
+//   1. <scene without its extension>.bake beside the scene (bounce-bake's default output),
+//   2. <tools>/../content/<the scene's folder>/<scene stem>.bake (the build step's bake of a
+//      content scene, content/CMakeLists.txt)
+// that exists. A folder that exists but cannot be used (stale, another format, damaged) is
+// passed over with a note saying why, so the tool draws the scene without baked light rather
+// than stopping. GL-free.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bake/bake_folder.h"
+
+namespace bounce {
+
+struct BakeSearch {
+  std::optional<Bake> bake;
+  std::filesystem::path dir;       // the folder read; empty when none was usable
+  std::vector<std::string> notes;  // one line each: what was used, or why a folder was not
+};
+
+// The folder of the running executable (from /proc/self/exe); empty when it cannot be read.
+std::filesystem::path toolDirectory();
+
+// The places above, in order (they need not exist).
+std::vector<std::filesystem::path> bakeCandidates(const std::filesystem::path& scenePath,
+                                                  const std::filesystem::path& toolDir);
+
+BakeSearch findSceneBake(const std::filesystem::path& scenePath, const Scene& scene,
+                         const std::filesystem::path& toolDir);
+
+}  // namespace bounce

@@ -1,0 +1,36 @@
+#include "bake/texel_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
+
+namespace bounce {
+
+float bakeErrorTarget(const std::string& manifestJson) {
+  const nlohmann::json manifest = nlohmann::json::parse(manifestJson, nullptr, false);
+  if (!manifest.is_object()) return kDefaultErrorTarget;
+  const auto error = manifest.find("estimatedError");
+  if (error == manifest.end() || !error->is_object()) return kDefaultErrorTarget;
+  const auto target = error->find("target");
+  if (target == error->end() || !target->is_number()) return kDefaultErrorTarget;
+  const double value = target->get<double>();
+  return std::isfinite(value) && value > 0.0 ? static_cast<float>(value) : kDefaultErrorTarget;
+}
+
+glm::vec3 errorFalseColour(float relativeError, float target) {
+  if (relativeError == kNoErrorEstimate) return glm::vec3(0.05f);
+  const float t = std::clamp(relativeError / target, 0.0f, 2.0f);
+  return t <= 1.0f ? glm::vec3(0.0f, t, 1.0f - t) : glm::vec3(t - 1.0f, 2.0f - t, 0.0f);
+}
+
+Image errorFalseColourImage(const Image& relativeError, float target) {
+  Image colours(relativeError.width, relativeError.height);
+  for (std::size_t i = 0; i < colours.pixels.size(); ++i)
+    colours.pixels[i] = errorFalseColour(relativeError.pixels[i].r, target);
+  return colours;
+}
+
+}  // namespace bounce
