@@ -15,6 +15,7 @@ find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(glfw3 3.3 REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)  # with its glfw and opengl3 back-ends
 if(BOUNCE_BUILD_TESTS)
   find_package(GTest REQUIRED)
   find_package(benchmark REQUIRED)

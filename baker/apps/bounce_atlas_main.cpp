@@ -12,6 +12,7 @@
 #include "atlas/uv_geometry.h"
 #include "bake/lightmap_charts.h"
 #include "image/image_compare.h"
+#include "image/image_io.h"
 #include "scene/load.h"
 
 namespace {

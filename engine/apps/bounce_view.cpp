@@ -3,8 +3,10 @@
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
 //   one found for the scene as bounce-render finds it, bake/bake_search.h): M cycles the
-//   modes (full, direct, indirect, lightmap, charts, and with the bake's VPLs vpl, vpl-clamp),
-//   C toggles the chart/texel-density view.
+//   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
+//   its error.exr error), C toggles the chart/texel-density view. H shows or hides the panel
+//   (viewer_panel.h: the bake's facts, modes, exposure, cameras, objects, lights, CPU and GPU
+//   frame times; --no-panel starts hidden); keys go to the panel only while it edits a field.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
 //   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
 //   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
@@ -22,9 +24,12 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_facts.h"
 #include "bake/bake_folder.h"
 #include "bake/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "gl/gpu_timer.h"
+#include "gl/panel_layer.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "gl/window.h"
@@ -37,6 +42,7 @@
 #include "scene/framing.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
+#include "viewer_panel.h"
 #include "vpl/vpl_retrace.h"
 
 namespace {
@@ -52,10 +58,12 @@ struct Options {
   float exposure = 0.0f;
   int frames = 0;  // 0 = until closed
   std::string screenshot;
-  std::string mode;  // default: full with a bake, direct without
+  std::string windowShot;  // the window as shown (panel included), EXR of display values
+  std::string mode;        // default: full with a bake, direct without
   std::string bake;
   bool noBake = false;
   int msaa = 4;                    // samples per pixel
+  bool noPanel = false;            // start with the panel hidden
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::string dynamicVpls = "retrace";
 };
@@ -64,6 +72,33 @@ struct Options {
 void save(const bounce::Image& radiance, const std::string& path, float exposure) {
   bounce::writeImage(path, radiance, exposure);
   std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
+}
+
+// The bake in use: where it was read from and what was said while looking for it.
+struct LoadedBake {
+  std::optional<bounce::Bake> bake;
+  std::filesystem::path dir;
+  std::vector<std::string> notes;
+};
+
+// One panel line per punctual light (area lights are the emissive surfaces).
+std::vector<std::string> lightLines(const bounce::Scene& scene) {
+  std::vector<std::string> lines;
+  for (const bounce::Light& light : scene.lights) {
+    char line[256];
+    const glm::vec3& i = light.intensity;
+    const glm::vec3& p = light.position;
+    if (light.type == bounce::LightType::Directional)
+      std::snprintf(line, sizeof line, "directional '%s': E = (%.3g, %.3g, %.3g) W/m^2",
+                    light.name.c_str(), light.irradiance.r, light.irradiance.g, light.irradiance.b);
+    else
+      std::snprintf(line, sizeof line,
+                    "%s '%s': I = (%.3g, %.3g, %.3g) W/sr at (%.2f, %.2f, %.2f) m",
+                    light.type == bounce::LightType::Spot ? "spot" : "point", light.name.c_str(),
+                    i.r, i.g, i.b, p.x, p.y, p.z);
+    lines.push_back(std::string(line) + (light.bakeDirect ? " (baked)" : ""));
+  }
+  return lines;
 }
 
 // With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
@@ -80,11 +115,12 @@ bounce::RendererSettings rendererSettings(const Options& options, const bounce::
 
 class Viewer {
  public:
-  Viewer(const Options& options, bounce::Scene scene, std::optional<bounce::Bake> bake,
-         bounce::RenderMode mode)
+  Viewer(const Options& options, bounce::Scene scene, LoadedBake loaded, bounce::RenderMode mode)
       : options_(options),
         scene_(std::move(scene)),
-        bake_(std::move(bake)),
+        bake_(std::move(loaded.bake)),
+        bakeDir_(std::move(loaded.dir)),
+        bakeNotes_(std::move(loaded.notes)),
         window_("bounce-view", options.width, options.height),
         renderer_(scene_, bounce::gl::shaderDirectory(),
                   rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
@@ -107,6 +143,14 @@ class Viewer {
     }
     const bounce::Bounds bounds = bounce::sceneBounds(scene_);
     speed_ = std::max(0.25f * glm::length(bounds.hi - bounds.lo), 0.1f);  // m/s
+    try {
+      panel_.emplace(window_);
+      panelShown_ = !options.noPanel;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "bounce-view: warning: no panel (%s); the keys still work\n", e.what());
+    }
+    if (bake_) bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
+    lights_ = lightLines(scene_);
     select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
   }
 
@@ -123,9 +167,22 @@ class Viewer {
       last = now;
       if (frame >= 2) steadyMs += ms;  // the first frames include llvmpipe's shader JIT
       handleInput(dt);
+      gpuTimer_.begin();
       draw();
+      gpuTimer_.end();
+      times_.add(ms, gpuTimer_.lastMilliseconds());
+      if (panel_ && panelShown_) drawPanel();
       if (options_.frames > 0 && frame + 1 >= options_.frames) {
         if (!options_.screenshot.empty()) save(target_->read(), options_.screenshot, exposure_);
+        if (!options_.windowShot.empty()) {
+          const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
+          const bounce::Image shown = bounce::gl::readWindowPixels(size.x, size.y);
+          if (std::filesystem::path(options_.windowShot).extension() == ".png")
+            bounce::writeDisplayPng(options_.windowShot, shown);
+          else
+            bounce::writeExr(options_.windowShot, shown);
+          std::fprintf(stderr, "bounce-view: wrote %s\n", options_.windowShot.c_str());
+        }
         std::fprintf(stderr,
                      "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
                      frame + 1, frame >= 2 ? steadyMs / (frame - 1) : ms);
@@ -198,8 +255,52 @@ class Viewer {
                      : "");
   }
 
+  // The panel goes over the tone-mapped frame in the window's framebuffer, after the frame was
+  // drawn and before a capture is read from the target: captures never hold it.
+  void drawPanel() {
+    bounce::ViewerPanelView view;
+    view.scene = options_.scene;
+    view.bakeLines = bakeLines_;
+    view.bakeNotes = bakeNotes_;
+    view.modes = availableModes();
+    view.mode = renderer_.settings().mode;
+    view.exposure = exposure_;
+    view.msaa = options_.msaa;
+    for (const bounce::Camera& camera : cameras_) view.cameras.push_back(camera.name);
+    view.camera = cameraIndex_;
+    view.object = selection_.empty() ? "" : selection_.name(scene_);
+    view.objectCount = selection_.count();
+    view.lights = lights_;
+    view.times = &times_;
+    panel_->beginFrame();
+    const bounce::ViewerPanelRequests requests = bounce::drawViewerPanel(view);
+    panel_->endFrame();
+    if (requests.mode) setMode(*requests.mode);
+    if (requests.exposure) exposure_ = *requests.exposure;
+    if (requests.camera) select(*requests.camera);
+    if (requests.nextObject) selectNextObject();
+    if (requests.screenshot) saveRequested_ = true;
+  }
+
+  // The modes this bake allows, in the order M steps through them.
+  std::vector<bounce::RenderMode> availableModes() const {
+    std::vector<bounce::RenderMode> modes;
+    for (const std::string& name : bounce::renderModeNames()) {
+      const bounce::RenderMode mode = *bounce::parseRenderMode(name);
+      if (bounce::renderModeNeedsBake(mode) && !renderer_.hasBake()) continue;
+      if (bounce::renderModeNeedsVpls(mode) && !renderer_.hasVpls()) continue;
+      if (bounce::renderModeNeedsErrorMap(mode) && !renderer_.hasErrorMap()) continue;
+      modes.push_back(mode);
+    }
+    return modes;
+  }
+
   void handleInput(float dt) {
+    const bool panelHasKeys = panel_ && panelShown_ && panel_->wantsKeyboard();
+    const bool panelHasMouse = panel_ && panelShown_ && panel_->wantsMouse();
     for (const Key key : window_.pressedKeys()) {
+      if (panelHasKeys) break;
+      if (key == Key::H && panel_) panelShown_ = !panelShown_;
       if (key == Key::Escape) window_.requestClose();
       if (key == Key::Tab) select((cameraIndex_ + 1) % cameras_.size());
       if (key >= Key::Digit1 && key <= Key::Digit9) {
@@ -226,8 +327,8 @@ class Viewer {
     moveObject(glm::vec3(axis(Key::L, Key::J), axis(Key::O, Key::U), axis(Key::I, Key::K)) *
                objectSpeed_ * boost * dt);
     const glm::dvec2 cursor = window_.cursorPosition();
-    const bool looking = window_.isDown(bounce::gl::MouseButton::Left) ||
-                         window_.isDown(bounce::gl::MouseButton::Right);
+    const bool looking = !panelHasMouse && (window_.isDown(bounce::gl::MouseButton::Left) ||
+                                            window_.isDown(bounce::gl::MouseButton::Right));
     if (looking && cursor_) {
       const glm::dvec2 delta = cursor - *cursor_;
       constexpr float kRadiansPerPixel = 0.003f;
@@ -280,6 +381,8 @@ class Viewer {
   Options options_;
   bounce::Scene scene_;
   std::optional<bounce::Bake> bake_;  // before renderer_, which reads it on construction
+  std::filesystem::path bakeDir_;
+  std::vector<std::string> bakeNotes_;
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;
@@ -295,6 +398,12 @@ class Viewer {
   bool saveRequested_ = false;
   int screenshots_ = 0;
   bounce::RenderMode modeBeforeCharts_ = bounce::RenderMode::Full;
+  std::optional<bounce::gl::PanelLayer> panel_;  // none when ImGui cannot start
+  bool panelShown_ = false;
+  bounce::gl::GpuTimer gpuTimer_;
+  bounce::FrameTimes times_;
+  std::vector<std::string> bakeLines_;
+  std::vector<std::string> lights_;
 };
 
 }  // namespace
@@ -306,7 +415,8 @@ int main(int argc, char** argv) {
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
       "exposure, Esc quits. With a bake: M cycles the modes, C toggles the chart view. Dynamic "
-      "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up.",
+      "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
+      "H shows or hides the panel.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
       ->required();
@@ -323,6 +433,15 @@ int main(int argc, char** argv) {
         const auto ext = std::filesystem::path(path).extension();
         return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
       });
+  app.add_option("--window-shot", options.windowShot,
+                 "with --frames: save the window as shown, panel included (.png, or .exr of the "
+                 "display values in [0, 1], sRGB-encoded; --screenshot holds the scene's frame "
+                 "only)")
+      ->needs("--frames")
+      ->check([](const std::string& path) -> std::string {
+        const auto ext = std::filesystem::path(path).extension();
+        return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
+      });
   app.add_option("--bake", options.bake,
                  "bake folder (bounce-bake's output) for this scene: adds its baked light "
                  "(default: <scene>.bake beside the scene, else the build step's bake of a "
@@ -331,6 +450,7 @@ int main(int argc, char** argv) {
                  "samples per pixel (multisample anti-aliasing, averaged in linear radiance "
                  "before tone mapping); 1 turns it off (default 4)")
       ->check(CLI::Range(1, 64));
+  app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
   app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
       ->excludes("--bake");
   app.add_option("--mode", options.mode,
@@ -349,15 +469,19 @@ int main(int argc, char** argv) {
   try {
     bounce::Scene scene = bounce::loadScene(options.scene);
     bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
-    std::optional<bounce::Bake> bake;
+    LoadedBake loaded;
+    std::optional<bounce::Bake>& bake = loaded.bake;
     if (!options.bake.empty()) {
       bake = bounce::readBake(options.bake, scene);
+      loaded.dir = options.bake;
     } else if (!options.noBake) {
       bounce::BakeSearch found =
           bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
       for (const std::string& note : found.notes)
         std::fprintf(stderr, "bounce-view: %s\n", note.c_str());
       bake = std::move(found.bake);
+      loaded.dir = found.dir;
+      loaded.notes = found.notes;
     }
     const bounce::RenderMode mode =
         options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
@@ -365,7 +489,7 @@ int main(int argc, char** argv) {
     if (bounce::renderModeNeedsBake(mode) && !bake)
       throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR" +
                                (options.noBake ? " (and no --no-bake)" : ""));
-    Viewer viewer(options, std::move(scene), std::move(bake), mode);
+    Viewer viewer(options, std::move(scene), std::move(loaded), mode);
     return viewer.run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bounce-view: error: %s\n", e.what());

@@ -133,6 +133,25 @@ Image RenderTarget::read() const {
   return image;
 }
 
+Image readWindowPixels(int width, int height) {
+  std::vector<float> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glFinish();
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float* p = rgba.data() +
+                       (static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
+                        static_cast<std::size_t>(x)) *
+                           4;
+      image.at(x, y) = glm::vec3(p[0], p[1], p[2]);
+    }
+  return image;
+}
+
 void bindDefaultFramebuffer(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);

@@ -56,5 +56,8 @@ class RenderTarget {
 
 // Binds the window's own framebuffer (GLFW) with a viewport of width x height pixels.
 void bindDefaultFramebuffer(int width, int height);
+// The window's back buffer as drawn so far (display values in [0, 1], sRGB-encoded: what the
+// screen shows, panel included), top row first.
+Image readWindowPixels(int width, int height);
 
 }  // namespace bounce::gl

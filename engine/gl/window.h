@@ -46,6 +46,7 @@ enum class Key {
   L,  //   ... right
   U,  //   ... down
   O,  //   ... up
+  H,  // bounce-view: panel shown/hidden
 };
 
 enum class MouseButton { Left, Right };
@@ -79,6 +80,7 @@ class Window final : public Context {
   std::vector<Key> pressed_;
   double scroll_ = 0.0;
   friend struct WindowCallbacks;
+  friend class PanelLayer;
 };
 
 }  // namespace bounce::gl

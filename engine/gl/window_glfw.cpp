@@ -4,15 +4,12 @@
 
 #include "gl/gl_functions.h"
 #include "gl/window.h"
-// glad/gl.h first: GLFW must not include the system GL header.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include "gl/window_glfw_impl.h"
 
 namespace bounce::gl {
 
 namespace {
 
-int windowCount = 0;
 std::string lastGlfwError;
 
 void recordGlfwError(int, const char* description) {
@@ -23,7 +20,7 @@ GLADapiproc glfwProc(const char* name) {
   return glfwGetProcAddress(name);
 }
 
-constexpr std::array<std::pair<Key, int>, 32> kKeyCodes = {{
+constexpr std::array<std::pair<Key, int>, 33> kKeyCodes = {{
     {Key::W, GLFW_KEY_W},
     {Key::A, GLFW_KEY_A},
     {Key::S, GLFW_KEY_S},
@@ -56,6 +53,7 @@ constexpr std::array<std::pair<Key, int>, 32> kKeyCodes = {{
     {Key::L, GLFW_KEY_L},
     {Key::U, GLFW_KEY_U},
     {Key::O, GLFW_KEY_O},
+    {Key::H, GLFW_KEY_H},
 }};
 
 int glfwKey(Key key) {
@@ -66,20 +64,7 @@ int glfwKey(Key key) {
 
 }  // namespace
 
-// Owns the GLFW window and one reference on the GLFW library, so a constructor that throws
-// part-way (no window, no GL 3.3 functions) destroys what it made and keeps the count right.
-struct Window::Impl {
-  bool holdsGlfw = false;
-  GLFWwindow* window = nullptr;
-
-  Impl() = default;
-  Impl(const Impl&) = delete;
-  Impl& operator=(const Impl&) = delete;
-  ~Impl() {
-    if (window) glfwDestroyWindow(window);
-    if (holdsGlfw && --windowCount == 0) glfwTerminate();
-  }
-};
+int WindowGlfwCount::windows = 0;
 
 struct WindowCallbacks {
   static void key(GLFWwindow* w, int key, int, int action, int) {
@@ -98,10 +83,10 @@ struct WindowCallbacks {
 
 Window::Window(const std::string& title, int width, int height) : impl_(std::make_unique<Impl>()) {
   glfwSetErrorCallback(recordGlfwError);
-  if (windowCount == 0 && !glfwInit()) {
+  if (WindowGlfwCount::windows == 0 && !glfwInit()) {
     throw ContextError("glfw: cannot initialize (" + lastGlfwError + ")");
   }
-  ++windowCount;
+  ++WindowGlfwCount::windows;
   impl_->holdsGlfw = true;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);

@@ -1,14 +1,12 @@
 #include "image/image_compare.h"
 
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "image/atomic_file.h"
 #include "image/regular_file.h"
 
 namespace bounce {
@@ -152,27 +150,6 @@ Image falseColour(const std::vector<float>& relativeError, int width, int height
     out.pixels[i] = ramp(scale > 0.0f ? relativeError[i] / scale : 1.0f);
   }
   return out;
-}
-
-void writeDisplayPng(const std::filesystem::path& path, const Image& display) {
-  std::vector<unsigned char> rgb;
-  rgb.reserve(display.pixels.size() * 3);
-  for (const glm::vec3& p : display.pixels) {
-    for (int c = 0; c < 3; ++c) {
-      rgb.push_back(static_cast<unsigned char>(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)));
-    }
-  }
-  std::vector<unsigned char> png;
-  auto append = [](void* context, void* data, int size) {
-    auto* bytes = static_cast<std::vector<unsigned char>*>(context);
-    const auto* begin = static_cast<const unsigned char*>(data);
-    bytes->insert(bytes->end(), begin, begin + size);
-  };
-  if (stbi_write_png_to_func(append, &png, display.width, display.height, 3, rgb.data(),
-                             display.width * 3) == 0) {
-    throw std::runtime_error(path.string() + ": cannot encode PNG");
-  }
-  writeFileAtomically(path, png);
 }
 
 }  // namespace bounce

@@ -65,8 +65,6 @@ std::vector<float> relativeErrorMap(const Image& a, const Image& ref, const Mask
 // r = 0 blue and r >= scale red; masked-out pixels black.
 Image falseColour(const std::vector<float>& relativeError, int width, int height, float scale,
                   const Mask* mask = nullptr);
-
-// Writes display values in [0,1] as 8-bit PNG without tone mapping, atomically.
-void writeDisplayPng(const std::filesystem::path& path, const Image& display);
+// (Write it with writeDisplayPng, image/image_io.h.)
 
 }  // namespace bounce

@@ -2,6 +2,7 @@
 
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
+#include <algorithm>
 
 #include <cmath>
 #include <cstdint>
@@ -240,26 +241,38 @@ Image readExr(const std::filesystem::path& path) {
   return image;
 }
 
-std::vector<unsigned char> encodePng(const std::filesystem::path& path, const Image& radiance,
-                                     float exposureEV) {
-  requireSize(path, radiance);
+// 8-bit sRGB PNG of display values in [0, 1] (already tone-mapped and encoded).
+std::vector<unsigned char> encodeDisplayPng(const std::filesystem::path& path,
+                                            const Image& display) {
+  requireSize(path, display);
   std::vector<unsigned char> rgb;
-  rgb.reserve(radiance.pixels.size() * 3);
-  for (const glm::vec3& p : radiance.pixels) {
-    const glm::vec3 display = toneMap(p, exposureEV);
+  rgb.reserve(display.pixels.size() * 3);
+  for (const glm::vec3& p : display.pixels)
     for (int c = 0; c < 3; ++c)
-      rgb.push_back(static_cast<unsigned char>(std::lround(display[c] * 255.0f)));
-  }
+      rgb.push_back(static_cast<unsigned char>(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 255.0f)));
   std::vector<unsigned char> encoded;
   auto append = [](void* context, void* data, int size) {
     auto* out = static_cast<std::vector<unsigned char>*>(context);
     const auto* bytes = static_cast<const unsigned char*>(data);
     out->insert(out->end(), bytes, bytes + size);
   };
-  if (!stbi_write_png_to_func(append, &encoded, radiance.width, radiance.height, 3, rgb.data(),
-                              radiance.width * 3))
+  if (!stbi_write_png_to_func(append, &encoded, display.width, display.height, 3, rgb.data(),
+                              display.width * 3))
     throw std::runtime_error(path.string() + ": cannot encode PNG");
   return encoded;
+}
+
+std::vector<unsigned char> encodePng(const std::filesystem::path& path, const Image& radiance,
+                                     float exposureEV) {
+  Image display(radiance.width, radiance.height);
+  display.pixels.resize(radiance.pixels.size());
+  for (std::size_t i = 0; i < radiance.pixels.size(); ++i)
+    display.pixels[i] = toneMap(radiance.pixels[i], exposureEV);
+  return encodeDisplayPng(path, display);
+}
+
+void writeDisplayPng(const std::filesystem::path& path, const Image& display) {
+  writeFileAtomically(path, encodeDisplayPng(path, display));
 }
 
 void writePng(const std::filesystem::path& path, const Image& radiance, float exposureEV) {

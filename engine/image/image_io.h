@@ -15,6 +15,8 @@ namespace bounce {
 void writeExr(const std::filesystem::path& path, const Image& image);
 Image readExr(const std::filesystem::path& path);
 void writePng(const std::filesystem::path& path, const Image& radiance, float exposureEV);
+// A PNG of display values in [0, 1] (sRGB-encoded already, e.g. a window's pixels): no tone map.
+void writeDisplayPng(const std::filesystem::path& path, const Image& display);
 // Writes by extension: ".exr" linear, ".png" tone-mapped.
 void writeImage(const std::filesystem::path& path, const Image& image, float exposureEV);
 // The bytes writeImage would write (by extension; other extensions throw).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -211,6 +212,42 @@ TEST_F(ToolsTest, ViewerRendersUnderXvfb) {
   double sum = 0.0;
   for (const glm::vec3& p : image.pixels) sum += p.r + p.g + p.b;
   EXPECT_GT(sum / static_cast<double>(image.pixels.size()), 0.01) << r.output;
+}
+
+// The panel (Dear ImGui, on by default; --no-panel starts it hidden) is drawn over the window
+// but never into captures: --screenshot is bit for bit the same with and without it, while the
+// window as shown (--window-shot) differs where the panel sits (top left, 360 px wide) and
+// nowhere else. The viewer writes no imgui.ini.
+TEST_F(ToolsTest, ViewerPanelIsOnTheWindowAndNotInCaptures) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const auto view = [&](const std::string& name, const std::string& flags) {
+    const ToolRun r =
+        run("cd " + quote(dir_) + " && xvfb-run -a " + tool("bounce-view") + " " +
+            content("cornell_box/cornell_box.gltf") +
+            " --width 640 --height 400 --frames 3 --screenshot " + quote(dir_ / (name + ".exr")) +
+            " --window-shot " + quote(dir_ / (name + "_window.exr")) + flags);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+  };
+  view("panel", "");
+  view("hidden", " --no-panel");
+  const bounce::Image withPanel = bounce::readExr(dir_ / "panel.exr");
+  const bounce::Image without = bounce::readExr(dir_ / "hidden.exr");
+  EXPECT_TRUE(withPanel.pixels == without.pixels);
+  const bounce::Image shownWith = bounce::readExr(dir_ / "panel_window.exr");
+  const bounce::Image shownWithout = bounce::readExr(dir_ / "hidden_window.exr");
+  ASSERT_EQ(shownWith.width, 640);
+  double panelDifference = 0.0, elsewhere = 0.0;
+  for (int y = 0; y < 400; ++y)
+    for (int x = 0; x < 640; ++x) {
+      const glm::vec3 d = glm::abs(shownWith.at(x, y) - shownWithout.at(x, y));
+      const float m = std::max({d.r, d.g, d.b});
+      if (x >= 20 && x < 300 && y >= 20 && y < 200) panelDifference += m;
+      if (x >= 400) elsewhere = std::max(elsewhere, static_cast<double>(m));
+    }
+  EXPECT_GT(panelDifference / (280.0 * 180.0), 0.05);  // the panel covers that corner
+  EXPECT_LT(elsewhere, 1.0 / 255.0);                   // and nothing right of it
+  EXPECT_FALSE(fs::exists(dir_ / "imgui.ini"));
 }
 
 // A synthetic bake for content/point_over_plane: every static instance's corners at the atlas

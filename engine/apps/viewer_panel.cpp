@@ -1,0 +1,87 @@
+#include "viewer_panel.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include <imgui.h>
+
+namespace bounce {
+namespace {
+
+void plot(const char* label, const std::vector<float>& ms) {
+  if (ms.empty()) {
+    ImGui::TextUnformatted((std::string(label) + ": not measured").c_str());
+    return;
+  }
+  const float mean = std::accumulate(ms.begin(), ms.end(), 0.0f) / static_cast<float>(ms.size());
+  const float top = *std::max_element(ms.begin(), ms.end());
+  const std::string overlay = std::string(label) + " " + std::to_string(ms.back()).substr(0, 5) +
+                              " ms (mean " + std::to_string(mean).substr(0, 5) + ")";
+  ImGui::PlotLines("##times", ms.data(), static_cast<int>(ms.size()), 0, overlay.c_str(), 0.0f,
+                   1.2f * top, ImVec2(0, 48));
+}
+
+}  // namespace
+
+void FrameTimes::add(double cpuMs, std::optional<double> gpuMs) {
+  const auto push = [](std::vector<float>& v, double x) {
+    if (v.size() == kFrames) v.erase(v.begin());
+    v.push_back(static_cast<float>(x));
+  };
+  push(cpu, cpuMs);
+  if (gpuMs) push(gpu, *gpuMs);
+}
+
+ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
+  ViewerPanelRequests requests;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("bounce-view (H hides)");
+
+  if (ImGui::CollapsingHeader("Bake", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (view.bakeLines.empty()) ImGui::TextUnformatted("no bake: direct light only");
+    for (const std::string& line : view.bakeLines) ImGui::TextWrapped("%s", line.c_str());
+    for (const std::string& note : view.bakeNotes) ImGui::TextWrapped("%s", note.c_str());
+  }
+
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const std::string current(renderModeName(view.mode));
+    if (ImGui::BeginCombo("mode (M)", current.c_str())) {
+      for (const RenderMode mode : view.modes) {
+        const std::string name(renderModeName(mode));
+        if (ImGui::Selectable(name.c_str(), mode == view.mode)) requests.mode = mode;
+      }
+      ImGui::EndCombo();
+    }
+    float exposure = view.exposure;
+    if (ImGui::SliderFloat("exposure (EV)", &exposure, -10.0f, 10.0f, "%+.1f"))
+      requests.exposure = exposure;
+    ImGui::Text("%d samples per pixel (--msaa)", view.msaa);
+    if (ImGui::Button("screenshot (F12)")) requests.screenshot = true;
+  }
+
+  if (ImGui::CollapsingHeader("Cameras", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t i = 0; i < view.cameras.size(); ++i)
+      if (ImGui::Selectable(view.cameras[i].c_str(), i == view.camera)) requests.camera = i;
+  }
+
+  if (view.objectCount > 0 && ImGui::CollapsingHeader("Dynamic objects")) {
+    ImGui::TextWrapped(
+        "%s", view.object.empty() ? "none selected" : ("moving '" + view.object + "'").c_str());
+    if (ImGui::Button("next (G)")) requests.nextObject = true;
+    ImGui::TextWrapped("J/L, I/K, U/O move it (Shift x4)");
+  }
+
+  if (!view.lights.empty() && ImGui::CollapsingHeader("Lights")) {
+    for (const std::string& line : view.lights) ImGui::TextWrapped("%s", line.c_str());
+  }
+
+  if (view.times && ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
+    plot("CPU", view.times->cpu);
+    plot("GPU", view.times->gpu);
+  }
+  ImGui::End();
+  return requests;
+}
+
+}  // namespace bounce

@@ -1,0 +1,49 @@
+// bounce-view's panel (Dear ImGui widgets, drawn by gl::PanelLayer): what is loaded and how good
+// it is (the bake's facts, or why none is used), the view mode, exposure, cameras, dynamic
+// objects, the lights, and CPU and GPU frame times. It only reads a ViewerPanelView and returns
+// what the user asked for this frame; the viewer applies it, as it does the keys.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/render_mode.h"
+
+namespace bounce {
+
+// The last frames' times, ms, oldest first.
+struct FrameTimes {
+  static constexpr std::size_t kFrames = 240;
+  std::vector<float> cpu, gpu;
+  void add(double cpuMs, std::optional<double> gpuMs);
+};
+
+struct ViewerPanelView {
+  std::string scene;
+  std::vector<std::string> bakeLines;  // bake/bake_facts.h; empty without a bake
+  std::vector<std::string> bakeNotes;  // which bake was found, or why one was passed over
+  std::vector<RenderMode> modes;       // the ones this bake allows
+  RenderMode mode = RenderMode::Direct;
+  float exposure = 0.0f;  // EV
+  int msaa = 1;           // samples per pixel
+  std::vector<std::string> cameras;
+  std::size_t camera = 0;
+  std::string object;               // the dynamic object the keys move; empty: none
+  std::size_t objectCount = 0;      // dynamic objects (by name)
+  std::vector<std::string> lights;  // one line each
+  const FrameTimes* times = nullptr;
+};
+
+struct ViewerPanelRequests {
+  std::optional<RenderMode> mode;
+  std::optional<float> exposure;
+  std::optional<std::size_t> camera;
+  bool nextObject = false;
+  bool screenshot = false;
+};
+
+ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view);
+
+}  // namespace bounce

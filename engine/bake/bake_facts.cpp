@@ -1,0 +1,84 @@
+#include "bake/bake_facts.h"
+
+#include <chrono>
+#include <cstdio>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+namespace bounce {
+namespace {
+
+std::optional<double> number(const nlohmann::json& j, const char* object, const char* field) {
+  if (!j.is_object()) return std::nullopt;
+  const auto o = j.find(object);
+  if (o == j.end() || !o->is_object()) return std::nullopt;
+  const auto f = o->find(field);
+  if (f == o->end() || !f->is_number()) return std::nullopt;
+  return f->get<double>();
+}
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char line[160];
+  std::snprintf(line, sizeof line, pattern, a, b, c);
+  return line;
+}
+
+}  // namespace
+
+BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
+  BakeFacts f;
+  f.dir = dir;
+  f.atlasWidth = bake.layout.width;
+  f.atlasHeight = bake.layout.height;
+  f.texelSize = bake.layout.texelSize;
+  f.vpls = bake.vpls ? bake.vpls->size() : 0;
+  f.bakedAreaLights = bake.visibility ? bake.visibility->lightCount : 0;
+  f.errorMap = bake.relativeError.has_value();
+  const nlohmann::json m = nlohmann::json::parse(bake.manifestJson, nullptr, false);
+  f.utilisation = number(m, "atlas", "utilisation");
+  if (const auto charts = number(m, "atlas", "charts")) f.charts = static_cast<long long>(*charts);
+  f.samplesPerTexel = number(m, "samples", "perTexelMean");
+  f.errorMean = number(m, "estimatedError", "mean");
+  f.errorP95 = number(m, "estimatedError", "p95");
+  f.errorTarget = number(m, "estimatedError", "target");
+  f.bakeSeconds = number(m, "seconds", "total");
+  std::error_code error;
+  const auto written = std::filesystem::last_write_time(dir / "bake.json", error);
+  if (!error)
+    f.ageSeconds =
+        std::chrono::duration<double>(std::filesystem::file_time_type::clock::now() - written)
+            .count();
+  return f;
+}
+
+std::string ageText(double seconds) {
+  if (seconds < 90.0) return format("%.0f s", seconds);
+  if (seconds < 90.0 * 60.0) return format("%.0f min", seconds / 60.0);
+  if (seconds < 36.0 * 3600.0) return format("%.0f h", seconds / 3600.0);
+  return format("%.0f days", seconds / 86400.0);
+}
+
+std::vector<std::string> bakeFactLines(const BakeFacts& f) {
+  std::vector<std::string> lines{f.dir.string()};
+  std::string atlas = format("atlas %.0f x %.0f texels", f.atlasWidth, f.atlasHeight);
+  if (f.utilisation) atlas += format(", %.0f%% used", 100.0 * *f.utilisation);
+  if (f.charts) atlas += format(", %.0f charts", static_cast<double>(*f.charts));
+  lines.push_back(atlas);
+  lines.push_back(format("texel %.3g cm", 100.0 * f.texelSize));
+  if (f.samplesPerTexel)
+    lines.push_back(format("%.0f samples per texel (mean)", *f.samplesPerTexel));
+  if (f.errorMean && f.errorP95)
+    lines.push_back(format("estimated error %.1f%% mean, %.1f%% p95", 100.0 * *f.errorMean,
+                           100.0 * *f.errorP95) +
+                    (f.errorTarget ? format(" (target %.1f%%)", 100.0 * *f.errorTarget) : ""));
+  if (f.vpls > 0) lines.push_back(format("%.0f VPLs", static_cast<double>(f.vpls)));
+  if (f.bakedAreaLights > 0)
+    lines.push_back(
+        format("baked visibility of %.0f area lights", static_cast<double>(f.bakedAreaLights)));
+  if (f.bakeSeconds) lines.push_back(format("baked in %.1f s", *f.bakeSeconds));
+  if (f.ageSeconds) lines.push_back("written " + ageText(*f.ageSeconds) + " ago");
+  return lines;
+}
+
+}  // namespace bounce
