@@ -24,10 +24,13 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "bake/bake_facts.h"
 #include "bake/bake_folder.h"
 #include "bake/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "cli/viewer_script.h"
 #include "gl/gpu_timer.h"
 #include "gl/panel_layer.h"
 #include "gl/render_target.h"
@@ -59,7 +62,9 @@ struct Options {
   int frames = 0;  // 0 = until closed
   std::string screenshot;
   std::string windowShot;  // the window as shown (panel included), EXR of display values
-  std::string mode;        // default: full with a bake, direct without
+  std::string scriptFile;
+  std::vector<bounce::ScriptCommand> script;  // read before the window opens
+  std::string mode;                           // default: full with a bake, direct without
   std::string bake;
   bool noBake = false;
   int msaa = 4;                    // samples per pixel
@@ -167,22 +172,16 @@ class Viewer {
       last = now;
       if (frame >= 2) steadyMs += ms;  // the first frames include llvmpipe's shader JIT
       handleInput(dt);
+      runScriptBeforeFrame();
       gpuTimer_.begin();
       draw();
       gpuTimer_.end();
       times_.add(ms, gpuTimer_.lastMilliseconds());
       if (panel_ && panelShown_) drawPanel();
-      if (options_.frames > 0 && frame + 1 >= options_.frames) {
+      const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
+      if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
         if (!options_.screenshot.empty()) save(target_->read(), options_.screenshot, exposure_);
-        if (!options_.windowShot.empty()) {
-          const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
-          const bounce::Image shown = bounce::gl::readWindowPixels(size.x, size.y);
-          if (std::filesystem::path(options_.windowShot).extension() == ".png")
-            bounce::writeDisplayPng(options_.windowShot, shown);
-          else
-            bounce::writeExr(options_.windowShot, shown);
-          std::fprintf(stderr, "bounce-view: wrote %s\n", options_.windowShot.c_str());
-        }
+        if (!options_.windowShot.empty()) saveWindow(options_.windowShot);
         std::fprintf(stderr,
                      "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
                      frame + 1, frame >= 2 ? steadyMs / (frame - 1) : ms);
@@ -253,6 +252,65 @@ class Viewer {
                      ? " (each texel's estimated relative error: blue 0, green at the bake's "
                        "target, red at twice it or more, dark grey none)"
                      : "");
+  }
+
+  void saveWindow(const std::string& path) {
+    const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
+    const bounce::Image shown = bounce::gl::readWindowPixels(size.x, size.y);
+    if (std::filesystem::path(path).extension() == ".png")
+      bounce::writeDisplayPng(path, shown);
+    else
+      bounce::writeExr(path, shown);
+    std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
+  }
+
+  // --script (cli/viewer_script.h): the commands that set state run before a frame is drawn;
+  // captures and frame counts after it.
+  static bool setsState(const bounce::ScriptCommand& c) {
+    using Kind = bounce::ScriptCommand::Kind;
+    return c.kind != Kind::Frames && c.kind != Kind::Capture && c.kind != Kind::Window;
+  }
+
+  void runScriptBeforeFrame() {
+    using Kind = bounce::ScriptCommand::Kind;
+    const std::vector<bounce::ScriptCommand>& script = options_.script;
+    for (; scriptAt_ < script.size() && setsState(script[scriptAt_]); ++scriptAt_) {
+      const bounce::ScriptCommand& c = script[scriptAt_];
+      try {
+        if (c.kind == Kind::Camera) select(scene_.findCamera(c.text));
+        if (c.kind == Kind::View) {
+          bounce::Camera camera = fly_->camera();
+          camera.cameraToWorld =
+              glm::inverse(glm::lookAt(c.position, c.target, glm::vec3(0, 1, 0)));
+          fly_.emplace(camera);
+        }
+        if (c.kind == Kind::Mode) setMode(*bounce::parseRenderMode(c.text));
+        if (c.kind == Kind::Exposure) exposure_ = c.number;
+        if (c.kind == Kind::Panel) panelShown_ = c.on && panel_.has_value();
+      } catch (const std::exception& e) {
+        throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
+                                 e.what());
+      }
+    }
+  }
+
+  // Returns whether the script has ended.
+  bool runScriptAfterFrame() {
+    using Kind = bounce::ScriptCommand::Kind;
+    const std::vector<bounce::ScriptCommand>& script = options_.script;
+    while (scriptAt_ < script.size() && !setsState(script[scriptAt_])) {
+      const bounce::ScriptCommand& c = script[scriptAt_];
+      if (c.kind == Kind::Frames) {
+        if (++scriptFrames_ < c.count) return false;
+        scriptFrames_ = 0;
+        ++scriptAt_;
+        return scriptAt_ == script.size();
+      }
+      if (c.kind == Kind::Capture) save(target_->read(), c.text, exposure_);
+      if (c.kind == Kind::Window) saveWindow(c.text);
+      ++scriptAt_;
+    }
+    return scriptAt_ == script.size();
   }
 
   // The panel goes over the tone-mapped frame in the window's framebuffer, after the frame was
@@ -404,6 +462,8 @@ class Viewer {
   bounce::FrameTimes times_;
   std::vector<std::string> bakeLines_;
   std::vector<std::string> lights_;
+  std::size_t scriptAt_ = 0;  // the next command of options_.script
+  int scriptFrames_ = 0;      // frames drawn of the current `frames N`
 };
 
 }  // namespace
@@ -442,6 +502,11 @@ int main(int argc, char** argv) {
         const auto ext = std::filesystem::path(path).extension();
         return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
       });
+  app.add_option("--script", options.scriptFile,
+                 "replay a session: camera, view, mode, exposure, panel, frames, capture and "
+                 "window commands, one per line (engine/cli/viewer_script.h); exits after the "
+                 "last")
+      ->check(CLI::ExistingFile);
   app.add_option("--bake", options.bake,
                  "bake folder (bounce-bake's output) for this scene: adds its baked light "
                  "(default: <scene>.bake beside the scene, else the build step's bake of a "
@@ -468,6 +533,16 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     bounce::Scene scene = bounce::loadScene(options.scene);
+    if (!options.scriptFile.empty()) {
+      options.script = bounce::readViewerScript(options.scriptFile, bounce::renderModeNames());
+      for (const bounce::ScriptCommand& c : options.script)  // before a window opens
+        if (c.kind == bounce::ScriptCommand::Kind::Camera) try {
+            (void)scene.findCamera(c.text);
+          } catch (const std::exception& e) {
+            throw std::runtime_error(options.scriptFile + ": line " + std::to_string(c.line) +
+                                     ": " + e.what());
+          }
+    }
     bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
     LoadedBake loaded;
     std::optional<bounce::Bake>& bake = loaded.bake;

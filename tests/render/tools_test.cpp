@@ -250,6 +250,50 @@ TEST_F(ToolsTest, ViewerPanelIsOnTheWindowAndNotInCaptures) {
   EXPECT_FALSE(fs::exists(dir_ / "imgui.ini"));
 }
 
+// A scripted session (--script) on the Cornell box with the bake the build made for it: every
+// mode the bake allows, captured; each capture is the frame bounce-render draws of the same
+// camera, mode, size and samples (the same renderer through another context: within 1e-3 of the
+// pixel's radiance plus 1e-4 W/(sr·m²) for the rasterizers' rounding); the modes differ from
+// each other; the window capture holds the panel (shown by the script) where the frame does not.
+TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path built =
+      fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
+  if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
+  const std::vector<std::string> modes = {"full",   "direct", "indirect",  "lightmap",
+                                          "charts", "vpl",    "vpl-clamp", "error"};
+  std::string script = "camera cornell\npanel off\n";
+  for (const std::string& mode : modes)
+    script += "mode " + mode + "\ncapture " + (dir_ / (mode + ".exr")).string() + "\n";
+  script += "panel on\nframes 2\nwindow " + (dir_ / "window.exr").string() + "\n";
+  std::ofstream(dir_ / "session.txt") << script;
+  const ToolRun r =
+      run("xvfb-run -a " + tool("bounce-view") + " " + content("cornell_box/cornell_box.gltf") +
+          " --width 96 --height 64 --script " + quote(dir_ / "session.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::vector<bounce::Image> captures;
+  for (const std::string& mode : modes) {
+    captures.push_back(bounce::readExr(dir_ / (mode + ".exr")));
+    const ToolRun rendered =
+        run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") + " --mode " +
+            mode + " --width 96 --height 64 --out " + quote(dir_ / (mode + "_render.exr")));
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+    const bounce::Image expected = bounce::readExr(dir_ / (mode + "_render.exr"));
+    ASSERT_EQ(captures.back().pixels.size(), expected.pixels.size());
+    int off = 0;
+    for (std::size_t i = 0; i < expected.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        off += std::abs(captures.back().pixels[i][c] - expected.pixels[i][c]) >
+               1e-3f * std::abs(expected.pixels[i][c]) + 1e-4f;
+    EXPECT_EQ(off, 0) << mode;
+  }
+  for (std::size_t a = 0; a < modes.size(); ++a)
+    for (std::size_t b = a + 1; b < modes.size(); ++b)
+      EXPECT_FALSE(captures[a].pixels == captures[b].pixels) << modes[a] << " = " << modes[b];
+  EXPECT_EQ(bounce::readExr(dir_ / "window.exr").width, 96);
+}
+
 // A synthetic bake for content/point_over_plane: every static instance's corners at the atlas
 // centre of a constant lightmap E = (2, 3, 5) W/m², so the plane (ρ = 0.5) shows ρ/π·E.
 // `hashOf` names the scene the manifest claims.

@@ -1,0 +1,100 @@
+#include "cli/viewer_script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+float parseNumber(const std::string& word, const std::string& what, const auto& fail) {
+  std::size_t used = 0;
+  float value = 0.0f;
+  try {
+    value = std::stof(word, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != word.size() || !std::isfinite(value))
+    fail(what + " '" + word + "' is not a finite number");
+  return value;
+}
+
+}  // namespace
+
+std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
+                                            const std::vector<std::string>& modes) {
+  std::ifstream in(file);
+  if (!in) throw LoadError(file, "cannot open the script");
+  std::vector<ScriptCommand> commands;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    const auto fail = [&](const std::string& why) {
+      throw LoadError(file, "line " + std::to_string(line) + ": " + why);
+    };
+    if (const std::size_t hash = text.find('#'); hash != std::string::npos) text.erase(hash);
+    std::istringstream words(text);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;) w.push_back(word);
+    if (w.empty()) continue;
+    const auto arguments = [&](std::size_t n) {
+      if (w.size() != n + 1)
+        fail("'" + w[0] + "' takes " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") +
+             ", not " + std::to_string(w.size() - 1));
+    };
+    ScriptCommand c;
+    c.line = line;
+    if (w[0] == "camera") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Camera;
+      c.text = w[1];
+    } else if (w[0] == "view") {
+      arguments(6);
+      c.kind = ScriptCommand::Kind::View;
+      for (int k = 0; k < 3; ++k) {
+        c.position[k] = parseNumber(w[1 + k], "coordinate", fail);
+        c.target[k] = parseNumber(w[4 + k], "coordinate", fail);
+      }
+      if (c.position == c.target) fail("'view' looks from a point at itself");
+    } else if (w[0] == "mode") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Mode;
+      if (std::find(modes.begin(), modes.end(), w[1]) == modes.end())
+        fail("no render mode '" + w[1] + "'");
+      c.text = w[1];
+    } else if (w[0] == "exposure") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Exposure;
+      c.number = parseNumber(w[1], "exposure", fail);
+    } else if (w[0] == "panel") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Panel;
+      if (w[1] != "on" && w[1] != "off") fail("'panel' takes on or off, not '" + w[1] + "'");
+      c.on = w[1] == "on";
+    } else if (w[0] == "frames") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Frames;
+      const float n = parseNumber(w[1], "frame count", fail);
+      if (n != std::floor(n) || n < 1.0f || n > 100000.0f)
+        fail("frame count " + w[1] + " is not a whole number in [1, 100000]");
+      c.count = static_cast<int>(n);
+    } else if (w[0] == "capture" || w[0] == "window") {
+      arguments(1);
+      c.kind = w[0] == "capture" ? ScriptCommand::Kind::Capture : ScriptCommand::Kind::Window;
+      const std::filesystem::path ext = std::filesystem::path(w[1]).extension();
+      if (ext != ".png" && ext != ".exr") fail(w[1] + ": the file must end in .png or .exr");
+      c.text = w[1];
+    } else {
+      fail("unknown command '" + w[0] +
+           "' (camera, view, mode, exposure, panel, frames, capture, window)");
+    }
+    commands.push_back(c);
+  }
+  if (commands.empty()) throw LoadError(file, "the script has no commands");
+  return commands;
+}
+
+}  // namespace bounce

@@ -1,0 +1,40 @@
+// bounce-view's `--script FILE`: a session replayed frame by frame, for tests and for the
+// README's pictures. One command per line, `#` starts a comment:
+//   camera NAME          jump to the scene's camera NAME
+//   view X Y Z TX TY TZ  stand at (X, Y, Z) m looking at (TX, TY, TZ) m (the current lens)
+//   mode NAME            a render mode (one of `modes`: render/render_mode.h's names)
+//   exposure EV          exposure in EV
+//   panel on|off         show or hide the panel
+//   frames N             draw N frames (N >= 1)
+//   capture FILE         save the scene's frame (.png tone-mapped or .exr radiance)
+//   window FILE          save the window as shown, panel included (.png, or .exr display values)
+// Commands run in order, one per frame (a frames N takes N); the viewer exits after the last.
+// Paths are as written (relative to the working folder). GL-free.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace bounce {
+
+struct ScriptCommand {
+  enum class Kind { Camera, View, Mode, Exposure, Panel, Frames, Capture, Window };
+  Kind kind = Kind::Frames;
+  int line = 0;                            // 1-based, for messages
+  std::string text;                        // camera or mode name, file
+  glm::vec3 position{0.0f}, target{0.0f};  // view
+  float number = 0.0f;                     // exposure
+  int count = 1;                           // frames
+  bool on = true;                          // panel
+};
+
+// Throws LoadError("FILE: line N: reason") for an unknown command, a wrong argument count, a
+// number that does not parse or is not finite, a mode that does not exist, a capture whose
+// extension is not .png or .exr, a frames count outside [1, 100000], or an empty script.
+std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
+                                            const std::vector<std::string>& modes);
+
+}  // namespace bounce

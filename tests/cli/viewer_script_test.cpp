@@ -1,0 +1,86 @@
+// bounce-view's --script files (cli/viewer_script.h): every command read with its arguments and
+// line; every mistake refused naming the file, the line and the reason.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/viewer_script.h"
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+const std::vector<std::string> kModes = {"full", "direct", "indirect"};
+
+fs::path writeScript(const std::string& name, const std::string& text) {
+  const fs::path file = fs::temp_directory_path() / ("bounce_viewer_script_" + name + ".txt");
+  std::ofstream(file) << text;
+  return file;
+}
+
+std::string refusal(const std::string& text) {
+  const fs::path file = writeScript("bad", text);
+  try {
+    readViewerScript(file, kModes);
+  } catch (const LoadError& e) {
+    EXPECT_EQ(e.file(), file);
+    return e.reason();
+  }
+  return "";
+}
+
+TEST(ViewerScript, ReadsEveryCommandWithItsLine) {
+  const fs::path file = writeScript("all",
+                                    "# a session\n"
+                                    "camera corner\n"
+                                    "view 1 2 3  0 0.5 -1\n"
+                                    "\n"
+                                    "mode indirect   # baked light only\n"
+                                    "exposure -1.5\n"
+                                    "panel off\n"
+                                    "frames 3\n"
+                                    "capture out/a.exr\n"
+                                    "window out/w.png\n");
+  const std::vector<ScriptCommand> c = readViewerScript(file, kModes);
+  using Kind = ScriptCommand::Kind;
+  ASSERT_EQ(c.size(), 8u);
+  EXPECT_EQ(c[0].kind, Kind::Camera);
+  EXPECT_EQ(c[0].text, "corner");
+  EXPECT_EQ(c[0].line, 2);
+  EXPECT_EQ(c[1].kind, Kind::View);
+  EXPECT_EQ(c[1].position, glm::vec3(1, 2, 3));
+  EXPECT_EQ(c[1].target, glm::vec3(0, 0.5f, -1));
+  EXPECT_EQ(c[2].kind, Kind::Mode);
+  EXPECT_EQ(c[2].text, "indirect");
+  EXPECT_EQ(c[2].line, 5);
+  EXPECT_EQ(c[3].number, -1.5f);
+  EXPECT_EQ(c[4].kind, Kind::Panel);
+  EXPECT_FALSE(c[4].on);
+  EXPECT_EQ(c[5].count, 3);
+  EXPECT_EQ(c[6].kind, Kind::Capture);
+  EXPECT_EQ(c[6].text, "out/a.exr");
+  EXPECT_EQ(c[7].kind, Kind::Window);
+}
+
+TEST(ViewerScript, MistakesNameTheLineAndTheReason) {
+  EXPECT_EQ(refusal("frames 1\nzoom 2\n"),
+            "line 2: unknown command 'zoom' (camera, view, mode, exposure, panel, frames, "
+            "capture, window)");
+  EXPECT_EQ(refusal("view 1 2 3\n"), "line 1: 'view' takes 6 arguments, not 3");
+  EXPECT_EQ(refusal("exposure bright\n"), "line 1: exposure 'bright' is not a finite number");
+  EXPECT_EQ(refusal("exposure 1e999\n"), "line 1: exposure '1e999' is not a finite number");
+  EXPECT_EQ(refusal("mode sepia\n"), "line 1: no render mode 'sepia'");
+  EXPECT_EQ(refusal("capture a.jpg\n"), "line 1: a.jpg: the file must end in .png or .exr");
+  EXPECT_EQ(refusal("frames 0\n"), "line 1: frame count 0 is not a whole number in [1, 100000]");
+  EXPECT_EQ(refusal("frames 2.5\n"),
+            "line 1: frame count 2.5 is not a whole number in [1, 100000]");
+  EXPECT_EQ(refusal("panel maybe\n"), "line 1: 'panel' takes on or off, not 'maybe'");
+  EXPECT_EQ(refusal("view 1 1 1 1 1 1\n"), "line 1: 'view' looks from a point at itself");
+  EXPECT_EQ(refusal("# nothing\n\n"), "the script has no commands");
+}
+
+}  // namespace
+}  // namespace bounce
