@@ -107,7 +107,8 @@ int main(int argc, char** argv) {
                                     {{"planar", kinds.planar},
                                      {"conformal", kinds.conformal},
                                      {"meshUv1", kinds.meshUv1},
-                                     {"degenerate", kinds.degenerate}}},
+                                     {"degenerate", kinds.degenerate},
+                                     {"bundle", kinds.bundle}}},
                                    {"utilisation", layout.utilisation},
                                    {"notes", atlas.notes}};
     if (json) {
@@ -118,9 +119,10 @@ int main(int argc, char** argv) {
                   layout.padding);
       std::printf("static surface %.4g m^2 in %zu instances\n", atlas.staticArea,
                   layout.instances.size());
-      std::printf("charts %d (planar %d, conformal %d, mesh TEXCOORD_1 %d, degenerate %d)\n",
-                  layout.chartCount, kinds.planar, kinds.conformal, kinds.meshUv1,
-                  kinds.degenerate);
+      std::printf(
+          "charts %d (planar %d, conformal %d, mesh TEXCOORD_1 %d, degenerate %d, bundles %d)\n",
+          layout.chartCount, kinds.planar, kinds.conformal, kinds.meshUv1, kinds.degenerate,
+          kinds.bundle);
       std::printf("utilisation %.3f (covered texels / atlas texels)\n",
                   static_cast<double>(layout.utilisation));
       for (const std::string& note : atlas.notes) std::printf("note: %s\n", note.c_str());

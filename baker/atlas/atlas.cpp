@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "atlas/chart_bundle.h"
 #include "atlas/chart_flatten.h"
 #include "atlas/chart_merge.h"
 #include "atlas/chart_pack.h"
@@ -39,7 +40,8 @@ WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
 }
 
 // The charts of one instance, flattened in metres and turned to their smallest rectangle.
-// Charts under kSmallChartTexels texels at `texelSize` may merge across folds (chart_merge.h).
+// Charts under kSmallChartTexels texels at `texelSize` may merge across folds (chart_merge.h);
+// charts under one texel that lie close and face one way are bundled (chart_bundle.h).
 std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, float texelSize) {
   const TriangleGroups groups = segmentCharts(world, SegmentSettings{});
   std::vector<FlatGroup> flat;
@@ -66,7 +68,7 @@ std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, flo
     charts.push_back({instance, groups.degenerate,
                       std::vector<glm::vec2>(3 * groups.degenerate.size(), glm::vec2(0.5f)),
                       ChartSource::Degenerate});
-  return charts;
+  return bundleSubTexelCharts(world, std::move(charts), texelSize);
 }
 
 // Scales a chart laid out in metres to texel units and returns its extent in whole texels.
@@ -193,6 +195,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
       ++(chart.source == ChartSource::Planar      ? kinds.planar
          : chart.source == ChartSource::Conformal ? kinds.conformal
          : chart.source == ChartSource::MeshUv1   ? kinds.meshUv1
+         : chart.source == ChartSource::Bundle    ? kinds.bundle
                                                   : kinds.degenerate);
     }
     const glm::vec2 size(static_cast<float>(layout.width), static_cast<float>(layout.height));

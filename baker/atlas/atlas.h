@@ -39,6 +39,7 @@ struct Atlas {
     int conformal = 0;   // least-squares conformal maps of curved regions
     int meshUv1 = 0;     // instances laid out by their mesh's own TEXCOORD_1 (one chart each)
     int degenerate = 0;  // groups of area-less triangles (one texel each)
+    int bundle = 0;      // sub-texel pieces that lie close and face one way, side by side
   } chartKinds;
   double staticArea = 0.0;  // m², surface of all static instances (world space)
   // m², Σ area × lightmapScale²: the area the texel density applies to.

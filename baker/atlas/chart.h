@@ -14,6 +14,7 @@ enum class ChartSource : uint8_t {
   Conformal,   // least-squares conformal map of a curved region
   MeshUv1,     // the instance's mesh's own uv1, the whole [0,1]² square, used as-is
   Degenerate,  // triangles without area (a point in the atlas)
+  Bundle,      // sub-texel pieces side by side, each moved rigidly (chart_bundle.h)
 };
 
 struct Chart {
