@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -10,7 +11,6 @@
 #include <tbb/task_arena.h>
 
 #include "trace/denormals_flushed.h"
-#include "trace/progress_line.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"  // reverseBits: the base-2 radical inverse
@@ -42,8 +42,8 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
   const int samples = std::max(settings.samplesPerLight, 1);
   std::atomic<uint64_t> rays{0}, reached{0}, over{0};
   std::vector<double> otherShare(coverage.texelCount(), 0.0), total(coverage.texelCount(), 0.0);
-  ProgressLine progress("bounce-bake: light visibility", static_cast<uint64_t>(coverage.height),
-                        settings.progress);
+  const auto start = std::chrono::steady_clock::now();
+  StageProgress* progress = settings.progress;
 
   auto bakeTexel = [&](std::size_t texel) {
     const uint32_t begin = coverage.first[texel];
@@ -122,19 +122,21 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
                       [&](const tbb::blocked_range<int>& range) {
                         const DenormalsFlushed flushed;
                         for (int y = range.begin(); y != range.end(); ++y) {
+                          if (progress && progress->cancelled()) return;
                           for (int x = 0; x < coverage.width; ++x)
                             bakeTexel(static_cast<std::size_t>(y) * coverage.width + x);
-                          progress.advance(1, 0);
+                          if (progress) progress->advance(1);
                         }
                       });
   });
+  if (progress) progress->throwIfCancelled();
   report.rays = rays;
   report.texelsWithLight = reached;
   report.texelsOverSlots = over;
   const double all = std::accumulate(total.begin(), total.end(), 0.0);
   report.otherLightsShare =
       all > 0.0 ? std::accumulate(otherShare.begin(), otherShare.end(), 0.0) / all : 0.0;
-  report.seconds = progress.elapsedSeconds();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

@@ -20,6 +20,7 @@
 #include "bake/texel_coverage.h"
 #include "ray/ray_kernel.h"
 #include "scene/area_lights.h"
+#include "trace/stage_progress.h"
 
 namespace bounce {
 
@@ -28,7 +29,9 @@ struct VisibilityBakeSettings {
   int samplesPerLight = 64;  // M: σ(V) ≤ 1/(2√M) per texel for unstratified pairs
   uint32_t seed = 0;
   int threads = 0;  // 0: all cores
-  bool progress = false;
+  // Rows of texels done (total: the coverage's rows) and whether to stop, as for the
+  // irradiance (texel_irradiance.h); null: neither.
+  StageProgress* progress = nullptr;
 };
 
 struct VisibilityBakeReport {

@@ -42,13 +42,24 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                           const LightmapBakeSettings& settings) {
   LightmapBake bake;
   Stopwatch clock;
+  // A stage of the plan, begun (and checked for a cancel) when the plan has it.
+  const auto stage = [&](const char* name, uint64_t total) {
+    std::unique_ptr<StageProgress> s = settings.stages && settings.stages->has(name)
+                                           ? settings.stages->begin(name, total)
+                                           : nullptr;
+    if (s) s->throwIfCancelled();
+    return s;
+  };
+  std::unique_ptr<StageProgress> step = stage(kStageCoverage, 1);
   TexelCoverage coverage = buildTexelCoverage(scene, geometry, layout, settings.pointsPerTexel,
                                               settings.irradiance.seed ^ kPointSeedSalt);
   const std::size_t texels = coverage.texelCount();
   bake.covered.assign(texels, 0);
   for (std::size_t t = 0; t < texels; ++t) bake.covered[t] = coverage.covered(t) ? 1 : 0;
   bake.seconds.coverage = clock.lap();
+  step.reset();
 
+  step = stage(kStageLeakGuard, 1);
   LeakGuardSettings leak = settings.leak;
   if (leak.threads == 0) leak.threads = settings.irradiance.threads;
   const LeakGuardResult guard =
@@ -57,9 +68,12 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.pointsInside = guard.pointsInside;
   bake.pointsAcross = guard.pointsAcross;
   bake.seconds.leakGuard = clock.lap();
+  step.reset();
 
-  TexelIrradiance gathered =
-      gatherIrradiance(scene, geometry, kernel, coverage, settings.irradiance);
+  step = stage(kStageIrradiance, static_cast<uint64_t>(coverage.height));
+  IrradianceSettings irradiance = settings.irradiance;
+  irradiance.progress = step.get();
+  TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, irradiance);
   bake.irradiance = std::move(gathered.irradiance);
   bake.samples = std::move(gathered.samples);
   bake.relativeError = std::move(gathered.relativeError);
@@ -67,6 +81,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.totalSamples = gathered.totalSamples;
   bake.nonFiniteSamples = gathered.nonFiniteSamples;
   bake.seconds.irradiance = clock.lap();
+  step.reset();
 
   const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
   const AreaLightSet lights = sceneAreaLights(scene);
@@ -74,7 +89,8 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     VisibilityBakeSettings visibility = settings.visibility;
     visibility.seed = settings.irradiance.seed;
     visibility.threads = settings.irradiance.threads;
-    visibility.progress = settings.irradiance.progress;
+    step = stage(kStageVisibility, static_cast<uint64_t>(coverage.height));
+    visibility.progress = step.get();
     bake.visibility =
         bakeLightVisibility(lights, kernel, coverage, visibility, bake.visibilityReport);
     bake.rays += bake.visibilityReport.rays;
@@ -83,6 +99,8 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     fillVisibility(*bake.visibility, filled, &labels);
   }
   bake.seconds.visibility = clock.lap();
+  step.reset();
+  step = stage(kStageFilters, 1);
 
   std::vector<uint8_t> valid(texels, 0);
   std::vector<float> errors;
@@ -145,6 +163,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     bake.seamMismatch = stitchSeams(bake.irradiance, seams);
   }
   bake.seconds.stitch = clock.lap();
+  if (step) step->advance(1);
   return bake;
 }
 

@@ -15,10 +15,22 @@
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
+#include "trace/stage_progress.h"
 
 namespace bounce {
 
+// Its stages' names, for a StagePlan (trace/stage_progress.h).
+inline constexpr char kStageCoverage[] = "texel coverage";
+inline constexpr char kStageLeakGuard[] = "leak guard";
+inline constexpr char kStageIrradiance[] = "irradiance";
+inline constexpr char kStageVisibility[] = "light visibility";
+inline constexpr char kStageFilters[] = "denoise, dilate, stitch";
+
 struct LightmapBakeSettings {
+  // Where the steps report (those of the plan's stages named above: each begun, counted and
+  // finished there) and learn to stop (BakeCancelled); null: silent and never cancelled.
+  // irradiance.progress and visibility.progress are set from it.
+  const StagePlan* stages = nullptr;
   IrradianceSettings irradiance;
   LeakGuardSettings leak;
   VisibilityBakeSettings visibility;  // seed and threads: the irradiance's

@@ -1,6 +1,7 @@
 #include "bake/texel_irradiance.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <tbb/blocked_range.h>
@@ -10,7 +11,6 @@
 
 #include "trace/denormals_flushed.h"
 #include "trace/path_tracer.h"
-#include "trace/progress_line.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"
 
@@ -90,8 +90,8 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   out.relativeError.assign(texels, 0.0f);
   std::vector<uint32_t> nonFinite(texels, 0);
   const int maxSpp = std::max(settings.maxSpp, 1);
-  const auto rows = static_cast<uint64_t>(coverage.height);
-  ProgressLine progress("bounce-bake: irradiance", rows, settings.progress);
+  const auto start = std::chrono::steady_clock::now();
+  StageProgress* progress = settings.progress;
 
   auto bakeTexel = [&](std::size_t texel) {
     const uint32_t begin = coverage.first[texel];
@@ -147,20 +147,22 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         tbb::blocked_range<int>(0, coverage.height, 1), [&](const tbb::blocked_range<int>& range) {
           const DenormalsFlushed flushed;
           for (int y = range.begin(); y != range.end(); ++y) {
+            if (progress && progress->cancelled()) return;
             uint64_t rowSamples = 0;
             for (int x = 0; x < coverage.width; ++x) {
               const std::size_t texel = static_cast<std::size_t>(y) * coverage.width + x;
               bakeTexel(texel);
               rowSamples += out.samples[texel];
             }
-            progress.advance(1, rowSamples);
+            if (progress) progress->advance(1, rowSamples);
           }
         });
   });
+  if (progress) progress->throwIfCancelled();
   for (const uint32_t s : out.samples) out.totalSamples += s;
   for (const uint32_t n : nonFinite) out.nonFiniteSamples += n;
   out.rays = counting.count();
-  out.seconds = progress.elapsedSeconds();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

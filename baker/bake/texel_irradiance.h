@@ -23,6 +23,7 @@
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
+#include "trace/stage_progress.h"
 
 namespace bounce {
 
@@ -32,7 +33,9 @@ struct IrradianceSettings {
   int maxDepth = 64;         // most diffuse reflections along a path
   uint32_t seed = 0;
   int threads = 0;  // 0: all cores
-  bool progress = false;
+  // Where the rows of texels done are counted (total: the coverage's rows), and whether to stop
+  // (then BakeCancelled is thrown after the rows in flight); null: neither.
+  StageProgress* progress = nullptr;
 };
 
 inline constexpr int kIrradianceBatch = 16;

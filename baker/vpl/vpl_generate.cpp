@@ -216,7 +216,9 @@ VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const Ray
   std::vector<PathVpls> batch(kVplBatch);
   bool full = false;
   while (!full && set.paths < maxPaths) {
+    if (settings.progress) settings.progress->throwIfCancelled();
     const uint64_t first = set.paths;
+    const std::size_t vplsBefore = set.vpls.size();
     arena.execute([&] {
       tbb::parallel_for(0, kVplBatch, [&](int i) {
         batch[i] = tracePath(scene, geometry, kernel, starter, s, static_cast<uint32_t>(first + i));
@@ -241,6 +243,7 @@ VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const Ray
       totalSumSq += pathTotal * pathTotal;
       ++set.paths;
     }
+    if (settings.progress) settings.progress->advance(set.vpls.size() - vplsBefore, kVplBatch);
     const double n = static_cast<double>(set.paths);
     if (n > 1.0 && totalSum > 0.0) {
       const double varianceOfMean =

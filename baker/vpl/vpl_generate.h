@@ -35,6 +35,7 @@
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
+#include "trace/stage_progress.h"
 
 namespace bounce {
 
@@ -48,6 +49,9 @@ struct VplSettings {
   int rouletteBounce = 2;  // Russian roulette from this bounce on
   uint32_t seed = 0;
   int threads = 0;  // 0: all cores (TBB's default)
+  // VPLs made so far, counted against maxVpls, and whether to stop (checked between batches:
+  // then BakeCancelled); null: neither.
+  StageProgress* progress = nullptr;
 };
 
 struct VplSet {

@@ -1,0 +1,54 @@
+// The bake of a whole scene as one library call: bakeScene runs the numbered stages (atlas, ray
+// kernel, texel coverage, leak guard, irradiance, light visibility, filters, VPLs), reports each
+// to a BakeObserver that can cancel (trace/stage_progress.h), and returns the bake folder's
+// contents with its manifest, ready for writeBake. Nothing is written here: a cancelled or
+// failed bake leaves no file. bounce-bake, the tests, the benchmarks and the viewer's re-bake
+// call it. GL-free.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bake/bake_folder.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "trace/stage_progress.h"
+
+namespace bounce {
+
+// bounce-bake's options, with its defaults (docs/baker.md).
+struct SceneBakeSettings {
+  float texelSize = 0.0f;  // m; 0: the density rule (atlas/texel_density.h)
+  int texelBudget = 0;     // texels instead of the rule; 0: the rule
+  int64_t maxTexels;       // cap (texel_density.h's default)
+  int spp;                 // most samples per texel
+  float targetError;       // relative standard error to stop a texel at; 0: always spp
+  int maxDepth;
+  uint32_t seed = 0;
+  int threads = 0;  // 0: all cores
+  RayBackend backend = RayBackend::Embree;
+  bool denoise;
+  int vpls;        // most VPLs; 0: none
+  float vplError;  // relative standard error of the total VPL flux to stop at
+  SceneBakeSettings();
+};
+
+struct SceneBake {
+  Bake folder;              // layout, lightmap, error map, VPLs, visibility; manifestJson set
+  nlohmann::json manifest;  // the same as folder.manifestJson, parsed
+  std::vector<std::string> notes;  // the atlas's (e.g. the texel cap) and the visibility's
+  uint64_t coveredTexels = 0;
+};
+
+// The stages bakeScene will run for this scene and settings, in order (its StagePlan).
+std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSettings& settings);
+
+// Throws BakeCancelled when `observer` cancels, std::runtime_error for a scene with nothing
+// static to bake. `observer` may be null.
+SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& settings,
+                    BakeObserver* observer = nullptr);
+
+}  // namespace bounce

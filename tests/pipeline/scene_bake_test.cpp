@@ -1,0 +1,161 @@
+// The scene bake as a library call (pipeline/scene_bake.h): its stages reach the observer in
+// order, numbered from the plan, each finished with all its work done; an observer that says
+// stop in any stage ends the bake there with BakeCancelled and no later stage; bounce-bake
+// writes exactly what bakeScene returns; and an interrupted bounce-bake writes nothing and
+// leaves the previous bake folder as it was.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "bake/bake_folder.h"
+#include "image/image_io.h"
+#include "pipeline/scene_bake.h"
+#include "scene/load.h"
+#include "support/tool_run.h"
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kCornell = fs::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf";
+
+SceneBakeSettings smallBake() {
+  SceneBakeSettings s;
+  s.texelBudget = 1024;
+  s.spp = 32;
+  s.vpls = 256;
+  return s;
+}
+
+// Records every report; says stop at the first report of stage `stopAt` (0: never).
+struct RecordingObserver final : BakeObserver {
+  int stopAt = 0;
+  std::vector<BakeProgress> seen;
+  bool onProgress(const BakeProgress& p) override {
+    seen.push_back(p);
+    return p.stage != stopAt;
+  }
+};
+
+TEST(SceneBake, StagesReachTheObserverInOrderEachFinished) {
+  const Scene scene = loadScene(kCornell);
+  const SceneBakeSettings settings = smallBake();
+  const std::vector<std::string> plan = sceneBakeStages(scene, settings);
+  ASSERT_EQ(plan.size(), 8u);  // the box's light is a static area light: visibility runs
+  RecordingObserver observer;
+  const SceneBake baked = bakeScene(scene, settings, &observer);
+  int stage = 0;
+  uint64_t done = 0;
+  std::vector<int> finished(plan.size() + 1, 0);
+  for (const BakeProgress& p : observer.seen) {
+    EXPECT_EQ(p.stages, static_cast<int>(plan.size()));
+    ASSERT_GE(p.stage, stage) << "stage " << p.stage << " after " << stage;
+    if (p.stage != stage) done = 0;
+    stage = p.stage;
+    EXPECT_EQ(p.name, plan[static_cast<std::size_t>(p.stage - 1)]);
+    EXPECT_GE(p.done, done) << p.name;
+    EXPECT_LE(p.done, p.total) << p.name;
+    done = p.done;
+    if (p.finished) {
+      EXPECT_EQ(p.done, p.total) << p.name;
+      ++finished[static_cast<std::size_t>(p.stage)];
+    }
+  }
+  for (std::size_t k = 1; k <= plan.size(); ++k) EXPECT_EQ(finished[k], 1) << plan[k - 1];
+  EXPECT_TRUE(baked.folder.vpls.has_value());
+  EXPECT_TRUE(baked.folder.visibility.has_value());
+  EXPECT_EQ(nlohmann::json::parse(baked.folder.manifestJson), baked.manifest);
+}
+
+TEST(SceneBake, AnObserverCancelsInEveryStage) {
+  const Scene scene = loadScene(kCornell);
+  const SceneBakeSettings settings = smallBake();
+  const int stages = static_cast<int>(sceneBakeStages(scene, settings).size());
+  for (int stopAt = 1; stopAt <= stages; ++stopAt) {
+    RecordingObserver observer;
+    observer.stopAt = stopAt;
+    EXPECT_THROW(bakeScene(scene, settings, &observer), BakeCancelled) << "stage " << stopAt;
+    for (const BakeProgress& p : observer.seen) {
+      EXPECT_LE(p.stage, stopAt) << "stage " << p.stage << " ran after a cancel in " << stopAt;
+      EXPECT_FALSE(p.stage == stopAt && p.finished) << "stage " << stopAt << " finished";
+    }
+  }
+}
+
+// Stopped in the middle of a long irradiance stage (the first report with rows done), the bake
+// ends there: the stage never finishes and no later stage starts.
+TEST(SceneBake, ACancelInTheMiddleOfAStageEndsIt) {
+  const Scene scene = loadScene(kCornell);
+  SceneBakeSettings settings = smallBake();
+  settings.spp = 4096;
+  settings.targetError = 0.0f;  // every texel takes all its samples: seconds of work
+  settings.threads = 1;
+  struct MidStage final : BakeObserver {
+    std::vector<BakeProgress> seen;
+    bool onProgress(const BakeProgress& p) override {
+      seen.push_back(p);
+      return !(p.name == "irradiance" && p.done > 0 && !p.finished);
+    }
+  } observer;
+  EXPECT_THROW(bakeScene(scene, settings, &observer), BakeCancelled);
+  ASSERT_FALSE(observer.seen.empty());
+  const BakeProgress& last = observer.seen.back();
+  EXPECT_EQ(last.name, "irradiance");
+  EXPECT_FALSE(last.finished);
+  EXPECT_LT(last.done, last.total);
+}
+
+TEST(SceneBake, BounceBakeWritesWhatBakeSceneReturns) {
+  const Scene scene = loadScene(kCornell);
+  const SceneBake baked = bakeScene(scene, smallBake());
+  const fs::path out = fs::temp_directory_path() / "bounce_scene_bake_test.bake";
+  fs::remove_all(out);
+  const test::ToolRun r = test::runCommand(
+      std::string(BOUNCE_BIN_DIR) + "/bounce-bake " + test::shellQuote(kCornell) + " -o " +
+          test::shellQuote(out) + " --texel-budget 1024 --spp 32 --vpls 256 --quiet",
+      fs::temp_directory_path() / "bounce_scene_bake_test.log");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const Bake written = readBake(out, scene);
+  EXPECT_TRUE(written.irradiance.pixels == baked.folder.irradiance.pixels);
+  EXPECT_TRUE(written.relativeError->pixels == baked.folder.relativeError->pixels);
+  EXPECT_EQ(written.vpls->size(), baked.folder.vpls->size());
+  fs::remove_all(out);
+}
+
+// SIGINT in the irradiance stage: exit 130, "cancelled: nothing written", the bake folder
+// written before byte for byte as it was, no temporary folder beside it.
+TEST(SceneBake, InterruptedBounceBakeLeavesThePreviousFolder) {
+  const fs::path dir = fs::temp_directory_path() / "bounce_scene_bake_interrupt";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path out = dir / "box.bake";
+  const std::string bake = std::string(BOUNCE_BIN_DIR) + "/bounce-bake " +
+                           test::shellQuote(kCornell) + " -o " + test::shellQuote(out);
+  ASSERT_EQ(test::runCommand(bake + " --texel-budget 256 --spp 16 --vpls 0 --quiet", dir / "a.log")
+                .exitCode,
+            0);
+  const std::string before = test::readText(out / "lightmap.exr");
+  ASSERT_FALSE(before.empty());
+  // A long bake (4096 spp, no early stop), interrupted once its irradiance stage has begun.
+  const fs::path log = dir / "b.log";
+  const test::ToolRun r = test::runCommand(
+      "(" + bake + " --spp 4096 --target-error 0 --threads 1 --progress 2> " +
+          test::shellQuote(log) + " & pid=$!; for i in $(seq 1 600); do grep -q irradiance " +
+          test::shellQuote(log) + " && break; sleep 0.05; done; kill -INT $pid; wait $pid; " +
+          "echo exit=$?; cat " + test::shellQuote(log) + ")",
+      dir / "c.log");
+  EXPECT_NE(r.output.find("exit=130"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("cancelled: nothing written"), std::string::npos) << r.output;
+  EXPECT_EQ(test::readText(out / "lightmap.exr"), before);
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) entries += e.is_directory() ? 1 : 0;
+  EXPECT_EQ(entries, 1) << "a temporary folder was left beside the bake";
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace bounce
