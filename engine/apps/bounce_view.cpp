@@ -22,10 +22,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "background_bake.h"
 #include "bake/bake_facts.h"
 #include "bake/bake_folder.h"
 #include "bake/bake_search.h"
@@ -173,6 +175,7 @@ class Viewer {
       if (frame >= 2) steadyMs += ms;  // the first frames include llvmpipe's shader JIT
       handleInput(dt);
       runScriptBeforeFrame();
+      takeRebakedPass();
       gpuTimer_.begin();
       draw();
       gpuTimer_.end();
@@ -268,7 +271,8 @@ class Viewer {
   // captures and frame counts after it.
   static bool setsState(const bounce::ScriptCommand& c) {
     using Kind = bounce::ScriptCommand::Kind;
-    return c.kind != Kind::Frames && c.kind != Kind::Capture && c.kind != Kind::Window;
+    return c.kind != Kind::Frames && c.kind != Kind::Capture && c.kind != Kind::Window &&
+           c.kind != Kind::WaitBake;
   }
 
   void runScriptBeforeFrame() {
@@ -287,6 +291,8 @@ class Viewer {
         if (c.kind == Kind::Mode) setMode(*bounce::parseRenderMode(c.text));
         if (c.kind == Kind::Exposure) exposure_ = c.number;
         if (c.kind == Kind::Panel) panelShown_ = c.on && panel_.has_value();
+        if (c.kind == Kind::Rebake) startRebake();
+        if (c.kind == Kind::CancelBake && rebake_) rebake_->cancel();
       } catch (const std::exception& e) {
         throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
                                  e.what());
@@ -300,6 +306,14 @@ class Viewer {
     const std::vector<bounce::ScriptCommand>& script = options_.script;
     while (scriptAt_ < script.size() && !setsState(script[scriptAt_])) {
       const bounce::ScriptCommand& c = script[scriptAt_];
+      if (c.kind == Kind::WaitBake) {
+        // The next frame takes a finished pass and draws it; captures follow that frame.
+        if (rebake_ && (rebake_->running() || rebake_->hasFinished())) return false;
+        if (rebake_ && !rebake_->stopped().empty())
+          std::fprintf(stderr, "bounce-view: re-bake %s\n", rebake_->stopped().c_str());
+        ++scriptAt_;
+        continue;
+      }
       if (c.kind == Kind::Frames) {
         if (++scriptFrames_ < c.count) return false;
         scriptFrames_ = 0;
@@ -330,6 +344,9 @@ class Viewer {
     view.objectCount = selection_.count();
     view.lights = lights_;
     view.times = &times_;
+    view.rebaking = rebake_ && rebake_->running();
+    view.rebakeStatus = rebake_ ? rebake_->status() : "";
+    view.rebakeFraction = rebake_ ? rebake_->fraction() : 0.0;
     panel_->beginFrame();
     const bounce::ViewerPanelRequests requests = bounce::drawViewerPanel(view);
     panel_->endFrame();
@@ -338,6 +355,37 @@ class Viewer {
     if (requests.camera) select(*requests.camera);
     if (requests.nextObject) selectNextObject();
     if (requests.screenshot) saveRequested_ = true;
+    if (requests.rebake) startRebake();
+    if (requests.cancelRebake && rebake_) rebake_->cancel();
+  }
+
+  // A background re-bake (background_bake.h) of the scene into <scene>.bake; one at a time.
+  void startRebake() {
+    if (rebake_ && rebake_->running()) return;
+    rebake_.reset();
+    const int cores = static_cast<int>(std::thread::hardware_concurrency());
+    std::filesystem::path folder(options_.scene);
+    folder.replace_extension(".bake");
+    rebake_ = std::make_unique<bounce::BackgroundBake>(scene_, folder, std::max(cores - 1, 1));
+    std::fprintf(stderr, "bounce-view: re-baking into %s (preview first)\n", folder.c_str());
+  }
+
+  // Draws with a pass of the re-bake as soon as it is done: the preview, then the final bake.
+  void takeRebakedPass() {
+    if (!rebake_) return;
+    std::optional<bounce::BakePass> pass = rebake_->takeFinished();
+    if (!pass) return;
+    const bool hadBake = renderer_.hasBake();
+    bake_ = std::move(pass->bake);
+    renderer_.setBake(*bake_);
+    if (!hadBake && renderer_.settings().mode == bounce::RenderMode::Direct)
+      setMode(bounce::RenderMode::Full);
+    bakeDir_ = pass->writtenTo;
+    bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
+    if (bakeDir_.empty()) bakeLines_.front() = "preview (in memory; the final bake follows)";
+    bakeNotes_ = {"re-baked in the viewer: " + pass->name};
+    std::fprintf(stderr, "bounce-view: drawing the re-bake's %s%s%s\n", pass->name.c_str(),
+                 bakeDir_.empty() ? "" : ", written to ", bakeDir_.c_str());
   }
 
   // The modes this bake allows, in the order M steps through them.
@@ -462,8 +510,9 @@ class Viewer {
   bounce::FrameTimes times_;
   std::vector<std::string> bakeLines_;
   std::vector<std::string> lights_;
-  std::size_t scriptAt_ = 0;  // the next command of options_.script
-  int scriptFrames_ = 0;      // frames drawn of the current `frames N`
+  std::unique_ptr<bounce::BackgroundBake> rebake_;  // before the script state, after bake_
+  std::size_t scriptAt_ = 0;                        // the next command of options_.script
+  int scriptFrames_ = 0;                            // frames drawn of the current `frames N`
 };
 
 }  // namespace

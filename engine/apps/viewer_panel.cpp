@@ -42,6 +42,20 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     if (view.bakeLines.empty()) ImGui::TextUnformatted("no bake: direct light only");
     for (const std::string& line : view.bakeLines) ImGui::TextWrapped("%s", line.c_str());
     for (const std::string& note : view.bakeNotes) ImGui::TextWrapped("%s", note.c_str());
+    const bool stale = std::any_of(view.bakeNotes.begin(), view.bakeNotes.end(),
+                                   [](const std::string& n) { return n.starts_with("not using"); });
+    if (stale)
+      ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f),
+                         "lighting needs to be rebuilt (stale bake)");
+    if (view.rebaking) {
+      ImGui::ProgressBar(static_cast<float>(view.rebakeFraction), ImVec2(-1, 0),
+                         view.rebakeStatus.c_str());
+      if (ImGui::Button("cancel")) requests.cancelRebake = true;
+    } else {
+      if (!view.rebakeStatus.empty()) ImGui::TextWrapped("re-bake: %s", view.rebakeStatus.c_str());
+      if (ImGui::Button(view.bakeLines.empty() || stale ? "bake now" : "re-bake"))
+        requests.rebake = true;
+    }
   }
 
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -24,7 +24,10 @@ struct ViewerPanelView {
   std::string scene;
   std::vector<std::string> bakeLines;  // bake/bake_facts.h; empty without a bake
   std::vector<std::string> bakeNotes;  // which bake was found, or why one was passed over
-  std::vector<RenderMode> modes;       // the ones this bake allows
+  bool rebaking = false;               // a background re-bake is running
+  std::string rebakeStatus;            // its progress, or how it ended
+  double rebakeFraction = 0.0;
+  std::vector<RenderMode> modes;  // the ones this bake allows
   RenderMode mode = RenderMode::Direct;
   float exposure = 0.0f;  // EV
   int msaa = 1;           // samples per pixel
@@ -42,6 +45,8 @@ struct ViewerPanelRequests {
   std::optional<std::size_t> camera;
   bool nextObject = false;
   bool screenshot = false;
+  bool rebake = false;
+  bool cancelRebake = false;
 };
 
 ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view);

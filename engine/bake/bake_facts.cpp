@@ -45,7 +45,7 @@ BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
   f.bakeSeconds = number(m, "seconds", "total");
   std::error_code error;
   const auto written = std::filesystem::last_write_time(dir / "bake.json", error);
-  if (!error)
+  if (!dir.empty() && !error)
     f.ageSeconds =
         std::chrono::duration<double>(std::filesystem::file_time_type::clock::now() - written)
             .count();

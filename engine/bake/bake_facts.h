@@ -28,7 +28,8 @@ struct BakeFacts {
   std::optional<double> ageSeconds;  // since bake.json was written
 };
 
-// `dir` is the folder the bake was read from (for its name and bake.json's time).
+// `dir` is the folder the bake was read from (for its name and bake.json's time); empty for a
+// bake held in memory only.
 BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir);
 
 // One line each, e.g. "atlas 276 x 72 texels, 85% used, 16 charts", "texel 1.09 cm".

@@ -87,9 +87,15 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
       const std::filesystem::path ext = std::filesystem::path(w[1]).extension();
       if (ext != ".png" && ext != ".exr") fail(w[1] + ": the file must end in .png or .exr");
       c.text = w[1];
+    } else if (w[0] == "rebake" || w[0] == "wait-bake" || w[0] == "cancel-bake") {
+      arguments(0);
+      c.kind = w[0] == "rebake"      ? ScriptCommand::Kind::Rebake
+               : w[0] == "wait-bake" ? ScriptCommand::Kind::WaitBake
+                                     : ScriptCommand::Kind::CancelBake;
     } else {
       fail("unknown command '" + w[0] +
-           "' (camera, view, mode, exposure, panel, frames, capture, window)");
+           "' (camera, view, mode, exposure, panel, frames, capture, window, rebake, wait-bake, "
+           "cancel-bake)");
     }
     commands.push_back(c);
   }

@@ -8,6 +8,9 @@
 //   frames N             draw N frames (N >= 1)
 //   capture FILE         save the scene's frame (.png tone-mapped or .exr radiance)
 //   window FILE          save the window as shown, panel included (.png, or .exr display values)
+//   rebake               start a background re-bake (preview, then final, as the panel's button)
+//   wait-bake            draw frames until the re-bake has finished and its last pass is drawn
+//   cancel-bake          cancel the running re-bake
 // Commands run in order, one per frame (a frames N takes N); the viewer exits after the last.
 // Paths are as written (relative to the working folder). GL-free.
 #pragma once
@@ -21,7 +24,19 @@
 namespace bounce {
 
 struct ScriptCommand {
-  enum class Kind { Camera, View, Mode, Exposure, Panel, Frames, Capture, Window };
+  enum class Kind {
+    Camera,
+    View,
+    Mode,
+    Exposure,
+    Panel,
+    Frames,
+    Capture,
+    Window,
+    Rebake,
+    WaitBake,
+    CancelBake
+  };
   Kind kind = Kind::Frames;
   int line = 0;                            // 1-based, for messages
   std::string text;                        // camera or mode name, file

@@ -68,7 +68,8 @@ TEST(ViewerScript, ReadsEveryCommandWithItsLine) {
 TEST(ViewerScript, MistakesNameTheLineAndTheReason) {
   EXPECT_EQ(refusal("frames 1\nzoom 2\n"),
             "line 2: unknown command 'zoom' (camera, view, mode, exposure, panel, frames, "
-            "capture, window)");
+            "capture, window, rebake, wait-bake, cancel-bake)");
+  EXPECT_EQ(refusal("rebake now\n"), "line 1: 'rebake' takes 0 arguments, not 1");
   EXPECT_EQ(refusal("view 1 2 3\n"), "line 1: 'view' takes 6 arguments, not 3");
   EXPECT_EQ(refusal("exposure bright\n"), "line 1: exposure 'bright' is not a finite number");
   EXPECT_EQ(refusal("exposure 1e999\n"), "line 1: exposure '1e999' is not a finite number");

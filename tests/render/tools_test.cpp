@@ -294,6 +294,63 @@ TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
   EXPECT_EQ(bounce::readExr(dir_ / "window.exr").width, 96);
 }
 
+// The viewer's background re-bake (--script rebake / wait-bake, the panel's button): a copy of
+// the Cornell box with no bake anywhere starts in direct light; the re-bake (preview, then
+// bounce-bake's defaults) is written to <scene>.bake, which matches the scene, and the viewer's
+// indirect frame is bounce-render's frame of that folder (within 1e-3 + 1e-4 W/(sr·m²)).
+TEST_F(ToolsTest, ViewerRebakesInTheBackgroundAndDrawsTheNewBake) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile = dir_ / "box.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf", sceneFile);
+  std::ofstream(dir_ / "s.txt") << "rebake\nwait-bake\nmode indirect\ncapture "
+                                << (dir_ / "viewer.exr").string() << "\n";
+  const ToolRun r = run("xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                        " --width 64 --height 64 --script " + quote(dir_ / "s.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("drawing the re-bake's preview"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("drawing the re-bake's final, written to"), std::string::npos)
+      << r.output;
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  EXPECT_NO_THROW(bounce::readBake(dir_ / "box.bake", scene));
+  const ToolRun rendered =
+      run(tool("bounce-render") + " " + quote(sceneFile) +
+          " --mode indirect --width 64 --height 64 --out " + quote(dir_ / "render.exr"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  const bounce::Image viewer = bounce::readExr(dir_ / "viewer.exr");
+  const bounce::Image render = bounce::readExr(dir_ / "render.exr");
+  ASSERT_EQ(viewer.pixels.size(), render.pixels.size());
+  double lit = 0.0;
+  for (std::size_t i = 0; i < render.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(viewer.pixels[i][c], render.pixels[i][c], 1e-3f * render.pixels[i][c] + 1e-4f);
+      lit += render.pixels[i][c];
+    }
+  EXPECT_GT(lit, 1.0);  // the box's indirect light, not black
+}
+
+// Cancelled at once, the re-bake writes nothing and the viewer keeps drawing its bake.
+TEST_F(ToolsTest, ViewerCancelsARebakeAndKeepsItsBake) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile = dir_ / "box.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf", sceneFile);
+  const ToolRun baked = run(tool("bounce-bake") + " " + quote(sceneFile) +
+                            " --texel-budget 256 --spp 16 --vpls 0 --quiet");
+  ASSERT_EQ(baked.exitCode, 0) << baked.output;
+  const std::string lightmap = bounce::test::readText(dir_ / "box.bake" / "lightmap.exr");
+  std::ofstream(dir_ / "s.txt") << "mode indirect\ncapture " << (dir_ / "before.exr").string()
+                                << "\nrebake\ncancel-bake\nwait-bake\ncapture "
+                                << (dir_ / "after.exr").string() << "\n";
+  const ToolRun r = run("xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                        " --width 64 --height 64 --script " + quote(dir_ / "s.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("re-bake cancelled"), std::string::npos) << r.output;
+  EXPECT_TRUE(bounce::readExr(dir_ / "before.exr").pixels ==
+              bounce::readExr(dir_ / "after.exr").pixels);
+  EXPECT_EQ(bounce::test::readText(dir_ / "box.bake" / "lightmap.exr"), lightmap);
+}
+
 // A synthetic bake for content/point_over_plane: every static instance's corners at the atlas
 // centre of a constant lightmap E = (2, 3, 5) W/m², so the plane (ρ = 0.5) shows ρ/π·E.
 // `hashOf` names the scene the manifest claims.
