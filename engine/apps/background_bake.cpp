@@ -100,7 +100,7 @@ void BackgroundBake::run() {
       SceneBake baked =
           bakeScene(scene_, preview ? previewSettings(threads_) : finalSettings(threads_), this);
       BakePass pass{preview ? "preview" : "final", std::move(baked.folder), {}};
-      if (!preview) {
+      if (!preview && !folder_.empty()) {
         writeBake(folder_, pass.bake);
         pass.writtenTo = folder_;
       }

@@ -26,7 +26,8 @@ struct BakePass {
 
 class BackgroundBake final : private BakeObserver {
  public:
-  // Starts at once. `threads`: the bake's worker threads (leave the renderer a core).
+  // Starts at once. `threads`: the bake's worker threads (leave the renderer a core). An empty
+  // `folder`: the final bake is kept in memory only.
   BackgroundBake(Scene scene, std::filesystem::path folder, int threads);
   ~BackgroundBake();  // cancels and waits
   BackgroundBake(const BackgroundBake&) = delete;

@@ -88,26 +88,6 @@ struct LoadedBake {
   std::vector<std::string> notes;
 };
 
-// One panel line per punctual light (area lights are the emissive surfaces).
-std::vector<std::string> lightLines(const bounce::Scene& scene) {
-  std::vector<std::string> lines;
-  for (const bounce::Light& light : scene.lights) {
-    char line[256];
-    const glm::vec3& i = light.intensity;
-    const glm::vec3& p = light.position;
-    if (light.type == bounce::LightType::Directional)
-      std::snprintf(line, sizeof line, "directional '%s': E = (%.3g, %.3g, %.3g) W/m^2",
-                    light.name.c_str(), light.irradiance.r, light.irradiance.g, light.irradiance.b);
-    else
-      std::snprintf(line, sizeof line,
-                    "%s '%s': I = (%.3g, %.3g, %.3g) W/sr at (%.2f, %.2f, %.2f) m",
-                    light.type == bounce::LightType::Spot ? "spot" : "point", light.name.c_str(),
-                    i.r, i.g, i.b, p.x, p.y, p.z);
-    lines.push_back(std::string(line) + (light.bakeDirect ? " (baked)" : ""));
-  }
-  return lines;
-}
-
 // With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
 // with it in place (vpl/vpl_retrace.h).
 bounce::RendererSettings rendererSettings(const Options& options, const bounce::Scene& scene,
@@ -157,7 +137,8 @@ class Viewer {
       std::fprintf(stderr, "bounce-view: warning: no panel (%s); the keys still work\n", e.what());
     }
     if (bake_) bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    lights_ = lightLines(scene_);
+    bakeStale_ = std::any_of(bakeNotes_.begin(), bakeNotes_.end(),
+                             [](const std::string& n) { return n.starts_with("not using"); });
     select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
   }
 
@@ -292,6 +273,16 @@ class Viewer {
         if (c.kind == Kind::Exposure) exposure_ = c.number;
         if (c.kind == Kind::Panel) panelShown_ = c.on && panel_.has_value();
         if (c.kind == Kind::Rebake) startRebake();
+        if (c.kind == Kind::Light) {
+          const std::size_t index = lightNamed(c.text);
+          bounce::Light light = scene_.lights[index];
+          glm::vec3& power =
+              light.type == bounce::LightType::Directional ? light.irradiance : light.intensity;
+          if (c.field == "intensity") power = c.value;
+          if (c.field == "position") light.position = c.value;
+          if (c.field == "direction") light.direction = glm::normalize(c.value);
+          editLight(index, light);
+        }
         if (c.kind == Kind::CancelBake && rebake_) rebake_->cancel();
       } catch (const std::exception& e) {
         throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
@@ -342,7 +333,8 @@ class Viewer {
     view.camera = cameraIndex_;
     view.object = selection_.empty() ? "" : selection_.name(scene_);
     view.objectCount = selection_.count();
-    view.lights = lights_;
+    view.lights = &scene_.lights;
+    view.bakeStale = bakeStale_;
     view.times = &times_;
     view.rebaking = rebake_ && rebake_->running();
     view.rebakeStatus = rebake_ ? rebake_->status() : "";
@@ -355,19 +347,44 @@ class Viewer {
     if (requests.camera) select(*requests.camera);
     if (requests.nextObject) selectNextObject();
     if (requests.screenshot) saveRequested_ = true;
+    for (const auto& [index, light] : requests.lightEdits) editLight(index, light);
     if (requests.rebake) startRebake();
     if (requests.cancelRebake && rebake_) rebake_->cancel();
   }
 
-  // A background re-bake (background_bake.h) of the scene into <scene>.bake; one at a time.
+  std::size_t lightNamed(const std::string& name) const {
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i)
+      if (scene_.lights[i].name == name) return i;
+    throw std::runtime_error("no punctual light named '" + name + "'");
+  }
+
+  // A light edited in the panel or a script: drawn so at once; the baked light, which holds the
+  // old light's indirect (and, for a baked-only light, direct) light, is stale until a re-bake.
+  void editLight(std::size_t index, const bounce::Light& light) {
+    scene_.lights.at(index) = light;
+    renderer_.setLight(index, light);
+    lightsEdited_ = true;
+    if (bake_ && !bakeStale_) {
+      bakeStale_ = true;
+      bakeNotes_.push_back(
+          "the baked light is stale: a light changed since the bake (re-bake "
+          "to update it; the scene file is not changed)");
+      std::fprintf(stderr, "bounce-view: %s\n", bakeNotes_.back().c_str());
+    }
+  }
+
+  // A background re-bake (background_bake.h) of the scene into <scene>.bake, or kept in memory
+  // when a light was edited (the bake would not match the scene file); one at a time.
   void startRebake() {
     if (rebake_ && rebake_->running()) return;
     rebake_.reset();
     const int cores = static_cast<int>(std::thread::hardware_concurrency());
-    std::filesystem::path folder(options_.scene);
-    folder.replace_extension(".bake");
+    std::filesystem::path folder;
+    if (!lightsEdited_) folder = std::filesystem::path(options_.scene).replace_extension(".bake");
     rebake_ = std::make_unique<bounce::BackgroundBake>(scene_, folder, std::max(cores - 1, 1));
-    std::fprintf(stderr, "bounce-view: re-baking into %s (preview first)\n", folder.c_str());
+    std::fprintf(stderr, "bounce-view: re-baking %s (preview first)\n",
+                 folder.empty() ? "in memory: the scene has edits the file has not"
+                                : ("into " + folder.string()).c_str());
   }
 
   // Draws with a pass of the re-bake as soon as it is done: the preview, then the final bake.
@@ -382,8 +399,14 @@ class Viewer {
       setMode(bounce::RenderMode::Full);
     bakeDir_ = pass->writtenTo;
     bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    if (bakeDir_.empty()) bakeLines_.front() = "preview (in memory; the final bake follows)";
-    bakeNotes_ = {"re-baked in the viewer: " + pass->name};
+    if (bakeDir_.empty())
+      bakeLines_.front() =
+          pass->name == "preview"
+              ? "preview (in memory; the final bake follows)"
+              : "final bake (in memory only: the scene has edits the file has not)";
+    bakeNotes_ = {"re-baked in the viewer: " + pass->name +
+                  (pass->name == "final" && bakeDir_.empty() ? " (in memory only)" : "")};
+    bakeStale_ = false;
     std::fprintf(stderr, "bounce-view: drawing the re-bake's %s%s%s\n", pass->name.c_str(),
                  bakeDir_.empty() ? "" : ", written to ", bakeDir_.c_str());
   }
@@ -509,7 +532,8 @@ class Viewer {
   bounce::gl::GpuTimer gpuTimer_;
   bounce::FrameTimes times_;
   std::vector<std::string> bakeLines_;
-  std::vector<std::string> lights_;
+  bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
+  bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written
   std::unique_ptr<bounce::BackgroundBake> rebake_;  // before the script state, after bake_
   std::size_t scriptAt_ = 0;                        // the next command of options_.script
   int scriptFrames_ = 0;                            // frames drawn of the current `frames N`

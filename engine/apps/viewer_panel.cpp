@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
+
+#include <glm/glm.hpp>
 
 #include <imgui.h>
 
@@ -19,6 +22,35 @@ void plot(const char* label, const std::vector<float>& ms) {
                               " ms (mean " + std::to_string(mean).substr(0, 5) + ")";
   ImGui::PlotLines("##times", ms.data(), static_cast<int>(ms.size()), 0, overlay.c_str(), 0.0f,
                    1.2f * top, ImVec2(0, 48));
+}
+
+// One light's fields: colour and power (intensity W/sr, or irradiance W/m² for a directional
+// light, as colour × its largest channel), position (m) and direction. The edited light, if any.
+std::optional<Light> editLight(std::size_t index, const Light& light) {
+  ImGui::PushID(static_cast<int>(index));
+  Light edited = light;
+  bool changed = false;
+  const bool directional = light.type == LightType::Directional;
+  const char* kind = directional ? "directional" : light.type == LightType::Spot ? "spot" : "point";
+  if (ImGui::TreeNode("light", "%s '%s'%s", kind, light.name.c_str(),
+                      light.bakeDirect ? " (baked)" : "")) {
+    glm::vec3& power = directional ? edited.irradiance : edited.intensity;
+    float scale = std::max({power.r, power.g, power.b});
+    glm::vec3 colour = scale > 0.0f ? power / scale : glm::vec3(1.0f);
+    changed |= ImGui::ColorEdit3("colour", &colour.r, ImGuiColorEditFlags_Float);
+    changed |= ImGui::DragFloat(directional ? "W/m^2" : "W/sr", &scale,
+                                0.01f * std::max(scale, 1.0f), 0.0f, 1e6f, "%.4g");
+    power = colour * std::max(scale, 0.0f);
+    if (!directional) changed |= ImGui::DragFloat3("position (m)", &edited.position.x, 0.01f);
+    if (light.type != LightType::Point) {
+      changed |= ImGui::DragFloat3("direction", &edited.direction.x, 0.01f, -1.0f, 1.0f);
+      edited.direction = glm::length(edited.direction) > 1e-6f ? glm::normalize(edited.direction)
+                                                               : light.direction;
+    }
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+  return changed ? std::optional<Light>(edited) : std::nullopt;
 }
 
 }  // namespace
@@ -42,8 +74,7 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     if (view.bakeLines.empty()) ImGui::TextUnformatted("no bake: direct light only");
     for (const std::string& line : view.bakeLines) ImGui::TextWrapped("%s", line.c_str());
     for (const std::string& note : view.bakeNotes) ImGui::TextWrapped("%s", note.c_str());
-    const bool stale = std::any_of(view.bakeNotes.begin(), view.bakeNotes.end(),
-                                   [](const std::string& n) { return n.starts_with("not using"); });
+    const bool stale = view.bakeStale;
     if (stale)
       ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f),
                          "lighting needs to be rebuilt (stale bake)");
@@ -86,8 +117,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     ImGui::TextWrapped("J/L, I/K, U/O move it (Shift x4)");
   }
 
-  if (!view.lights.empty() && ImGui::CollapsingHeader("Lights")) {
-    for (const std::string& line : view.lights) ImGui::TextWrapped("%s", line.c_str());
+  if (view.lights && !view.lights->empty() && ImGui::CollapsingHeader("Lights")) {
+    for (std::size_t i = 0; i < view.lights->size(); ++i)
+      if (std::optional<Light> edited = editLight(i, (*view.lights)[i]))
+        requests.lightEdits.emplace_back(i, *edited);
   }
 
   if (view.times && ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {

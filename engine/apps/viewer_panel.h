@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/render_mode.h"
+#include "scene/scene.h"
 
 namespace bounce {
 
@@ -33,9 +34,10 @@ struct ViewerPanelView {
   int msaa = 1;           // samples per pixel
   std::vector<std::string> cameras;
   std::size_t camera = 0;
-  std::string object;               // the dynamic object the keys move; empty: none
-  std::size_t objectCount = 0;      // dynamic objects (by name)
-  std::vector<std::string> lights;  // one line each
+  std::string object;                          // the dynamic object the keys move; empty: none
+  std::size_t objectCount = 0;                 // dynamic objects (by name)
+  const std::vector<Light>* lights = nullptr;  // the scene's punctual lights, as drawn now
+  bool bakeStale = false;  // the bake no longer matches the scene (file or a light edit)
   const FrameTimes* times = nullptr;
 };
 
@@ -47,6 +49,7 @@ struct ViewerPanelRequests {
   bool screenshot = false;
   bool rebake = false;
   bool cancelRebake = false;
+  std::vector<std::pair<std::size_t, Light>> lightEdits;  // (index into Scene::lights, light)
 };
 
 ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view);

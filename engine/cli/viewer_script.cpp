@@ -87,6 +87,17 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
       const std::filesystem::path ext = std::filesystem::path(w[1]).extension();
       if (ext != ".png" && ext != ".exr") fail(w[1] + ": the file must end in .png or .exr");
       c.text = w[1];
+    } else if (w[0] == "light") {
+      arguments(5);
+      c.kind = ScriptCommand::Kind::Light;
+      c.text = w[1];
+      c.field = w[2];
+      if (c.field != "intensity" && c.field != "position" && c.field != "direction")
+        fail("'light' sets intensity, position or direction, not '" + c.field + "'");
+      for (int k = 0; k < 3; ++k) c.value[k] = parseNumber(w[3 + k], c.field, fail);
+      if (c.field == "intensity" && (c.value.r < 0.0f || c.value.g < 0.0f || c.value.b < 0.0f))
+        fail("a light's intensity is not negative");
+      if (c.field == "direction" && c.value == glm::vec3(0.0f)) fail("a direction of length 0");
     } else if (w[0] == "rebake" || w[0] == "wait-bake" || w[0] == "cancel-bake") {
       arguments(0);
       c.kind = w[0] == "rebake"      ? ScriptCommand::Kind::Rebake
@@ -94,8 +105,8 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
                                      : ScriptCommand::Kind::CancelBake;
     } else {
       fail("unknown command '" + w[0] +
-           "' (camera, view, mode, exposure, panel, frames, capture, window, rebake, wait-bake, "
-           "cancel-bake)");
+           "' (camera, view, mode, exposure, panel, frames, capture, window, light, rebake, "
+           "wait-bake, cancel-bake)");
     }
     commands.push_back(c);
   }

@@ -8,6 +8,8 @@
 //   frames N             draw N frames (N >= 1)
 //   capture FILE         save the scene's frame (.png tone-mapped or .exr radiance)
 //   window FILE          save the window as shown, panel included (.png, or .exr display values)
+//   light NAME intensity R G B   set a point or spot light's intensity, W/sr (a directional
+//                        light's irradiance, W/m²); `position X Y Z` (m), `direction X Y Z`
 //   rebake               start a background re-bake (preview, then final, as the panel's button)
 //   wait-bake            draw frames until the re-bake has finished and its last pass is drawn
 //   cancel-bake          cancel the running re-bake
@@ -35,13 +37,16 @@ struct ScriptCommand {
     Window,
     Rebake,
     WaitBake,
-    CancelBake
+    CancelBake,
+    Light
   };
   Kind kind = Kind::Frames;
   int line = 0;                            // 1-based, for messages
   std::string text;                        // camera or mode name, file
   glm::vec3 position{0.0f}, target{0.0f};  // view
   float number = 0.0f;                     // exposure
+  std::string field;                       // light: intensity, position or direction
+  glm::vec3 value{0.0f};                   // light: the field's new value
   int count = 1;                           // frames
   bool on = true;                          // panel
 };

@@ -22,6 +22,8 @@ class DirectionalShadowMaps {
 
   // Gives `light` (directional) the cascades; returns 0, or −1 when another light has them.
   int add(const Light& light);
+  // The light with the cascades turned or changed (the next render fits them again).
+  void setLight(const Light& light) { light_ = light; }
   // Fits the cascades to `camera` (image aspect `aspect`) and renders them.
   ShadowDrawCount render(const GpuScene& scene, const Camera& camera, float aspect,
                          gl::DepthTarget& target);

@@ -173,6 +173,17 @@ bool ForwardRenderer::hasBake() const {
   return passes_->lightmap.attached();
 }
 
+void ForwardRenderer::setLight(std::size_t index, const Light& light) {
+  Passes& p = *passes_;
+  if (index >= p.lights.size()) throw std::invalid_argument("no light " + std::to_string(index));
+  const Light& old = p.lights.light(index);
+  if (light.type != old.type || light.bakeDirect != old.bakeDirect)
+    throw std::invalid_argument("light '" + old.name + "': its type and bake mode cannot change");
+  p.lights.setLight(index, light);
+  p.shadows.setLight(index, light);
+  p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
+}
+
 bool ForwardRenderer::hasVpls() const {
   return passes_->vpls.attached();
 }

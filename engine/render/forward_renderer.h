@@ -80,6 +80,10 @@ class ForwardRenderer {
   // recomputes which VPLs their triangles cut off (bake/vpl_occlusion.h): moving several
   // instances (bounce-view moves every instance of a name) costs one re-trace.
   void setInstanceTransform(std::size_t index, const glm::mat4& transform);
+  // Punctual light `index` (Scene::lights) moved, turned or changed intensity or colour: drawn
+  // so from the next frame, its shadow map following. Its type and bakeDirect must stay (throws
+  // std::invalid_argument otherwise). Baked light is not changed: the bake is then stale.
+  void setLight(std::size_t index, const Light& light);
   // Per-corner lightmap UVs of instance `index` (vertex attribute 3, gl/vertex_attributes.h);
   // empty removes them.
   void setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv);

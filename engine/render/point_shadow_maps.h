@@ -20,6 +20,10 @@ class PointShadowMaps {
   // Gives `light` (a point light) a cube; returns its slot, or −1 when all kMaxPointShadows are
   // taken.
   int add(const Light& light, const Box& sceneBox);
+  // The light of cube `slot` moved or changed (its faces follow on the next render).
+  void setLight(int slot, const Light& light) {
+    cubes_.at(static_cast<std::size_t>(slot)).light = light;
+  }
   // Renders the faces that may reach `view` (ViewVolume::mayReach).
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
                          gl::DepthTarget& target);

@@ -19,6 +19,7 @@ class PunctualLights {
   std::size_t size() const { return lights_.size(); }
   // The scene light at table index `i` (= Scene::lights[i]).
   const Light& light(std::size_t i) const { return lights_[i]; }
+  void setLight(std::size_t i, const Light& light) { lights_.at(i) = light; }
   // 4 texels per light (light_table.h), light i's shadow map slot among its kind's maps being
   // shadowSlots[i] (−1: unshadowed; render/shadow_pass.h).
   std::vector<glm::vec4> texels(std::span<const int> shadowSlots) const;

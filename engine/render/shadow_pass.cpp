@@ -33,6 +33,14 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                        " point and 1 directional light cast no shadows");
 }
 
+void ShadowPass::setLight(std::size_t index, const Light& light) {
+  const int slot = index < lightSlot_.size() ? lightSlot_[index] : -1;
+  if (slot < 0) return;
+  if (light.type == LightType::Spot) spot_.setLight(slot, light);
+  if (light.type == LightType::Point) point_.setLight(slot, light);
+  if (light.type == LightType::Directional) directional_.setLight(light);
+}
+
 void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Camera& camera,
                         float aspect) {
   lastFrame_ = {};

@@ -34,6 +34,8 @@ class ShadowPass {
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
   bool setDynamicCasterCubes(bool enabled) { return area_.setDynamicCasterCubes(enabled); }
   void setAreaCubesNeeded(bool needed) { area_.setAllCasterCubesNeeded(needed); }
+  // Punctual light `index` moved, turned or changed power (its kind stays): its map follows.
+  void setLight(std::size_t index, const Light& light);
   // Per punctual light: its map's slot among its kind's maps, −1 for none.
   std::span<const int> lightSlots() const { return lightSlot_; }
   // What the last render() drew (culling's effect).

@@ -18,6 +18,10 @@ class SpotShadowMaps {
 
   // Gives `light` (a spot) a map; returns its slot, or −1 when all kMaxSpotShadows are taken.
   int add(const Light& light, const Box& sceneBox);
+  // The light of map `slot` moved or changed (its view follows on the next render).
+  void setLight(int slot, const Light& light) {
+    maps_.at(static_cast<std::size_t>(slot)).light = light;
+  }
   // Renders the maps that may reach `view` (ViewVolume::mayReach).
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
                          gl::DepthTarget& target);

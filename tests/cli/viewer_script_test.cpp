@@ -43,10 +43,15 @@ TEST(ViewerScript, ReadsEveryCommandWithItsLine) {
                                     "panel off\n"
                                     "frames 3\n"
                                     "capture out/a.exr\n"
-                                    "window out/w.png\n");
+                                    "window out/w.png\n"
+                                    "light lamp position 0 2.5 -1\n");
   const std::vector<ScriptCommand> c = readViewerScript(file, kModes);
   using Kind = ScriptCommand::Kind;
-  ASSERT_EQ(c.size(), 8u);
+  ASSERT_EQ(c.size(), 9u);
+  EXPECT_EQ(c[8].kind, Kind::Light);
+  EXPECT_EQ(c[8].text, "lamp");
+  EXPECT_EQ(c[8].field, "position");
+  EXPECT_EQ(c[8].value, glm::vec3(0, 2.5f, -1));
   EXPECT_EQ(c[0].kind, Kind::Camera);
   EXPECT_EQ(c[0].text, "corner");
   EXPECT_EQ(c[0].line, 2);
@@ -68,7 +73,10 @@ TEST(ViewerScript, ReadsEveryCommandWithItsLine) {
 TEST(ViewerScript, MistakesNameTheLineAndTheReason) {
   EXPECT_EQ(refusal("frames 1\nzoom 2\n"),
             "line 2: unknown command 'zoom' (camera, view, mode, exposure, panel, frames, "
-            "capture, window, rebake, wait-bake, cancel-bake)");
+            "capture, window, light, rebake, wait-bake, cancel-bake)");
+  EXPECT_EQ(refusal("light sun colour 1 1 1\n"),
+            "line 1: 'light' sets intensity, position or direction, not 'colour'");
+  EXPECT_EQ(refusal("light sun intensity 1 -1 1\n"), "line 1: a light's intensity is not negative");
   EXPECT_EQ(refusal("rebake now\n"), "line 1: 'rebake' takes 0 arguments, not 1");
   EXPECT_EQ(refusal("view 1 2 3\n"), "line 1: 'view' takes 6 arguments, not 3");
   EXPECT_EQ(refusal("exposure bright\n"), "line 1: exposure 'bright' is not a finite number");

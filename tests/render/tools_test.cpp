@@ -599,4 +599,34 @@ TEST_F(ToolsTest, ViewerWithBakeUnderXvfb) {
   }
 }
 
+// A light edited in the viewer (script `light NAME intensity R G B`, the panel's fields) is drawn
+// so at once: point_over_plane's 1 W/sr light at (2, 3, 5) W/sr gives (2, 3, 5) times the direct
+// frame (ρ/π·I·cosθ/r² is linear in I); its bake is then named stale, and nothing is written.
+TEST_F(ToolsTest, ViewerDrawsAnEditedLightAndCallsItsBakeStale) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile = dir_ / "plane.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf",
+                sceneFile);
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const std::string lightmap = bounce::test::readText(dir_ / "plane.bake" / "lightmap.exr");
+  std::ofstream(dir_ / "s.txt") << "mode direct\ncapture " << (dir_ / "before.exr").string()
+                                << "\nlight point intensity 2 3 5\ncapture "
+                                << (dir_ / "after.exr").string() << "\n";
+  const ToolRun r = run("xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                        " --width 32 --height 32 --msaa 1 --script " + quote(dir_ / "s.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("the baked light is stale: a light changed"), std::string::npos)
+      << r.output;
+  const bounce::Image before = bounce::readExr(dir_ / "before.exr");
+  const bounce::Image after = bounce::readExr(dir_ / "after.exr");
+  const glm::vec3 gain(2.0f, 3.0f, 5.0f);
+  for (std::size_t i = 0; i < before.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(after.pixels[i][c], gain[c] * before.pixels[i][c], 1e-5f * gain[c]) << i;
+  EXPECT_GT(before.pixels[before.pixels.size() / 2].g, 0.01f);
+  EXPECT_EQ(bounce::test::readText(dir_ / "plane.bake" / "lightmap.exr"), lightmap);
+}
+
 }  // namespace
