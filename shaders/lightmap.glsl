@@ -17,6 +17,8 @@
 //             removed, for a white surface (luminance; the clamp report sums these)
 //   error     each texel's estimated relative error as a false colour (bake/texel_error.h,
 //             computed on the CPU and bound where the chart colours are; nearest texel)
+//   validity  each texel sampled, filled from its neighbours or padding (the same way; the
+//             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
 // E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
 const int LIGHTING_FULL = 0;
 const int LIGHTING_DIRECT = 1;

@@ -218,7 +218,9 @@ int main(int argc, char** argv) {
                  "(lightmap charts and texels), vpl (indirect light of every surface from the "
                  "bake's VPLs, rho/pi*E_vpl), vpl-clamp (red: the VPLs' E/pi on a white surface, "
                  "green: what their clamp removed), error (each texel's estimated relative error: "
-                 "blue 0, green at the bake's target, red at twice it or more)")
+                 "blue 0, green at the bake's target, red at twice it or more), validity (green: "
+                 "texels with samples of their own, orange: filled from their neighbours, dark "
+                 "blue: padding)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")

@@ -232,6 +232,9 @@ class Viewer {
                      ? " (pixels are E/pi: the baked irradiance on a white surface)"
                  : mode == bounce::RenderMode::VplClamp
                      ? " (red: the VPLs' E/pi on a white surface; green: what their clamp removed)"
+                 : mode == bounce::RenderMode::Validity
+                     ? " (green: texels with samples of their own; orange: filled from their "
+                       "neighbours; dark blue: padding)"
                  : mode == bounce::RenderMode::Error
                      ? " (each texel's estimated relative error: blue 0, green at the bake's "
                        "target, red at twice it or more, dark grey none)"

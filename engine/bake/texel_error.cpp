@@ -33,4 +33,13 @@ Image errorFalseColourImage(const Image& relativeError, float target) {
   return colours;
 }
 
+Image texelValidityImage(const Image& relativeError, const Image& charts) {
+  Image colours(relativeError.width, relativeError.height);
+  for (std::size_t i = 0; i < colours.pixels.size(); ++i)
+    colours.pixels[i] = relativeError.pixels[i].r != kNoErrorEstimate ? kValidTexel
+                        : charts.pixels[i] != glm::vec3(0.0f)         ? kFilledTexel
+                                                                      : kPaddingTexel;
+  return colours;
+}
+
 }  // namespace bounce

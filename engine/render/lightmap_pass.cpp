@@ -27,7 +27,8 @@ int lightingModeIndex(RenderMode mode) {
     case RenderMode::VplClamp:
       return 6;
     case RenderMode::Error:
-      return 7;
+    case RenderMode::Validity:
+      return 7;  // both read their colours from the chart unit
   }
   return 1;
 }
@@ -51,11 +52,16 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   charts_.emplace(layout.width, layout.height, charts.pixels, gl::Filter::Nearest,
                   gl::Wrap::ClampToEdge);
   errorColours_.reset();
-  if (bake.relativeError)
+  validityColours_.reset();
+  if (bake.relativeError) {
     errorColours_.emplace(
         layout.width, layout.height,
         errorFalseColourImage(*bake.relativeError, bakeErrorTarget(bake.manifestJson)).pixels,
         gl::Filter::Nearest, gl::Wrap::ClampToEdge);
+    validityColours_.emplace(layout.width, layout.height,
+                             texelValidityImage(*bake.relativeError, charts).pixels,
+                             gl::Filter::Nearest, gl::Wrap::ClampToEdge);
+  }
   size_ = {static_cast<float>(layout.width), static_cast<float>(layout.height)};
   attachVisibility(bake);
   const std::span<const GpuInstance> instances = scene.instances();
@@ -121,7 +127,9 @@ void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   program.set("uLightmapSize", size_);
   irradiance_->bind(TextureUnit::kLightmap);
   // The error view reads its false colours where the chart view reads chart colours.
-  (mode == RenderMode::Error && errorColours_ ? *errorColours_ : *charts_)
+  (mode == RenderMode::Error && errorColours_         ? *errorColours_
+   : mode == RenderMode::Validity && validityColours_ ? *validityColours_
+                                                      : *charts_)
       .bind(TextureUnit::kLightmapCharts);
   program.set("uBakedLightCount", bakedLights_);
   program.set("uHasBake", attached_ ? 1 : 0);

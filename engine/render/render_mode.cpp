@@ -7,7 +7,7 @@ namespace {
 
 constexpr std::array kModes = {RenderMode::Full,     RenderMode::Direct, RenderMode::Indirect,
                                RenderMode::Lightmap, RenderMode::Charts, RenderMode::Vpl,
-                               RenderMode::VplClamp, RenderMode::Error};
+                               RenderMode::VplClamp, RenderMode::Error,  RenderMode::Validity};
 
 }  // namespace
 
@@ -29,6 +29,8 @@ std::string_view renderModeName(RenderMode mode) {
       return "vpl-clamp";
     case RenderMode::Error:
       return "error";
+    case RenderMode::Validity:
+      return "validity";
   }
   return "direct";
 }
@@ -42,7 +44,7 @@ bool renderModeNeedsVpls(RenderMode mode) {
 }
 
 bool renderModeNeedsErrorMap(RenderMode mode) {
-  return mode == RenderMode::Error;
+  return mode == RenderMode::Error || mode == RenderMode::Validity;
 }
 
 std::optional<RenderMode> parseRenderMode(std::string_view name) {

@@ -21,6 +21,8 @@ enum class RenderMode {
              // surfaces (needs VPLs; bounce-render's clamp report reads it)
   Error,     // each texel's estimated relative error as a false colour (bake/texel_error.h;
              // needs a bake with error.exr)
+  Validity,  // each texel sampled, filled from neighbours or padding (bake/texel_error.h;
+             // needs a bake with error.exr)
 };
 
 // Whether the mode reads the lightmap or the VPLs (and so needs a bake).

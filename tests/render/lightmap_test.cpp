@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
+#include "bake/texel_error.h"
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
 
@@ -203,6 +205,13 @@ TEST(Lightmap, ErrorModeShowsEachTexelsErrorAgainstTheTarget) {
   expectPixel(4, kSize - 5, glm::vec3(0.05f));
   expectPixel(kSize - 5, kSize - 5, {1.0f, 0.0f, 0.0f});
   expectPixel(kSize / 2, kSize / 2, glm::vec3(0.18f));  // the dynamic quad: no lightmap
+  // Validity: the texel without an estimate is covered by the floor's chart: filled (orange).
+  const Image validity = renderMode(p.scene, p.camera, bake, RenderMode::Validity);
+  for (const auto& [x, y, colour] :
+       {std::tuple{4, 4, kValidTexel}, std::tuple{kSize - 5, 4, kValidTexel},
+        std::tuple{4, kSize - 5, kFilledTexel}, std::tuple{kSize - 5, kSize - 5, kValidTexel}})
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(validity.at(x, y)[c], colour[c], 1e-6f) << x << "," << y;
 
   bake.relativeError.reset();  // a bake without error.exr: the mode is refused, saying why
   testContext();
