@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
+#include "pipeline/bake_memory.h"
 #include "pipeline/scene_bake.h"
 #include "scene/load.h"
 #include "trace/progress_line.h"
@@ -27,6 +28,7 @@ struct Options {
   bounce::SceneBakeSettings bake;
   std::string backend = "embree";
   std::string denoise = kDefaults.denoise ? "on" : "off";
+  std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
   float exposure = 0.0f;
   bool progress = false;
@@ -72,6 +74,7 @@ int run(Options o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.bake.backend = bounce::parseRayBackend(o.backend);
   o.bake.denoise = o.denoise == "on";
+  if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   ProgressLineObserver observer(!o.quiet && (o.progress || bounce::stderrIsTerminal()));
@@ -105,14 +108,15 @@ int run(Options o) {
       stderr,
       "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
       "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
-      "%.2f s (irradiance %.2f s) -> %s\n",
+      "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
       o.scene.filename().string().c_str(), atlas["width"].get<int>(), atlas["height"].get<int>(),
       atlas["charts"].get<int>(), 100.0 * atlas["utilisation"].get<double>(),
       atlas["texelSize"].get<double>(), static_cast<unsigned long long>(baked.coveredTexels),
       manifest["samples"]["perTexelMean"].get<double>(), 100.0 * error["mean"].get<double>(),
       100.0 * error["p95"].get<double>(), manifest["rays"]["perSecond"].get<double>() * 1e-6,
       manifest["seconds"]["total"].get<double>(), manifest["seconds"]["irradiance"].get<double>(),
-      out.string().c_str());
+      bounce::formatBytes(baked.measuredPeakBytes).c_str(),
+      bounce::formatBytes(baked.estimatedPeakBytes).c_str(), out.string().c_str());
   const auto nonFinite = manifest["samples"]["nonFinite"].get<unsigned long long>();
   if (nonFinite > 0)
     std::fprintf(stderr,
@@ -170,6 +174,18 @@ int main(int argc, char** argv) {
                  "stop tracing VPL light paths once the total VPL flux has this relative "
                  "standard error (after at least 1024 paths)")
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--max-memory", o.maxMemory,
+                 "refuse a bake whose estimated peak memory is over this (512M, 4G, ...): the "
+                 "estimate is made after the atlas, before the large allocations; nothing is "
+                 "written")
+      ->check([](const std::string& size) -> std::string {
+        try {
+          bounce::parseMemorySize(size);
+          return "";
+        } catch (const std::exception& e) {
+          return e.what();
+        }
+      });
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);

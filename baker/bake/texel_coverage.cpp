@@ -116,6 +116,12 @@ TexelCoverage buildTexelCoverage(const Scene& scene, const WorldGeometry& geomet
   };
   std::vector<FanTriangle> fan;
   std::vector<float> cumulative;
+  // Fragments come sorted by texel: their distinct texels bound the points, so the list is
+  // allocated once (growing it by doubling held up to twice the memory: bake_memory.h).
+  std::size_t fragmentTexels = 0;
+  for (std::size_t i = 0; i < fragments.size(); ++i)
+    fragmentTexels += i == 0 || fragments[i].texel != fragments[i - 1].texel ? 1 : 0;
+  coverage.points.reserve(fragmentTexels * static_cast<std::size_t>(std::max(pointsPerTexel, 0)));
   std::size_t f = 0;
   for (std::size_t texel = 0; texel < coverage.texelCount(); ++texel) {
     coverage.first[texel] = static_cast<uint32_t>(coverage.points.size());

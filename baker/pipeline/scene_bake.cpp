@@ -9,6 +9,7 @@
 #include "bake/lightmap_bake.h"
 #include "bake/visibility_file.h"
 #include "bake/vpl_file.h"
+#include "pipeline/bake_memory.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
 #include "vpl/vpl_gather.h"
@@ -134,6 +135,15 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   if (atlas.layout.instances.empty())
     throw std::runtime_error(scene.source + " has no static surfaces to bake");
   const double atlasSeconds = lap.seconds();
+  const BakeMemoryEstimate memory =
+      estimateBakeMemory(scene, atlas.layout, atlas.layout.utilisation, o);
+  result.estimatedPeakBytes = memory.peak();
+  if (o.maxMemory > 0.0 && memory.peak() > o.maxMemory)
+    throw BakeOverMemoryBudget(
+        "the bake would take about " + memory.describe() + ", over the budget of " +
+        formatBytes(o.maxMemory) +
+        ": coarser texels (--texel-size, --max-texels), fewer VPLs (--vpls) or fewer static "
+        "triangles lower it");
   stage.reset();
 
   // Dynamic instances are left out of the whole bake, lightmap and VPLs alike: they have no
@@ -296,6 +306,13 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   }
 
   result.coveredTexels = bake.coveredTexels;
+  result.measuredPeakBytes = peakResidentBytes();
+  manifest["memory"] = {{"estimatedPeak", result.estimatedPeakBytes},
+                        {"measuredPeak", result.measuredPeakBytes},
+                        {"unit", "bytes"},
+                        {"what",
+                         "resident set: estimated after the atlas (bake_memory.h), "
+                         "measured at the end (the process's peak)"}};
   if (bake.visibility && bake.visibilityReport.texelsOverSlots > 0)
     result.notes.push_back(
         std::to_string(bake.visibilityReport.texelsOverSlots) + " of " +

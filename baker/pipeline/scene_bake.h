@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,14 @@ struct SceneBakeSettings {
   bool denoise;
   int vpls;        // most VPLs; 0: none
   float vplError;  // relative standard error of the total VPL flux to stop at
+  // Bytes the bake may take at its peak (bake_memory.h's estimate, after the atlas); 0: no limit.
+  double maxMemory = 0.0;
   SceneBakeSettings();
+};
+
+// The estimate said the bake would go over SceneBakeSettings::maxMemory; nothing was baked.
+struct BakeOverMemoryBudget : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 struct SceneBake {
@@ -41,6 +49,8 @@ struct SceneBake {
   nlohmann::json manifest;  // the same as folder.manifestJson, parsed
   std::vector<std::string> notes;  // the atlas's (e.g. the texel cap) and the visibility's
   uint64_t coveredTexels = 0;
+  double estimatedPeakBytes = 0.0;  // bake_memory.h, made after the atlas
+  double measuredPeakBytes = 0.0;   // the process's peak resident set at the end
 };
 
 // The stages bakeScene will run for this scene and settings, in order (its StagePlan).
