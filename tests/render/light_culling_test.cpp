@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "light_field_scene.h"
+#include "lightmap_scenes.h"
 #include "scene/light_falloff.h"
 #include "shadow_scenes.h"
 #include "support/form_factors.h"
@@ -333,6 +334,111 @@ TEST(LightCulling, LightReachingIntoATilesLastColumnIsShadedThere) {
           << "pixel " << x << "," << y;
     }
   EXPECT_GT(lastColumn, 0);
+}
+
+// Two static panels over a floor with a synthetic bake whose every texel names panel 0 visible at
+// 0.25 and panel 1 at 0.5: where culling leaves panel 0 out, panel 1 is first in the cluster's
+// list, and must still read its own baked V (the shader reads it by the light's row, not the
+// list position). Culled and unculled frames, both with the bake, differ by no more than the
+// left-out panels' exact V·E.
+TEST(LightCulling, BakedVisibilityIsReadByTheLightsOwnIndex) {
+  Scene scene;
+  Material floorMaterial;
+  floorMaterial.name = "floor";
+  floorMaterial.albedo = glm::vec3(0.6f);
+  addQuad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, floorMaterial);
+  const float size = 0.2f, height = 0.3f;
+  const glm::vec3 corners[] = {{-0.6f, height, -0.1f}, {0.4f, height, -0.1f}};
+  const glm::vec3 radiance(3.0f, 2.0f, 1.0f);
+  for (int i = 0; i < 2; ++i) {
+    Material panel;
+    panel.name = "panel" + std::to_string(i);
+    panel.emission = radiance;
+    addQuad(scene, corners[i], {size, 0, 0}, {0, 0, size}, panel);  // faces −y
+  }
+  const float visible[] = {0.25f, 0.5f};
+  constexpr int kAtlas = 32;
+  Bake bake;
+  bake.layout.width = bake.layout.height = kAtlas;
+  bake.layout.texelSize = 2.0f / kAtlas;
+  const Mesh& floorMesh = scene.meshes[scene.instances[0].mesh];
+  InstanceLightmapUv floorUv{0, {}};
+  for (uint32_t index : floorMesh.indices)
+    floorUv.cornerUv.push_back({0.5f * (floorMesh.positions[index].x + 1.0f),
+                                0.5f * (floorMesh.positions[index].z + 1.0f)});
+  bake.layout.instances = {floorUv};
+  for (uint32_t i = 1; i <= 2; ++i)  // the panels: one texel of their own, in the last column
+    bake.layout.instances.push_back(
+        {i, std::vector<glm::vec2>(
+                scene.meshes[i].indices.size(),
+                glm::vec2(1.0f - 0.5f / kAtlas, (static_cast<float>(i) - 0.5f) / kAtlas))});
+  bake.irradiance = Image(kAtlas, kAtlas);
+  bake.manifestJson = minimalManifest(scene);
+  BakedVisibility v;
+  v.width = v.height = kAtlas;
+  v.lightCount = 2;
+  TexelVisibility texel;
+  texel.light[0] = 0;
+  texel.visible[0] = visible[0];
+  texel.light[1] = 1;
+  texel.visible[1] = visible[1];
+  v.texels.assign(kAtlas * kAtlas, texel);
+  bake.visibility = v;
+
+  testContext();
+  RendererSettings settings;
+  settings.shadows.enabled = false;
+  const float lightIntensity = brightest(radiance) * size * size;          // Σ L·A, W/sr
+  settings.lightCulling.irradianceFloor = lightIntensity / (0.5f * 0.5f);  // reach 0.5 m
+  const Camera camera = downCamera(2.0f);
+  const int n = 64;
+  Image culled, unculled;
+  LightGridStats stats;
+  {
+    ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+    culled = renderer.renderImage(camera, n, n);
+    stats = renderer.lightGridStats();
+  }
+  settings.lightCulling.enabled = false;
+  {
+    ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+    unculled = renderer.renderImage(camera, n, n);
+  }
+  int violations = 0, alone = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const glm::vec3 p = floorPoint(camera, n, n, x, y);
+      bool underPanel = false;
+      glm::vec3 allowed(0.0f);
+      int kept = 0;
+      for (int i = 0; i < 2; ++i) {
+        const glm::vec3 lo = corners[i], hi = corners[i] + glm::vec3(size, 0.0f, size);
+        underPanel |= p.x >= lo.x - 0.02f && p.x <= hi.x + 0.02f && p.z >= lo.z - 0.02f &&
+                      p.z <= hi.z + 0.02f;
+        const glm::vec3 nearest = glm::clamp(p, lo, hi);
+        if (lightIntensity / glm::dot(p - nearest, p - nearest) >=
+            settings.lightCulling.irradianceFloor) {
+          ++kept;
+          continue;
+        }
+        allowed += 0.6f * visible[i] * radiance *
+                   static_cast<float>(
+                       parallelRectangleFormFactor(p.x, p.z, lo.x, hi.x, lo.z, hi.z, height));
+      }
+      if (underPanel) continue;  // the panels hide the floor from above
+      alone += kept == 1 && p.x > 0.0f;
+      const glm::vec3 u = unculled.at(x, y), c = culled.at(x, y);
+      for (int k = 0; k < 3; ++k) {
+        const float tol = 1e-5f * u[k] + 1e-6f + 0.1f * allowed[k];
+        const bool ok = u[k] - c[k] >= -tol && u[k] - c[k] <= allowed[k] + tol;
+        if (!ok && ++violations <= 3)
+          ADD_FAILURE() << "pixel " << x << "," << y << " channel " << k << ": unculled " << u[k]
+                        << ", culled " << c[k] << ", the cut-off allows a loss of " << allowed[k];
+      }
+    }
+  EXPECT_EQ(violations, 0);
+  EXPECT_GT(alone, 200);  // pixels that only panel 1 reaches: its list is [1]
+  EXPECT_LT(static_cast<double>(stats.areaEntries) / stats.clusters, 1.9);
 }
 
 }  // namespace
