@@ -20,7 +20,8 @@ void LightTable::setVpls(std::vector<glm::vec4> lightTexels, std::vector<glm::ve
 }
 
 void LightTable::setClusters(std::vector<glm::vec4> headers, std::vector<glm::vec4> entries) {
-  if (headers.empty() && clusters_.empty() && entries.empty() && clusterEntries_.empty()) return;
+  // A still view gives the same lists: keep the uploaded table (it may hold many VPLs).
+  if (headers == clusters_ && entries == clusterEntries_) return;
   clusters_ = std::move(headers);
   clusterEntries_ = std::move(entries);
   dirty_ = true;

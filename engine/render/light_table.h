@@ -14,7 +14,7 @@
 //                    count, area count, 0); empty while light culling is off
 //   cluster entries  4 light indices per texel
 //
-// The cluster sections change every frame (the view moves); the table is then uploaded again.
+// The cluster sections change whenever the view moves; the table is then uploaded again whole.
 //
 // Indices and counts are stored as floats: exact below 2^24, so the whole table is held to
 // 2^24 texels (and to GL_MAX_TEXTURE_BUFFER_SIZE); beyond either, update() throws naming both.
