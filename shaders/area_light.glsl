@@ -15,6 +15,8 @@
 //   else 0, 0); the static lights come first. A baked light is skipped once a bake is attached
 //   (uHasBake): its direct light is in the lightmap.
 
+#include "light_grid.glsl"
+
 uniform sampler2D uEmitters;
 uniform int uEmitterCount;    // triangle rows
 uniform int uAreaLightCount;  // light rows, after the triangles
@@ -72,16 +74,18 @@ vec3 emitterTriangleIrradiance(int i, vec3 p, vec3 n) {
   return radiance.rgb * clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
 }
 
-// Σ over area lights of V_l · E_l: E_l the exact unshadowed irradiance of light l's triangles,
+// Σ over the area lights of the fragment's cluster (light_grid.glsl) of V_l · E_l: E_l the exact unshadowed irradiance of light l's triangles,
 // V_l its visible fraction: baked per lightmap texel for static lights on a static surface
 // (baked_visibility.glsl; times the dynamic instances' own cube when the light has one), else
 // from its shadow map when it has one (shadow_area.glsl), else 1
 // (ng: the receiver's geometric normal; atlasUv: its lightmap UV).
-vec3 areaIrradiance(vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
+vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
   vec3 irradiance = vec3(0.0);
   BakedVisibilityTexels baked;
   if (uHasBakedVisibility) baked = bakedVisibilityTexels(atlasUv, uLightmapSize);
-  for (int l = 0; l < uAreaLightCount; ++l) {
+  int count = lights.all ? uAreaLightCount : lights.areaCount;
+  for (int k = 0; k < count; ++k) {
+    int l = areaLightIndex(lights, k);  // its own row: baked visibility and shadows by index
     vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
     if (rows.z > 0.5 && uHasBake) continue;
     vec3 e = vec3(0.0);

@@ -5,6 +5,7 @@
 // mode picks the terms (lightmap.glsl); dynamic instances (and every surface in the vpl mode)
 // get their indirect light from the virtual point lights instead (vpl.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
 // path tracer does; L_e the surface's own emission (front face; both when double-sided).
+// Each fragment shades only the lights of its view cluster (light_grid.glsl).
 // Punctual lights are shadowed by their maps (shadows.glsl); area lights by their baked
 // visibility on static surfaces (baked_visibility.glsl), else by their maps (shadow_area.glsl:
 // percentage-closer soft shadows).
@@ -42,8 +43,11 @@ void main() {
   vec3 albedo = uAlbedo;
   if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
   vec3 direct = vec3(0.0);
-  if (modeUsesDirectLight())
-    direct = punctualIrradiance(vWorldPosition, n, ng) + areaIrradiance(vWorldPosition, n, ng, vLightmapUv);
+  if (modeUsesDirectLight()) {
+    LightList lights = clusterLights(vWorldPosition);
+    direct = punctualIrradiance(lights, vWorldPosition, n, ng) +
+             areaIrradiance(lights, vWorldPosition, n, ng, vLightmapUv);
+  }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
   fragRadiance =

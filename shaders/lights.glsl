@@ -4,9 +4,11 @@
 //   point:       E = I · cosθ / r²            (I in W/sr, r in m)
 //   spot:        E = I · spotFalloff · cosθ / r²
 //   directional: E = E⊥ · cosθ                (E⊥ in W/m² on a surface facing the light)
-// with cosθ = max(n·l, 0), l the unit direction towards the light.
+// with cosθ = max(n·l, 0), l the unit direction towards the light. Summed over the lights of
+// the fragment's cluster (light_grid.glsl), each read by its own index.
 
 #include "light_table.glsl"
+#include "light_grid.glsl"
 
 // Visibility of `light` from p (1 = lit); defined in shadows.glsl.
 float lightVisibility(PunctualLight light, vec3 p, vec3 ng);
@@ -18,10 +20,11 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
   return t * t;
 }
 
-vec3 punctualIrradiance(vec3 p, vec3 n, vec3 ng) {
+vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng) {
   vec3 irradiance = vec3(0.0);
-  for (int i = 0; i < uPunctualCount; ++i) {
-    PunctualLight light = punctualLight(i);
+  int count = lights.all ? uPunctualCount : lights.punctualCount;
+  for (int k = 0; k < count; ++k) {
+    PunctualLight light = punctualLight(punctualLightIndex(lights, k));
     if (light.power == vec3(0.0)) continue;
     if (light.type == LIGHT_DIRECTIONAL) {
       float cosTheta = max(dot(n, -light.direction), 0.0);

@@ -43,6 +43,7 @@ struct Options {
   std::size_t vplGroups = bounce::kMaxVplGroups;
   bool noVplCulling = false;
   bool noVplShadows = false;
+  bool noLightCulling = false;
   std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
   int msaa = 4;  // samples per pixel
@@ -61,6 +62,9 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.vpls.groups = options.vplGroups;
   settings.vpls.culling = !options.noVplCulling;
   settings.vpls.shadows.enabled = !options.noVplShadows;
+  // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
+  settings.lightCulling.enabled = !options.noLightCulling;
+  settings.lightCulling.irradianceFloor = bounce::irradianceFloorForExposure(options.exposure);
   return settings;
 }
 
@@ -133,6 +137,14 @@ int run(const Options& options) {
                options.width, options.height, camera.name.c_str(), scene.triangleCount(),
                ms(start, uploaded), ms(uploaded, rendered),
                std::string(bounce::renderModeName(settings.mode)).c_str(), options.msaa);
+  const bounce::LightGridStats grid = renderer.lightGridStats();
+  if (grid.clusters > 0)
+    std::fprintf(stderr,
+                 "bounce-render: light culling: %d clusters, %.2f punctual and %.2f area lights "
+                 "per cluster (at most %zu and %zu), floor %.3g W/m^2\n",
+                 grid.clusters, static_cast<double>(grid.punctualEntries) / grid.clusters,
+                 static_cast<double>(grid.areaEntries) / grid.clusters, grid.maxPunctual,
+                 grid.maxArea, static_cast<double>(settings.lightCulling.irradianceFloor));
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time.
     bounce::gl::RenderTarget target(options.width, options.height, options.msaa);
@@ -227,6 +239,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{1}, bounce::kMaxVplGroups));
   app.add_flag("--no-vpl-culling", options.noVplCulling,
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
+  app.add_flag("--no-light-culling", options.noLightCulling,
+               "shade every light at every pixel (no per-cluster light lists; by default a "
+               "light is left out where it gives less irradiance than half an 8-bit code value "
+               "at --exposure)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
                "draw every VPL unoccluded (no shadow cubes for the VPL groups' parts)");
   app.add_option("--dynamic-vpls", options.dynamicVpls,

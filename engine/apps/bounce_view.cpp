@@ -493,6 +493,13 @@ class Viewer {
     const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
     if (!target_ || target_->width() != size.x || target_->height() != size.y)
       target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y, options_.msaa);
+    // The light cut-off follows the exposure shown (render/light_cutoff.h).
+    const float floor = bounce::irradianceFloorForExposure(exposure_);
+    if (renderer_.settings().lightCulling.irradianceFloor != floor) {
+      bounce::LightCullingSettings culling = renderer_.settings().lightCulling;
+      culling.irradianceFloor = floor;
+      renderer_.setLightCulling(culling);
+    }
     renderer_.render(fly_->camera(), *target_);
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
     tonemap_.draw(target_->color(), exposure_);

@@ -8,15 +8,16 @@ namespace bounce {
 ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
     : program_(shaderDir / "forward.vert", shaderDir / "forward.frag") {}
 
-void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const ShadowPass& shadows,
-                       const LightmapPass& lightmap, const VplPass& vpls, RenderMode mode,
-                       const glm::mat4& viewProjection, gl::RenderTarget& target) {
+void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
+                       const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,
+                       RenderMode mode, const glm::mat4& viewProjection, gl::RenderTarget& target) {
   target.bind();
   gl::clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   gl::setDepthTest(true);
 
   program_.set("uViewProjection", viewProjection);
   lights.bind(program_);
+  culling.bind(program_);
   shadows.bind(program_);
   program_.set("uEmitterCount", scene.emitterCount());
   program_.set("uAreaLightCount", scene.areaLightCount());

@@ -1,5 +1,6 @@
 // The lit forward pass: every instance with its own model matrix, shaded by shaders/forward.frag
-// (emission + punctual lights with their shadow maps + area lights, the lightmap or the VPLs for
+// (emission + the punctual lights with their shadow maps + the area lights of each fragment's
+// view cluster (light_culling.h), the lightmap or the VPLs for
 // indirect light) into a linear float target:
 // outgoing radiance, W/(sr·m²).
 #pragma once
@@ -9,6 +10,7 @@
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
+#include "render/light_culling.h"
 #include "render/light_table.h"
 #include "render/lightmap_pass.h"
 #include "render/shadow_pass.h"
@@ -21,9 +23,9 @@ class ForwardPass {
   explicit ForwardPass(const std::filesystem::path& shaderDir);
 
   // Clears `target` to black and draws the scene seen through `viewProjection`.
-  void draw(const GpuScene& scene, const LightTable& lights, const ShadowPass& shadows,
-            const LightmapPass& lightmap, const VplPass& vpls, RenderMode mode,
-            const glm::mat4& viewProjection, gl::RenderTarget& target);
+  void draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
+            const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,
+            RenderMode mode, const glm::mat4& viewProjection, gl::RenderTarget& target);
 
  private:
   gl::Program program_;

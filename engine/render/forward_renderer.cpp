@@ -20,6 +20,7 @@ struct ForwardRenderer::Passes {
   PunctualLights lights;
   ShadowPass shadows;
   LightTable lightTable;
+  LightCulling culling;
   LightmapPass lightmap;
   VplPass vpls;
   ForwardPass forward;
@@ -29,6 +30,7 @@ struct ForwardRenderer::Passes {
       : scene(source, warnings),
         lights(source),
         shadows(scene, lights, settings.shadows, shaderDir, warnings),
+        culling(settings.lightCulling),
         vpls(shaderDir, settings.vpls.shadows, warnings),
         forward(shaderDir) {
     lightTable.setPunctual(lights.texels(shadows.lightSlots()));
@@ -74,6 +76,15 @@ ForwardRenderer::~ForwardRenderer() = default;
 
 std::size_t ForwardRenderer::emitterTriangleCount() const {
   return static_cast<std::size_t>(passes_->scene.emitterCount());
+}
+
+void ForwardRenderer::setLightCulling(const LightCullingSettings& culling) {
+  settings_.lightCulling = culling;
+  passes_->culling.setSettings(culling);
+}
+
+LightGridStats ForwardRenderer::lightGridStats() const {
+  return passes_->culling.lastFrame();
 }
 
 ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
@@ -230,8 +241,10 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
                    cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
   followDynamicMoves();
   p.vpls.renderShadows(p.scene);
+  p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
+                   p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
   p.lightTable.update();
-  p.forward.draw(p.scene, p.lightTable, p.shadows, p.lightmap, p.vpls, settings_.mode,
+  p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.vpls, settings_.mode,
                  cameraViewProjection, target);
 }
 

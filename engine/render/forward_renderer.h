@@ -21,6 +21,7 @@
 #include "bake/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
+#include "render/light_culling.h"
 #include "render/render_mode.h"
 #include "render/shadow_settings.h"
 #include "render/vpl_pass.h"
@@ -49,6 +50,9 @@ struct RendererSettings {
   RenderMode mode = RenderMode::Direct;
   ShadowSettings shadows;
   VplRenderSettings vpls;
+  // Per-cluster light lists (light_culling.h): which lights each fragment shades, and the
+  // irradiance floor below which a light is left out.
+  LightCullingSettings lightCulling;
   // Given, the VPLs are traced again with the dynamic instances where they are (on setBake and
   // whenever one moves): they shadow the room and reflect light into it. Empty: the bake's VPLs
   // (traced without them), their paths cut where the dynamic instances block them
@@ -115,6 +119,10 @@ class ForwardRenderer {
   VplClampReport measureVplClamp(const Camera& camera, int width, int height);
 
   const RendererSettings& settings() const { return settings_; }
+  // Light culling on or off, or another irradiance floor (the viewer's exposure changed).
+  void setLightCulling(const LightCullingSettings& culling);
+  // The light lists of the last frame.
+  LightGridStats lightGridStats() const;
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;

@@ -103,9 +103,11 @@ GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
   }
   uploadEmitters();
   if (emitterCount_ > 256)
-    warnings.push_back(std::to_string(emitterCount_) + " emissive triangles in " +
-                       std::to_string(areaLights_.lights.size()) +
-                       " area lights: each fragment loops over all of them (slow)");
+    warnings.push_back(
+        std::to_string(emitterCount_) + " emissive triangles in " +
+        std::to_string(areaLights_.lights.size()) +
+        " area lights: each fragment loops over every triangle of the lights in its view cluster "
+        "(all of them without light culling; slow)");
 }
 
 GpuScene::~GpuScene() = default;

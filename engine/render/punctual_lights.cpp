@@ -22,13 +22,18 @@ float shaderLightType(LightType type) {
 
 PunctualLights::PunctualLights(const Scene& scene) : lights_(scene.lights) {}
 
+glm::vec3 PunctualLights::drawnPower(std::size_t i) const {
+  const Light& light = lights_[i];
+  if (bakedDirectInLightmap_ && light.bakeDirect) return glm::vec3(0.0f);
+  return light.type == LightType::Directional ? light.irradiance : light.intensity;
+}
+
 std::vector<glm::vec4> PunctualLights::texels(std::span<const int> shadowSlots) const {
   std::vector<glm::vec4> out;
   out.reserve(4 * lights_.size());
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = lights_[i];
-    glm::vec3 power = light.type == LightType::Directional ? light.irradiance : light.intensity;
-    if (bakedDirectInLightmap_ && light.bakeDirect) power = glm::vec3(0.0f);
+    const glm::vec3 power = drawnPower(i);
     const int slot = i < shadowSlots.size() ? shadowSlots[i] : -1;
     out.emplace_back(light.position, shaderLightType(light.type));
     out.emplace_back(glm::normalize(light.direction), static_cast<float>(slot));

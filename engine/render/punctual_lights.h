@@ -23,6 +23,9 @@ class PunctualLights {
   // 4 texels per light (light_table.h), light i's shadow map slot among its kind's maps being
   // shadowSlots[i] (−1: unshadowed; render/shadow_pass.h).
   std::vector<glm::vec4> texels(std::span<const int> shadowSlots) const;
+  // The power light `i` is drawn with (its table texel 2): W/sr, or W/m² for directional; 0
+  // while its direct light is in the lightmap.
+  glm::vec3 drawnPower(std::size_t i) const;
   // Lights marked Light::bakeDirect have their direct light in the lightmap once a bake is
   // attached: then they are drawn with zero power (they keep their place in the table).
   // Without a bake they are drawn live like the others.

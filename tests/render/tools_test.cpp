@@ -80,6 +80,37 @@ TEST_F(ToolsTest, RenderMatchesPointOverPlaneThroughLoaderAndExr) {
   }
 }
 
+// The light cut-off follows --exposure (render/light_cutoff.h): at EV −10 the floor is
+// 2^10 × 9.63·10⁻⁴ = 0.987 W/m², so the 1 W/sr light reaches 1.007 m and lights only the pixels
+// within ~0.12 m of its foot; the rest are 0, as they are (black) in the PNG at that exposure.
+// --no-light-culling draws the whole closed form.
+TEST_F(ToolsTest, ExposureSetsTheLightCutOffAndNoLightCullingDrawsEveryLight) {
+  const std::string base =
+      tool("bounce-render") + " " + content("point_over_plane/point_over_plane.gltf") +
+      " --width 32 --height 32 --msaa 1 --exposure -10 --context " + testBackendName() + " --out ";
+  const fs::path culled = dir_ / "culled.exr", every = dir_ / "every.exr";
+  const ToolRun a = run(base + quote(culled));
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  EXPECT_NE(a.output.find("floor 0.987 W/m^2"), std::string::npos) << a.output;
+  const ToolRun b = run(base + quote(every) + " --no-light-culling");
+  ASSERT_EQ(b.exitCode, 0) << b.output;
+  EXPECT_EQ(b.output.find("light culling:"), std::string::npos) << b.output;
+  const bounce::Image near = bounce::readExr(culled), all = bounce::readExr(every);
+  const double t = std::tan(std::numbers::pi / 6);
+  const auto closedForm = [&](int x, int y) {
+    const double nx = (x + 0.5) / 16 - 1, ny = (y + 0.5) / 16 - 1;
+    return 0.5 / std::numbers::pi / std::pow(1 + 9 * t * t * (nx * nx + ny * ny), 1.5);
+  };
+  for (const auto& [x, y] : {std::pair{15, 15}, {16, 16}}) {  // r = 0.05 m: within reach
+    EXPECT_NEAR(near.at(x, y).r, closedForm(x, y), 0.01 * closedForm(x, y));
+    EXPECT_EQ(near.at(x, y), all.at(x, y));
+  }
+  for (const auto& [x, y] : {std::pair{0, 0}, {31, 5}, {8, 24}}) {  // r > 1 m: beyond reach
+    EXPECT_EQ(near.at(x, y), glm::vec3(0.0f)) << x << "," << y;
+    EXPECT_NEAR(all.at(x, y).r, closedForm(x, y), 0.01 * closedForm(x, y)) << x << "," << y;
+  }
+}
+
 TEST_F(ToolsTest, RepeatedOutWritesPngAndExr) {
   const fs::path png = dir_ / "box.png", exr = dir_ / "box.exr";
   const ToolRun r = run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +

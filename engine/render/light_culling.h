@@ -1,0 +1,67 @@
+// Light culling for the lit pass (GL 3.3 core: no compute shaders, no storage buffers): each
+// frame, on the CPU, the view's clusters (cluster_grid.h) get the lights whose reach under the
+// cut-off rule (light_cutoff.h) may touch them (light_grid.h), and the lists go into the light
+// table's cluster sections (light_table.h). shaders/light_grid.glsl finds a fragment's cluster
+// from gl_FragCoord and its view depth and loops over that cluster's lights only.
+// Off, every fragment loops over every light, as before; on, a pixel's radiance differs from
+// that by at most ρ/π · E_floor per light left out of its cluster (docs/renderer.md).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/shader.h"
+#include "render/cluster_grid.h"
+#include "render/frustum.h"
+#include "render/light_cutoff.h"
+#include "render/light_grid.h"
+#include "render/light_table.h"
+#include "render/punctual_lights.h"
+#include "scene/area_lights.h"
+#include "scene/scene.h"
+
+namespace bounce {
+
+struct LightCullingSettings {
+  bool enabled = true;
+  // E_floor, W/m²: below it a light is left out (light_cutoff.h); the default is EV 0's.
+  float irradianceFloor = irradianceFloorForExposure(0.0f);
+  ClusterGridSize grid;
+};
+
+// What the last frame's lists held.
+struct LightGridStats {
+  int clusters = 0;
+  std::size_t punctualEntries = 0, areaEntries = 0;  // Σ over clusters of their list lengths
+  std::size_t maxPunctual = 0, maxArea = 0;          // the longest lists
+};
+
+class LightCulling {
+ public:
+  explicit LightCulling(const LightCullingSettings& settings) : settings_(settings) {}
+
+  void setSettings(const LightCullingSettings& settings);
+  const LightCullingSettings& settings() const { return settings_; }
+
+  // Builds the lists of the frame `camera` sees at width × height over `sceneBox` (world) and
+  // hands them to `table` (nothing when off). `areaVersion` changes whenever `area` does.
+  void update(const Camera& camera, int width, int height, const Box& sceneBox,
+              const PunctualLights& punctual, const AreaLightSet& area, int areaVersion,
+              LightTable& table);
+  // Sets the grid's uniforms of shaders/light_grid.glsl (uLightGridEnabled false when off).
+  void bind(gl::Program& program) const;
+
+  const LightGridStats& lastFrame() const { return stats_; }
+
+ private:
+  LightCullingSettings settings_;
+  std::vector<LightReach> punctualReach_, areaReach_;
+  int areaVersion_ = -1;
+  bool reachStale_ = true;
+  ClusterGrid grid_;
+  LightGridStats stats_;
+};
+
+}  // namespace bounce
