@@ -26,6 +26,7 @@ constexpr double kSmallChartTexels = 16.0;
 struct StaticInstance {
   uint32_t instance = 0;
   WorldMesh world;
+  double weightedArea = 0.0;  // m², area × lightmapScale²
   std::vector<Chart> charts;  // generated, in metres (texelSize 1); empty when uv1 is used
 };
 
@@ -106,14 +107,19 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
     if (instance.mobility != Mobility::Static) continue;
-    StaticInstance s{i, worldMeshOf(scene, instance), {}};
+    if (instance.lightmapScale == 0.0f) {  // asked for no lightmap
+      atlas.vplLitInstances.push_back(i);
+      continue;
+    }
+    StaticInstance s{i, worldMeshOf(scene, instance), 0.0, {}};
     if (s.world.triangleCount() == 0) continue;
     double area = 0.0;
     for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
       if (const double a = s.world.area(t); std::isfinite(a)) area += a;
     staticArea += area;
     const double scale = instance.lightmapScale;
-    weightedArea += area * scale * scale;
+    s.weightedArea = area * scale * scale;
+    weightedArea += s.weightedArea;
     statics.push_back(std::move(s));
   }
   atlas.staticArea = staticArea;
@@ -125,6 +131,23 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   float texelSize = density.texelSize;
   atlas.texelRule = density.rule;
   if (!density.note.empty()) atlas.notes.push_back(density.note);
+  // Instances too small for a lightmap of their own take the VPLs' light.
+  std::size_t tooSmall = 0;
+  std::erase_if(statics, [&](const StaticInstance& s) {
+    const double texels =
+        s.weightedArea / (static_cast<double>(density.texelSize) * density.texelSize);
+    if (texels >= kMinLightmapTexels) return false;
+    atlas.vplLitInstances.push_back(s.instance);
+    ++tooSmall;
+    return true;
+  });
+  std::sort(atlas.vplLitInstances.begin(), atlas.vplLitInstances.end());
+  if (tooSmall > 0)
+    atlas.notes.push_back(std::to_string(tooSmall) + " static instances cover under " +
+                          std::to_string(static_cast<int>(kMinLightmapTexels)) +
+                          " texels each: they get no lightmap and take their indirect light from "
+                          "the VPLs (a larger extras.bounce.lightmapScale keeps one)");
+  if (statics.empty()) return atlas;
   // Instance i's texel edge: the scene's over its lightmapScale.
   const auto instanceTexel = [&](const StaticInstance& s) {
     return texelSize / scene.instances[s.instance].lightmapScale;

@@ -26,9 +26,19 @@ struct AtlasSettings {
   int maxSize = 4096;  // largest atlas edge, texels
 };
 
+// An instance whose surface (area × lightmapScale²) covers fewer texels than this gets no
+// lightmap: a chair leg or a screw narrower than a texel would only be padding around a smear.
+// Its indirect light comes from the VPLs, as a dynamic instance's. A user overrides it with
+// extras.bounce.lightmapScale: 0 sends any instance to the VPLs, a larger scale gives a small
+// one enough texels to keep a lightmap.
+inline constexpr double kMinLightmapTexels = 2.0;
+
 struct Atlas {
   LightmapLayout layout;
   std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
+  // Static instances left without a lightmap region, their indirect light taken from the VPLs
+  // (as dynamic ones): lightmapScale 0, or under kMinLightmapTexels of surface at their texel.
+  std::vector<uint32_t> vplLitInstances;
   // Added to the interface: the chart of every triangle, parallel to layout.instances[i].cornerUv
   // (one per triangle), chart ids in [0, layout.chartCount). Texels of different charts never
   // neighbour within `padding`; filters (dilation, denoiser, seams) must not mix charts.

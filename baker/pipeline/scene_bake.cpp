@@ -244,6 +244,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
         {"weightedArea", atlas.weightedArea},
         {"padding", atlas.layout.padding},
         {"charts", atlas.layout.chartCount},
+        {"vplLitInstances", atlas.vplLitInstances.size()},
         {"utilisation", atlas.layout.utilisation},
         {"coveredTexels", bake.coveredTexels},
         {"invalidTexels", bake.invalidTexels},

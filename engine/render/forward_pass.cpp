@@ -31,7 +31,7 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Li
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const GpuInstance& instance = instances[i];
     lightmap.setInstance(program_, i);
-    vpls.setInstance(program_, scene, i);
+    vpls.setInstance(program_, scene, i, lightmap.lightmapped(i));
     const GpuMaterial& material = scene.bindMaterial(instance, program_, TextureUnit::kAlbedo);
     // glTF: a single-sided surface is invisible from behind (and emits only forwards).
     gl::setBackFaceCulling(!material.doubleSided, instance.mirrored);

@@ -40,6 +40,10 @@ class LightmapPass {
   void bind(gl::Program& program, RenderMode mode) const;
   // Per draw: whether instance `index` (into GpuScene::instances) reads the lightmap.
   void setInstance(gl::Program& program, std::size_t index) const;
+  // Whether instance `index` has an atlas region in the attached bake.
+  bool lightmapped(std::size_t index) const {
+    return index < lightmapped_.size() && lightmapped_[index] != 0;
+  }
 
  private:
   void attachVisibility(const Bake& bake);

@@ -137,10 +137,13 @@ void VplPass::bind(gl::Program& program) const {
   if (shadows_) shadows_->bind(program, TextureUnit::kVplShadow);
 }
 
-void VplPass::setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const {
+void VplPass::setInstance(gl::Program& program, const GpuScene& scene, std::size_t index,
+                          bool lightmapped) const {
   const std::span<const GpuInstance> instances = scene.instances();
-  const bool receiver =
-      attached_ && index < instances.size() && instances[index].mobility == Mobility::Dynamic;
+  // Every surface without a lightmap takes the VPLs' light: dynamic instances, and static ones
+  // the atlas left without a region (too small, or lightmapScale 0; atlas/atlas.h).
+  const bool receiver = attached_ && index < instances.size() &&
+                        (instances[index].mobility == Mobility::Dynamic || !lightmapped);
   program.set("uVplReceiver", receiver ? 1 : 0);
 }
 

@@ -60,8 +60,10 @@ class VplPass {
   // Per frame: grid, clamp distance, shadow cubes (the lights are in the light table).
   void bind(gl::Program& program) const;
   // Per draw: whether instance `index` (into GpuScene::instances) is lit by the VPLs in the
-  // full and indirect modes (a dynamic instance, when VPLs are attached).
-  void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index) const;
+  // full and indirect modes (when VPLs are attached: a dynamic instance, or a static one without
+  // a lightmap region, `lightmapped` false).
+  void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index,
+                   bool lightmapped) const;
 
   // The light table's VPL sections (render/light_table.h): 3 texels per light, then the cuts.
   const std::vector<glm::vec4>& lightTexels() const { return lightTexels_; }

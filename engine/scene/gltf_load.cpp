@@ -412,17 +412,18 @@ class GltfBuilder {
     fail(what + ": extras.bounce.mobility must be \"static\" or \"dynamic\"");
   }
 
-  // extras.bounce.lightmapScale of a node, else its parent's: a number in (0, kMaxLightmapScale].
+  // extras.bounce.lightmapScale of a node, else its parent's: a number in [0, kMaxLightmapScale]
+  // (0: no lightmap, indirect light from the VPLs).
   float lightmapScale(const tinygltf::Node& node, float inherited, const std::string& what) const {
     if (!node.extras.Has("bounce")) return inherited;
     const tinygltf::Value& bounce = node.extras.Get("bounce");
     if (!bounce.Has("lightmapScale")) return inherited;
     const tinygltf::Value& value = bounce.Get("lightmapScale");
     const double scale = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
-    if (!(scale > 0.0 && scale <= kMaxLightmapScale))
-      fail(what + ": extras.bounce.lightmapScale must be a number in (0, " +
+    if (!(scale >= 0.0 && scale <= kMaxLightmapScale))
+      fail(what + ": extras.bounce.lightmapScale must be a number in [0, " +
            std::to_string(static_cast<int>(kMaxLightmapScale)) +
-           "] (texels per metre relative to the scene's)");
+           "] (texels per metre relative to the scene's; 0: no lightmap, light from the VPLs)");
     return static_cast<float>(scale);
   }
 

@@ -224,6 +224,37 @@ TEST(AtlasInstances, LightmapScaleSetsAnInstancesTexelsPerMetre) {
   EXPECT_EQ(overlapProblem(atlas), "");
 }
 
+// Small objects get no lightmap (atlas.h, kMinLightmapTexels): a 1 m² floor sets t =
+// √(1/16384) m = 7.8 mm; a 5 mm square (0.41 texel) and a 2 m² quad at lightmapScale 0 are left
+// to the VPLs, named in vplLitInstances and a note; the same 5 mm square at lightmapScale 4
+// (6.6 texels) keeps its region. Every other instance's region is as before.
+TEST(AtlasInstances, SmallObjectsAndScaleZeroTakeTheVplsLight) {
+  Scene scene;
+  const uint32_t quad = addUnitQuadMesh(scene);
+  addInstance(scene, quad, glm::mat4(1));  // 0: the floor
+  const glm::mat4 small = glm::scale(glm::translate(glm::mat4(1), glm::vec3(3, 0, 0)),
+                                     glm::vec3(0.005f, 0.005f, 0.005f));
+  addInstance(scene, quad, small);                                        // 1: 0.41 texel
+  addInstance(scene, quad, glm::translate(small, glm::vec3(400, 0, 0)));  // 2: scale 4
+  addInstance(scene, quad,
+              glm::scale(glm::translate(glm::mat4(1), glm::vec3(-4, 0, 0)),
+                         glm::vec3(1.4142f, 1.4142f, 1.4142f)));  // 3: scale 0
+  scene.instances[2].lightmapScale = 4.0f;
+  scene.instances[3].lightmapScale = 0.0f;
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_EQ(atlas.vplLitInstances, (std::vector<uint32_t>{1, 3}));
+  EXPECT_NE(atlas.layout.find(0), nullptr);
+  EXPECT_EQ(atlas.layout.find(1), nullptr);
+  EXPECT_NE(atlas.layout.find(2), nullptr);
+  EXPECT_EQ(atlas.layout.find(3), nullptr);
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  bool noted = false;
+  for (const std::string& note : atlas.notes)
+    noted |= note.starts_with("1 static instances cover under 2 texels each");
+  EXPECT_TRUE(noted);
+}
+
 // Curved charts (least-squares conformal maps): angles nearly kept, the whole chart at the
 // density. A spherical cap of half-angle θ mapped conformally (stereographically) has area scales
 // from its centre to its rim in the ratio 1/cos⁴(θ/2): 1.35 at the segmentation's 43° cone, so

@@ -1,5 +1,6 @@
 #include "layout_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -37,7 +38,9 @@ std::string regionProblem(const Scene& scene, const Atlas& atlas) {
     const Instance& instance = scene.instances[i];
     const std::size_t triangles = scene.meshes[instance.mesh].triangleCount();
     const InstanceLightmapUv* region = layout.find(i);
-    const bool wanted = instance.mobility == Mobility::Static && triangles > 0;
+    const bool vplLit = std::find(atlas.vplLitInstances.begin(), atlas.vplLitInstances.end(), i) !=
+                        atlas.vplLitInstances.end();
+    const bool wanted = instance.mobility == Mobility::Static && triangles > 0 && !vplLit;
     if (wanted != (region != nullptr)) {
       problem << "instance " << i << (wanted ? " has no region" : " has a region");
       return problem.str();

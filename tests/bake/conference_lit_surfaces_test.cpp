@@ -52,7 +52,7 @@ TEST(ConferenceLitSurfaces, DISABLED_EverySurfaceThePathTracerLightsHasBakedLigh
       if (!hit.valid()) continue;
       const uint32_t instance = geometry.triangleInstance[hit.triangle];
       const InstanceLightmapUv* region = layout.find(instance);
-      if (region == nullptr) continue;  // dynamic: lit by VPLs, not the lightmap
+      if (region == nullptr) continue;  // dynamic or too small (atlas.h): lit by the VPLs
       glm::vec3 n = glm::normalize(geometry.triangleCross(hit.triangle));
       if (glm::dot(n, ray.direction) > 0.0f) n = -n;
       const glm::vec3 p = ray.origin + hit.t * ray.direction;

@@ -228,6 +228,22 @@ TEST(VplRender, DynamicInstanceInIndirectModeGetsTheVpls) {
   EXPECT_GT(sum, 0.0);
 }
 
+// A static instance the atlas left without a region (too small for a lightmap, or
+// lightmapScale 0: atlas/atlas.h) takes the VPLs' light as a dynamic one does, in full and
+// indirect alike (without the rule it read no indirect light at all).
+TEST(VplRender, StaticInstanceWithoutALightmapRegionGetsTheVpls) {
+  const VplScene s = vplScene(Mobility::Static);
+  const Bake bake = vplBake(s, 0.05f);  // no region for the floor
+  const Image vpl = renderVpls(s, bake, RenderMode::Vpl, true);
+  const Image indirect = renderVpls(s, bake, RenderMode::Indirect, true);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < vpl.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(indirect.pixels[i][c], vpl.pixels[i][c]) << i;
+    sum += vpl.pixels[i].r;
+  }
+  EXPECT_GT(sum, 0.0);
+}
+
 TEST(VplRender, VplModeWithoutVplsNamesTheReason) {
   VplScene s = vplScene(Mobility::Static);
   s.vpls.clear();

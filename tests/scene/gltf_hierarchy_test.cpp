@@ -57,7 +57,8 @@ TEST(GltfHierarchy, WithoutScenesEveryRootNodeIsPlaced) {
 }
 
 // extras.bounce.lightmapScale: read from a node, inherited by its children unless they set
-// their own, 1 where no node sets it; a value outside (0, 64] is refused naming the node.
+// their own, 1 where no node sets it; 0 is read (no lightmap); a value outside [0, 64] is
+// refused naming the node.
 TEST(GltfHierarchy, LightmapScaleIsReadAndInherited) {
   test::TempDir dir;
   test::GltfFixture f = test::GltfFixture::triangle();
@@ -68,18 +69,20 @@ TEST(GltfHierarchy, LightmapScaleIsReadAndInherited) {
        {"extras", {{"bounce", {{"lightmapScale", 2.5}}}}}},
       {{"name", "child"}, {"mesh", 0}},
       {{"name", "own"}, {"mesh", 0}, {"extras", {{"bounce", {{"lightmapScale", 0.25}}}}}},
-      {{"name", "plain"}, {"mesh", 0}}};
-  f.doc["scenes"][0]["nodes"] = {0, 3};
+      {{"name", "plain"}, {"mesh", 0}},
+      {{"name", "none"}, {"mesh", 0}, {"extras", {{"bounce", {{"lightmapScale", 0}}}}}}};
+  f.doc["scenes"][0]["nodes"] = {0, 3, 4};
   f.writeGltf(dir / "scales.gltf");
   const Scene scene = loadScene(dir / "scales.gltf");
-  ASSERT_EQ(scene.instances.size(), 4u);
+  ASSERT_EQ(scene.instances.size(), 5u);
   for (const Instance& i : scene.instances) {
     const float expected = i.name == "parent" || i.name == "child" ? 2.5f
                            : i.name == "own"                       ? 0.25f
+                           : i.name == "none"                      ? 0.0f
                                                                    : 1.0f;
     EXPECT_EQ(i.lightmapScale, expected) << i.name;
   }
-  for (const nlohmann::json& bad : {nlohmann::json(0), nlohmann::json(-1), nlohmann::json(65),
+  for (const nlohmann::json& bad : {nlohmann::json(-0.5), nlohmann::json(-1), nlohmann::json(65),
                                     nlohmann::json("2"), nlohmann::json::array({2})}) {
     test::GltfFixture g = test::GltfFixture::triangle();
     g.doc["nodes"][0]["name"] = "lamp";
