@@ -6,6 +6,7 @@
 #include "bake/lightmap_filters.h"
 #include "bake/texel_coverage.h"
 #include "trace/sampling.h"
+#include "trace/stopwatch.h"
 
 namespace bounce {
 
@@ -13,19 +14,6 @@ namespace {
 
 // Candidate points use a pattern of their own, apart from the irradiance samples'.
 constexpr uint32_t kPointSeedSalt = 0x9e3779b9u;
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 }  // namespace
 

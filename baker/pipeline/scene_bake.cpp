@@ -12,6 +12,7 @@
 #include "pipeline/bake_memory.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
+#include "trace/stopwatch.h"
 #include "vpl/vpl_gather.h"
 #include "vpl/vpl_generate.h"
 
@@ -56,19 +57,6 @@ Image errorMap(const LightmapBake& bake) {
     if (bake.covered[t] && !bake.invalid[t]) map.pixels[t] = glm::vec3(bake.relativeError[t]);
   return map;
 }
-
-class Lap {
- public:
-  double seconds() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // FNV-1a (64 bit) of the settings that change the lightmap, hex.
 std::string settingsHash(const nlohmann::json& settings) {
@@ -120,7 +108,7 @@ std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSett
 
 SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver* observer) {
   const StagePlan plan(observer, sceneBakeStages(scene, o));
-  Lap lap;
+  Stopwatch lap;
   const auto start = std::chrono::steady_clock::now();
   SceneBake result;
 
@@ -134,7 +122,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   result.notes = atlas.notes;
   if (atlas.layout.instances.empty())
     throw std::runtime_error(scene.source + " has no static surfaces to bake");
-  const double atlasSeconds = lap.seconds();
+  const double atlasSeconds = lap.lap();
   const BakeMemoryEstimate memory =
       estimateBakeMemory(scene, atlas.layout, atlas.layout.utilisation, o);
   result.estimatedPeakBytes = memory.peak();
@@ -155,7 +143,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   const Scene statics = staticScene(scene);
   const WorldGeometry geometry = flatten(statics);
   const auto kernel = makeRayKernel(geometry, o.backend);
-  const double kernelSeconds = lap.seconds();
+  const double kernelSeconds = lap.lap();
   stage.reset();
 
   LightmapBakeSettings settings = defaultBakeSettings();
@@ -168,7 +156,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   settings.denoise = o.denoise;
   const LightmapBake bake =
       bakeLightmap(statics, geometry, *kernel, staticLayout(scene, atlas.layout), settings);
-  lap.seconds();  // the lightmap steps time themselves (bake.seconds)
+  lap.lap();  // the lightmap steps time themselves (bake.seconds)
   if (!bake.irradiance.allFinite())
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
 
@@ -187,7 +175,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     vplArea = surfaceArea(geometry);
     stage.reset();
   }
-  const double vplSeconds = lap.seconds();
+  const double vplSeconds = lap.lap();
   // What the map holds: every light's indirect light; direct light only of baked-only lights.
   nlohmann::json bakedDirect = nlohmann::json::array();
   for (const Light& light : scene.lights)

@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -108,30 +107,12 @@ double gridMilliseconds(const Scene& scene, const Camera& camera, int width, int
   return ms[ms.size() / 2];
 }
 
-double processCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-// One warm-up, then `frames` frames of render + glFinish; `last` gets the last frame's radiance.
+// frame_time.h's frames (warm-up, then render + glFinish); `last` gets the last frame's radiance.
 FrameTime timeFrames(ForwardRenderer& renderer, const Camera& camera, gl::RenderTarget& target,
                      int frames, Image& last) {
-  renderer.render(camera, target);
-  gl::finish();
-  std::vector<double> ms;
-  const double cpuStart = processCpuMs();
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(camera, target);
-    gl::finish();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  const double cpu = (processCpuMs() - cpuStart) / frames;
+  const FrameTime t = frameMilliseconds(renderer, camera, target, frames);
   last = target.read();
-  std::sort(ms.begin(), ms.end());
-  return {ms[ms.size() / 2], cpu};
+  return t;
 }
 
 struct Row {
