@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lightmap_scenes.h"
+#include "support/clipped_area.h"
 #include "test_scenes.h"
 
 namespace bounce::test {
@@ -73,30 +74,9 @@ glm::vec2 raster(const Camera& camera, glm::vec3 p) {
   return {(p.x / t + 1.0f) * 0.5f * kSize, (p.z / t + 1.0f) * 0.5f * kSize};
 }
 
-// Area of the convex polygon `poly` inside the pixel [x, x+1] × [y, y+1] (Sutherland–Hodgman
-// against the pixel's four sides, then the shoelace formula).
-double coverage(std::vector<glm::dvec2> poly, int x, int y) {
-  const auto clip = [&](int axis, double bound, bool keepBelow) {
-    std::vector<glm::dvec2> out;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()];
-      const bool aIn = keepBelow ? a[axis] <= bound : a[axis] >= bound;
-      const bool bIn = keepBelow ? b[axis] <= bound : b[axis] >= bound;
-      if (aIn) out.push_back(a);
-      if (aIn != bIn) out.push_back(a + (b - a) * ((bound - a[axis]) / (b[axis] - a[axis])));
-    }
-    poly = out;
-  };
-  clip(0, x, false);
-  clip(0, x + 1, true);
-  clip(1, y, false);
-  clip(1, y + 1, true);
-  double area = 0.0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()];
-    area += a.x * b.y - a.y * b.x;
-  }
-  return std::abs(0.5 * area);
+// Area of the convex polygon `poly` inside the pixel [x, x+1] × [y, y+1].
+double coverage(const std::vector<glm::dvec2>& poly, int x, int y) {
+  return clippedArea(poly, glm::dvec2(x, y), glm::dvec2(x + 1, y + 1));
 }
 
 struct EdgeFigures {
