@@ -569,22 +569,23 @@ int main(int argc, char** argv) {
   app.add_option("--exposure", options.exposure, "exposure in EV (default 0)");
   app.add_option("--frames", options.frames, "render this many frames, then exit")
       ->check(CLI::PositiveNumber);
+  // Captures are written by extension: .png (tone-mapped or display values) or .exr.
+  const CLI::Validator kImageFile(
+      [](const std::string& path) -> std::string {
+        const auto ext = std::filesystem::path(path).extension();
+        return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
+      },
+      "FILE.png|FILE.exr");
   app.add_option("--screenshot", options.screenshot,
                  "with --frames: save the last frame here (.png tone-mapped or .exr linear)")
       ->needs("--frames")
-      ->check([](const std::string& path) -> std::string {
-        const auto ext = std::filesystem::path(path).extension();
-        return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
-      });
+      ->check(kImageFile);
   app.add_option("--window-shot", options.windowShot,
                  "with --frames: save the window as shown, panel included (.png, or .exr of the "
                  "display values in [0, 1], sRGB-encoded; --screenshot holds the scene's frame "
                  "only)")
       ->needs("--frames")
-      ->check([](const std::string& path) -> std::string {
-        const auto ext = std::filesystem::path(path).extension();
-        return ext == ".png" || ext == ".exr" ? "" : path + ": the file must end in .png or .exr";
-      });
+      ->check(kImageFile);
   app.add_option("--script", options.scriptFile,
                  "replay a session: camera, view, mode, exposure, panel, frames, capture and "
                  "window commands, one per line (engine/cli/viewer_script.h); exits after the "
