@@ -2,7 +2,6 @@
 // the bake folder (engine/bake/bake_folder.h): lightmap.exr, layout.bin, bake.json, and the
 // virtual point lights (vpls, baker/vpl) unless --vpls 0.
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -11,9 +10,13 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bake_merge.h"
+#include "bake_progress_line.h"
+#include "bake_summary.h"
 #include "image/image_io.h"
 #include "pipeline/bake_memory.h"
 #include "pipeline/scene_bake.h"
+#include "pipeline/tile_journal.h"
 #include "scene/load.h"
 #include "trace/progress_line.h"
 #include "trace/sampling.h"
@@ -31,39 +34,39 @@ struct Options {
   std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
   float exposure = 0.0f;
+  std::string shard;  // "K/N"; empty: the whole bake
+  bool resume = false;
   bool progress = false;
   bool quiet = false;
 };
 
-// Set by SIGINT/SIGTERM: the bake stops at its next check and nothing is written.
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void onInterrupt(int) {
-  interrupted = 1;
+// "K/N" with 1 ≤ K ≤ N into (K − 1, N); throws std::invalid_argument otherwise.
+std::pair<int, int> parseShard(const std::string& text) {
+  int k = 0, n = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &k, &n, &tail) != 2 || n < 1 || k < 1 || k > n ||
+      n > 1 << 20)
+    throw std::invalid_argument("--shard " + text + ": give K/N with 1 <= K <= N, e.g. 3/16");
+  return {k - 1, n};
 }
 
-// The progress line on stderr ("[4/8] irradiance 45.1%  2.31 Msamples/s  ETA 12 s"), rewritten
-// in place; cancels when interrupted.
-class ProgressLineObserver final : public bounce::BakeObserver {
- public:
-  explicit ProgressLineObserver(bool draw) : draw_(draw) {}
-  bool onProgress(const bounce::BakeProgress& p) override {
-    if (draw_) {
-      const double percent =
-          p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100.0;
-      std::fprintf(stderr, "\rbounce-bake: [%d/%d] %-24s %5.1f%%", p.stage, p.stages,
-                   p.name.c_str(), percent);
-      if (p.samplesPerSecond > 0.0)
-        std::fprintf(stderr, "  %.2f Msamples/s", p.samplesPerSecond * 1e-6);
-      std::fprintf(stderr, p.finished ? "  %.1f s        \n" : "  ETA %.0f s        ",
-                   p.finished ? p.seconds : p.etaSeconds);
-      std::fflush(stderr);
-    }
-    return interrupted == 0;
+// Bakes one shard's tiles into the part file `out` (its journal, renamed into place when whole).
+int runShard(const Options& o, const bounce::Scene& scene, bounce::BakeObserver& observer) {
+  bounce::SceneBakeSettings settings = o.bake;
+  settings.journal = o.out.string() + ".journal";
+  try {
+    bounce::bakeScene(scene, settings, &observer);
+  } catch (const bounce::BakeCancelled&) {
+    std::fprintf(stderr,
+                 "\nbounce-bake: cancelled: %s holds the finished tiles; --resume goes on\n",
+                 settings.journal.string().c_str());
+    return 130;
   }
-
- private:
-  bool draw_;
-};
+  std::filesystem::rename(settings.journal, o.out);
+  std::fprintf(stderr, "bounce-bake: shard %s of %s -> %s (bounce-bake merge joins the parts)\n",
+               o.shard.c_str(), o.scene.filename().string().c_str(), o.out.string().c_str());
+  return 0;
+}
 
 int run(Options o) {
   const auto start = std::chrono::steady_clock::now();
@@ -75,64 +78,49 @@ int run(Options o) {
   o.bake.backend = bounce::parseRayBackend(o.backend);
   o.bake.denoise = o.denoise == "on";
   if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
-  ProgressLineObserver observer(!o.quiet && (o.progress || bounce::stderrIsTerminal()));
+  o.bake.resume = o.resume;
+  bounce::listenForInterrupt();
+  bounce::ProgressLineObserver observer(!o.quiet && (o.progress || bounce::stderrIsTerminal()));
+  if (!o.shard.empty()) {
+    std::tie(o.bake.shard, o.bake.shards) = parseShard(o.shard);
+    if (o.out.empty())
+      throw std::invalid_argument("--shard needs -o PART: the file its tiles go to");
+    return runShard(o, scene, observer);
+  }
   const std::filesystem::path out =
       o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;
+  // Finished tiles go to a journal beside the folder until the folder is written (--resume).
+  o.bake.journal = out.string() + ".journal";
+  if (!o.resume && std::filesystem::exists(o.bake.journal))
+    std::fprintf(stderr,
+                 "bounce-bake: note: starting afresh: %s held the tiles of an unfinished bake "
+                 "(--resume would have gone on from them)\n",
+                 o.bake.journal.string().c_str());
   bounce::SceneBake baked;
   try {
     baked = bounce::bakeScene(scene, o.bake, &observer);
   } catch (const bounce::BakeCancelled&) {
-    std::fprintf(stderr, "\nbounce-bake: cancelled: nothing written (%s is as it was)\n",
-                 out.string().c_str());
+    std::fprintf(stderr,
+                 "\nbounce-bake: cancelled: nothing written (%s is as it was); %s holds the "
+                 "finished tiles: --resume goes on from them\n",
+                 out.string().c_str(), o.bake.journal.string().c_str());
     return 130;
   }
-  for (const std::string& note : baked.notes)
-    std::fprintf(stderr, "bounce-bake: note: %s\n", note.c_str());
-  nlohmann::json& manifest = baked.manifest;
-  manifest["seconds"]["load"] = loadSeconds;
-  manifest["seconds"]["total"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  baked.folder.manifestJson = manifest.dump(1) + "\n";
-  bounce::writeBake(out, baked.folder);
-  if (!o.png.empty()) {
-    // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
-    bounce::Image radiance = baked.folder.irradiance;
-    for (glm::vec3& p : radiance.pixels) p *= bounce::kInvPi;
-    bounce::writePng(o.png, radiance, o.exposure);
-  }
-  const nlohmann::json& atlas = manifest["atlas"];
-  const nlohmann::json& error = manifest["estimatedError"];
-  std::fprintf(
-      stderr,
-      "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
-      "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
-      "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
-      o.scene.filename().string().c_str(), atlas["width"].get<int>(), atlas["height"].get<int>(),
-      atlas["charts"].get<int>(), 100.0 * atlas["utilisation"].get<double>(),
-      atlas["texelSize"].get<double>(), static_cast<unsigned long long>(baked.coveredTexels),
-      manifest["samples"]["perTexelMean"].get<double>(), 100.0 * error["mean"].get<double>(),
-      100.0 * error["p95"].get<double>(), manifest["rays"]["perSecond"].get<double>() * 1e-6,
-      manifest["seconds"]["total"].get<double>(), manifest["seconds"]["irradiance"].get<double>(),
-      bounce::formatBytes(baked.measuredPeakBytes).c_str(),
-      bounce::formatBytes(baked.estimatedPeakBytes).c_str(), out.string().c_str());
-  const auto nonFinite = manifest["samples"]["nonFinite"].get<unsigned long long>();
-  if (nonFinite > 0)
-    std::fprintf(stderr,
-                 "bounce-bake: warning: %llu samples were non-finite (NaN or infinite scene data "
-                 "in %s?) and counted as black: the affected texels are biased low\n",
-                 nonFinite, o.scene.string().c_str());
+  bounce::writeBakeAndReport(baked, {out, o.scene, o.png, o.exposure, loadSeconds, start});
+  std::filesystem::remove(o.bake.journal);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "merge") return bounce::bakeMergeMain(argc - 1, argv + 1);
   CLI::App app{
       "bounce-bake: bakes a scene's lightmap, irradiance E in W/m² per texel (by default the "
       "indirect light; lights marked extras.bounce.bake = \"all\" also their direct light), "
-      "into a bake folder (lightmap.exr, layout.bin, bake.json)."};
+      "into a bake folder (lightmap.exr, layout.bin, bake.json). 'bounce-bake merge --help': "
+      "joining "
+      "the parts of a sharded bake."};
   Options o;
   app.option_defaults()->always_capture_default();
   app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
@@ -186,6 +174,18 @@ int main(int argc, char** argv) {
           return e.what();
         }
       });
+  app.add_option("--tile-size", o.bake.tileSize,
+                 "texels on a side of the tiles the irradiance and visibility are computed, "
+                 "journalled and sharded in (the bake's bytes do not depend on it)")
+      ->check(CLI::Range(1, 4096));
+  app.add_flag("--resume", o.resume,
+               "go on from the tiles in OUT.journal, left by a bake that was stopped or killed "
+               "(its scene and settings must be this bake's); the result is the same bytes as "
+               "an uninterrupted bake");
+  app.add_option("--shard", o.shard,
+                 "K/N: bake only the K-th of N shares of the tiles into the part file -o PART; "
+                 "'bounce-bake merge PART_1 ... PART_N -o DIR' then writes the bake folder, the "
+                 "same bytes as one process's bake");
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);

@@ -1,16 +1,12 @@
 #include "bake/light_visibility_bake.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <numeric>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "trace/denormals_flushed.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"  // reverseBits: the base-2 radical inverse
@@ -28,21 +24,19 @@ struct LightEstimate {
 
 }  // namespace
 
-BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
-                                    const TexelCoverage& coverage,
-                                    const VisibilityBakeSettings& settings,
-                                    VisibilityBakeReport& report) {
-  BakedVisibility out;
+VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKernel& kernel,
+                                      const TexelCoverage& coverage,
+                                      const VisibilityBakeSettings& settings) {
+  VisibilityTexels result;
+  BakedVisibility& out = result.map;
   out.width = coverage.width;
   out.height = coverage.height;
   out.lightCount = static_cast<uint32_t>(lights.staticCount());
   out.texels.assign(coverage.texelCount(), TexelVisibility{});
-  report = {};
-  report.lights = out.lightCount;
+  result.rays.assign(coverage.texelCount(), 0);
+  result.irradiance.assign(coverage.texelCount(), 0.0);
+  result.otherIrradiance.assign(coverage.texelCount(), 0.0);
   const int samples = std::max(settings.samplesPerLight, 1);
-  std::atomic<uint64_t> rays{0}, reached{0}, over{0};
-  std::vector<double> otherShare(coverage.texelCount(), 0.0), total(coverage.texelCount(), 0.0);
-  const auto start = std::chrono::steady_clock::now();
   StageProgress* progress = settings.progress;
 
   auto bakeTexel = [&](std::size_t texel) {
@@ -86,9 +80,8 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
           luminance(lights.triangles[light.first].radiance) * light.area * sumW / samples;
       estimates.push_back({static_cast<uint16_t>(l), e, sumVisible / sumW});
     }
-    rays += texelRays;
+    result.rays[texel] = static_cast<uint32_t>(texelRays);
     if (estimates.empty()) return;
-    ++reached;
     std::stable_sort(
         estimates.begin(), estimates.end(),
         [](const LightEstimate& a, const LightEstimate& b) { return a.irradiance > b.irradiance; });
@@ -101,9 +94,8 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
     }
     double all = 0.0;
     for (const LightEstimate& e : estimates) all += e.irradiance;
-    total[texel] = all;
+    result.irradiance[texel] = all;
     if (named < estimates.size()) {
-      ++over;
       double rest = 0.0, restVisible = 0.0;
       for (std::size_t s = named; s < estimates.size(); ++s) {
         rest += estimates[s].irradiance;
@@ -112,32 +104,52 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel&
       record.light[kVisibilitySlots - 1] = kOtherLights;
       record.visible[kVisibilitySlots - 1] =
           static_cast<float>(std::clamp(restVisible / rest, 0.0, 1.0));
-      otherShare[texel] = rest;
+      result.otherIrradiance[texel] = rest;
     }
   };
 
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, coverage.height, 1),
-                      [&](const tbb::blocked_range<int>& range) {
-                        const DenormalsFlushed flushed;
-                        for (int y = range.begin(); y != range.end(); ++y) {
-                          if (progress && progress->cancelled()) return;
-                          for (int x = 0; x < coverage.width; ++x)
-                            bakeTexel(static_cast<std::size_t>(y) * coverage.width + x);
-                          if (progress) progress->advance(1);
-                        }
-                      });
+    forEachTileRow(
+        settings.work, coverage.width, coverage.height,
+        [&](int y, int x0, int x1) {
+          for (int x = x0; x < x1; ++x) bakeTexel(static_cast<std::size_t>(y) * coverage.width + x);
+          if (progress) progress->advance(1);
+        },
+        [&](uint32_t tile) {
+          if (settings.tileDone) settings.tileDone(tile, result);
+        },
+        [&] { return progress && progress->cancelled(); });
   });
   if (progress) progress->throwIfCancelled();
-  report.rays = rays;
-  report.texelsWithLight = reached;
-  report.texelsOverSlots = over;
-  const double all = std::accumulate(total.begin(), total.end(), 0.0);
+  return result;
+}
+
+VisibilityBakeReport summariseVisibility(const VisibilityTexels& texels) {
+  VisibilityBakeReport report;
+  report.lights = texels.map.lightCount;
+  for (const uint32_t r : texels.rays) report.rays += r;
+  for (const TexelVisibility& record : texels.map.texels) {
+    report.texelsWithLight += record.light[0] != kNoLight ? 1 : 0;
+    report.texelsOverSlots += record.light[kVisibilitySlots - 1] == kOtherLights ? 1 : 0;
+  }
+  const double all = std::accumulate(texels.irradiance.begin(), texels.irradiance.end(), 0.0);
   report.otherLightsShare =
-      all > 0.0 ? std::accumulate(otherShare.begin(), otherShare.end(), 0.0) / all : 0.0;
+      all > 0.0
+          ? std::accumulate(texels.otherIrradiance.begin(), texels.otherIrradiance.end(), 0.0) / all
+          : 0.0;
+  return report;
+}
+
+BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
+                                    const TexelCoverage& coverage,
+                                    const VisibilityBakeSettings& settings,
+                                    VisibilityBakeReport& report) {
+  const auto start = std::chrono::steady_clock::now();
+  VisibilityTexels texels = bakeVisibilityTexels(lights, kernel, coverage, settings);
+  report = summariseVisibility(texels);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
+  return std::move(texels.map);
 }
 
 void fillVisibility(BakedVisibility& visibility, std::vector<uint8_t> filled,

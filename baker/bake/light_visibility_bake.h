@@ -9,20 +9,25 @@
 // unshadowed E_l ≈ lum(L_l)·A_l·Σ w_k / M ranks the lights for the texel's slots.
 //
 // Each texel is computed from its own keys (seed, texel, light): the result does not depend on
-// the thread count. Texels without sample points (uncovered padding, or invalid after the leak
-// guard) take a neighbour's record (fillVisibility), as the lightmap dilates.
+// the thread count, nor on the tiles the work is cut into (tile_work.h). Texels without sample
+// points (uncovered padding, or invalid after the leak guard) take a neighbour's record
+// (fillVisibility), as the lightmap dilates.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "bake/light_visibility.h"
 #include "bake/texel_coverage.h"
+#include "bake/tile_work.h"
 #include "ray/ray_kernel.h"
 #include "scene/area_lights.h"
 #include "trace/stage_progress.h"
 
 namespace bounce {
+
+struct VisibilityTexels;
 
 struct VisibilityBakeSettings {
   bool enabled = true;       // bake it when the scene has static area lights
@@ -32,6 +37,20 @@ struct VisibilityBakeSettings {
   // Rows of texels done (total: the coverage's rows) and whether to stop, as for the
   // irradiance (texel_irradiance.h); null: neither.
   StageProgress* progress = nullptr;
+  // The tiles to compute (all texels by default); the others keep the empty record.
+  TileWork work;
+  // Called with each tile of `work` once its texels are in `out`, as for the irradiance
+  // (texel_irradiance.h); may be empty.
+  std::function<void(uint32_t tile, const VisibilityTexels& out)> tileDone;
+};
+
+// What the stage computes, per texel: the map, and what its report is summed from.
+struct VisibilityTexels {
+  BakedVisibility map;
+  std::vector<uint32_t> rays;  // occlusion rays traced
+  // Σ of the unshadowed irradiance estimates of the lights that reach the texel (luminance,
+  // W/m²), and the part of it the kOtherLights slot holds.
+  std::vector<double> irradiance, otherIrradiance;
 };
 
 struct VisibilityBakeReport {
@@ -44,6 +63,14 @@ struct VisibilityBakeReport {
 };
 
 // `lights` must hold the static lights first (scene/area_lights.h); only those are baked.
+VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKernel& kernel,
+                                      const TexelCoverage& coverage,
+                                      const VisibilityBakeSettings& settings);
+
+// The report's counts from the texels, whichever tiles computed them (seconds left 0).
+VisibilityBakeReport summariseVisibility(const VisibilityTexels& texels);
+
+// Every tile at once: the map, with its report.
 BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
                                     const TexelCoverage& coverage,
                                     const VisibilityBakeSettings& settings,

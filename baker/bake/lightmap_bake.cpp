@@ -5,6 +5,8 @@
 
 #include "bake/lightmap_filters.h"
 #include "bake/texel_coverage.h"
+#include "bake/tile_grid.h"
+#include "scene/load_error.h"
 #include "trace/sampling.h"
 #include "trace/stopwatch.h"
 
@@ -58,14 +60,64 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.seconds.leakGuard = clock.lap();
   step.reset();
 
-  step = stage(kStageIrradiance, static_cast<uint64_t>(coverage.height));
+  // The tiles with work, this bake's share of them, and those earlier runs finished.
+  const LightmapTiles& tiling = settings.tiles;
+  const TileGrid grid(layout.width, layout.height, tiling.size);
+  const std::vector<uint32_t> byCost = tilesByCost(grid, coverage);
+  const std::vector<uint32_t> mine =
+      tiling.shards > 1 ? shardTiles(byCost, tiling.shard, tiling.shards) : byCost;
+  bake.tiles = static_cast<uint32_t>(byCost.size());
+  bake.partial = tiling.shards > 1;
+  std::vector<uint8_t> hasWork(grid.count(), 0);
+  for (const uint32_t t : byCost) hasWork[t] = 1;
+  std::vector<const TileRecord*> restored[2];  // by stage, then tile
+  for (std::vector<const TileRecord*>& r : restored) r.assign(grid.count(), nullptr);
+  for (const TileRecord& record : tiling.restored) {
+    if (record.tile >= grid.count() || !hasWork[record.tile])
+      throw LoadError(record.source, "holds tile " + std::to_string(record.tile) +
+                                         ", which is not one of this bake's " +
+                                         std::to_string(byCost.size()) + " tiles with work");
+    const TileRecord*& slot = restored[static_cast<int>(record.stage) - 1][record.tile];
+    if (slot && slot->bytes != record.bytes)
+      throw LoadError(record.source, "holds tile " + std::to_string(record.tile) + " twice, " +
+                                         "with different texels (also in " + slot->source.string() +
+                                         ")");
+    slot = &record;
+  }
+  // This bake's tiles of `stage` that no earlier run finished, in cost order.
+  const auto todo = [&](TileStage of) {
+    std::vector<uint32_t> left;
+    for (const uint32_t t : mine)
+      if (!restored[static_cast<int>(of) - 1][t]) left.push_back(t);
+    if (!left.empty() && !tiling.computeMissing)
+      throw MissingTiles(std::to_string(left.size()) + " of the " + std::to_string(mine.size()) +
+                         " tiles of the " +
+                         (of == TileStage::Irradiance ? "irradiance" : "visibility") +
+                         " are in no part (tile " + std::to_string(left.front()) + " first)");
+    return left;
+  };
+  const auto journal = [&](TileStage of, uint32_t tile, std::vector<unsigned char> bytes) {
+    if (tiling.finished) tiling.finished(TileRecord{of, tile, std::move(bytes), {}});
+  };
+
   IrradianceSettings irradiance = settings.irradiance;
+  irradiance.work = {&grid, todo(TileStage::Irradiance)};
+  bake.tilesRestored = static_cast<uint32_t>(mine.size() - irradiance.work.tiles.size());
+  irradiance.tileDone = [&](uint32_t tile, const TexelIrradiance& out) {
+    journal(TileStage::Irradiance, tile, encodeIrradianceTile(out, coverage, grid.rect(tile)));
+  };
+  step = stage(kStageIrradiance, tileRows(irradiance.work, coverage.height));
   irradiance.progress = step.get();
   TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, irradiance);
+  for (const TileRecord* record : restored[0])
+    if (record)
+      decodeIrradianceTile(record->source, record->bytes, coverage, grid.rect(record->tile),
+                           gathered);
+  gathered.summarise();
   bake.irradiance = std::move(gathered.irradiance);
   bake.samples = std::move(gathered.samples);
   bake.relativeError = std::move(gathered.relativeError);
-  bake.rays = guard.rays + gathered.rays;
+  bake.rays = guard.rays + gathered.totalRays;
   bake.totalSamples = gathered.totalSamples;
   bake.nonFiniteSamples = gathered.nonFiniteSamples;
   bake.seconds.irradiance = clock.lap();
@@ -77,17 +129,30 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     VisibilityBakeSettings visibility = settings.visibility;
     visibility.seed = settings.irradiance.seed;
     visibility.threads = settings.irradiance.threads;
-    step = stage(kStageVisibility, static_cast<uint64_t>(coverage.height));
+    visibility.work = {&grid, todo(TileStage::Visibility)};
+    visibility.tileDone = [&](uint32_t tile, const VisibilityTexels& out) {
+      journal(TileStage::Visibility, tile, encodeVisibilityTile(out, coverage, grid.rect(tile)));
+    };
+    step = stage(kStageVisibility, tileRows(visibility.work, coverage.height));
     visibility.progress = step.get();
-    bake.visibility =
-        bakeLightVisibility(lights, kernel, coverage, visibility, bake.visibilityReport);
+    VisibilityTexels computed = bakeVisibilityTexels(lights, kernel, coverage, visibility);
+    for (const TileRecord* record : restored[1])
+      if (record)
+        decodeVisibilityTile(record->source, record->bytes, coverage, grid.rect(record->tile),
+                             computed);
+    bake.visibilityReport = summariseVisibility(computed);
+    bake.visibility = std::move(computed.map);
     bake.rays += bake.visibilityReport.rays;
-    std::vector<uint8_t> filled(texels, 0);
-    for (std::size_t t = 0; t < texels; ++t) filled[t] = coverage.covered(t) ? 1 : 0;
-    fillVisibility(*bake.visibility, filled, &labels);
+    if (!bake.partial) {
+      std::vector<uint8_t> filled(texels, 0);
+      for (std::size_t t = 0; t < texels; ++t) filled[t] = coverage.covered(t) ? 1 : 0;
+      fillVisibility(*bake.visibility, filled, &labels);
+    }
   }
-  bake.seconds.visibility = clock.lap();
+  bake.seconds.visibility = bake.visibilityReport.seconds = clock.lap();
   step.reset();
+  // A shard's part holds its tiles only: the filters need the whole map (the merge runs them).
+  if (bake.partial) return bake;
   step = stage(kStageFilters, 1);
 
   std::vector<uint8_t> valid(texels, 0);

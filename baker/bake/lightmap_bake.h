@@ -1,16 +1,21 @@
 // The bake, one plain function running its steps in order: texel coverage → leak guard →
 // irradiance → static area lights' visibility → denoise (optional) → fill invalid texels and dilate
-// into the padding → seam stitching. GL-free; bounce-bake and the tests call it.
+// into the padding → seam stitching. The irradiance and the visibility are computed tile by tile
+// (tile_grid.h): tiles a journal holds are restored instead, and a shard computes its share and
+// stops there. GL-free; bounce-bake and the tests call it.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "bake/leak_guard.h"
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_layout.h"
 #include "bake/texel_irradiance.h"
+#include "bake/tile_payload.h"
 #include "image/image.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
@@ -26,6 +31,20 @@ inline constexpr char kStageIrradiance[] = "irradiance";
 inline constexpr char kStageVisibility[] = "light visibility";
 inline constexpr char kStageFilters[] = "denoise, dilate, stitch";
 
+// How the texel stages' tiles are shared out (tile_grid.h). The defaults compute every tile.
+struct LightmapTiles {
+  int size = kDefaultTileSize;  // texels on a side
+  int shard = 0, shards = 1;    // compute only shard `shard` (0-based) of `shards`'s tiles
+  // Finished tiles of earlier runs (a journal, or every shard's): restored, not computed. A
+  // tile that is not the bake's, or bytes that do not fit it, throw LoadError naming the source.
+  std::vector<TileRecord> restored;
+  // false: a tile this bake would have to compute is an error (a merge, which only gathers).
+  bool computeMissing = true;
+  // Told of each tile computed here, with its bytes, from the worker that finished it (several
+  // at once: it must lock what it shares); may be empty.
+  std::function<void(const TileRecord&)> finished;
+};
+
 struct LightmapBakeSettings {
   // Where the steps report (those of the plan's stages named above: each begun, counted and
   // finished there) and learn to stop (BakeCancelled); null: silent and never cancelled.
@@ -38,6 +57,7 @@ struct LightmapBakeSettings {
   bool denoise = false;
   bool stitch = true;
   bool dilate = true;
+  LightmapTiles tiles;
 };
 
 struct BakePhaseSeconds {
@@ -71,6 +91,16 @@ struct LightmapBake {
   // static area lights and settings.visibility.enabled.
   std::optional<BakedVisibility> visibility;
   VisibilityBakeReport visibilityReport;
+  // The tiles with work (covered texels), how many were restored rather than computed, and
+  // whether this is one shard's part only (then only the tile stages ran: the filters did not,
+  // and the texels of other shards' tiles are zero).
+  uint32_t tiles = 0, tilesRestored = 0;
+  bool partial = false;
+};
+
+// Thrown when a bake that may not compute (LightmapTiles::computeMissing false) lacks tiles.
+struct MissingTiles : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): at most 4096 samples per

@@ -4,12 +4,9 @@
 #include <chrono>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "trace/denormals_flushed.h"
 #include "trace/path_tracer.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"
@@ -37,11 +34,9 @@ class CountingRayKernel final : public RayKernel {
     return inner_.occluded(ray);
   }
   const char* name() const override { return inner_.name(); }
-  uint64_t count() const {
-    uint64_t sum = 0;
-    for (const uint64_t c : count_) sum += c;
-    return sum;
-  }
+  // Rays this thread has traced so far: a texel's rays are the difference across it, as each
+  // texel runs on one thread from start to end.
+  uint64_t countOnThisThread() const { return count_.local(); }
 
  private:
   const RayKernel& inner_;
@@ -88,7 +83,9 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   out.irradiance = Image(coverage.width, coverage.height);
   out.samples.assign(texels, 0);
   out.relativeError.assign(texels, 0.0f);
-  std::vector<uint32_t> nonFinite(texels, 0);
+  out.nonFinite.assign(texels, 0);
+  out.rays.assign(texels, 0);
+  std::vector<uint32_t>& nonFinite = out.nonFinite;
   const int maxSpp = std::max(settings.maxSpp, 1);
   const auto start = std::chrono::steady_clock::now();
   StageProgress* progress = settings.progress;
@@ -97,6 +94,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
     const uint32_t begin = coverage.first[texel];
     const uint32_t points = coverage.first[texel + 1] - begin;
     if (points == 0) return;
+    const uint64_t raysBefore = counting.countOnThisThread();
     SobolSampler sampler(settings.seed, static_cast<uint32_t>(texel));
     glm::dvec3 sum(0.0);
     double mean = 0.0, m2 = 0.0;  // Welford on luminance
@@ -139,31 +137,38 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
     }
     out.samples[texel] = n;
     out.irradiance.pixels[texel] = glm::vec3(sum / static_cast<double>(n));
+    out.rays[texel] = static_cast<uint32_t>(counting.countOnThisThread() - raysBefore);
   };
 
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, coverage.height, 1), [&](const tbb::blocked_range<int>& range) {
-          const DenormalsFlushed flushed;
-          for (int y = range.begin(); y != range.end(); ++y) {
-            if (progress && progress->cancelled()) return;
-            uint64_t rowSamples = 0;
-            for (int x = 0; x < coverage.width; ++x) {
-              const std::size_t texel = static_cast<std::size_t>(y) * coverage.width + x;
-              bakeTexel(texel);
-              rowSamples += out.samples[texel];
-            }
-            if (progress) progress->advance(1, rowSamples);
+    forEachTileRow(
+        settings.work, coverage.width, coverage.height,
+        [&](int y, int x0, int x1) {
+          uint64_t rowSamples = 0;
+          for (int x = x0; x < x1; ++x) {
+            const std::size_t texel = static_cast<std::size_t>(y) * coverage.width + x;
+            bakeTexel(texel);
+            rowSamples += out.samples[texel];
           }
-        });
+          if (progress) progress->advance(1, rowSamples);
+        },
+        [&](uint32_t tile) {
+          if (settings.tileDone) settings.tileDone(tile, out);
+        },
+        [&] { return progress && progress->cancelled(); });
   });
   if (progress) progress->throwIfCancelled();
-  for (const uint32_t s : out.samples) out.totalSamples += s;
-  for (const uint32_t n : nonFinite) out.nonFiniteSamples += n;
-  out.rays = counting.count();
+  out.summarise();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+void TexelIrradiance::summarise() {
+  totalRays = totalSamples = nonFiniteSamples = 0;
+  for (const uint32_t r : rays) totalRays += r;
+  for (const uint32_t n : samples) totalSamples += n;
+  for (const uint32_t n : nonFinite) nonFiniteSamples += n;
 }
 
 }  // namespace bounce

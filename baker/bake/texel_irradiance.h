@@ -11,14 +11,17 @@
 // The texel value is the mean over its samples, so it estimates the mean of E over the texel's
 // covered area. Samples are taken in batches of 16 until, from 32 samples on, the relative standard
 // error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is reached; a
-// texel whose samples are all zero stops after the first batch (error 0). Every texel is computed
-// by one task from its own pattern: the result does not depend on the thread count.
+// texel whose samples are all zero goes on to maxSpp. Every texel is computed by one task from
+// its own pattern: the result does not depend on the thread count, nor on the tiles the work is
+// cut into (tile_work.h).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "bake/texel_coverage.h"
+#include "bake/tile_work.h"
 #include "image/image.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
@@ -26,6 +29,8 @@
 #include "trace/stage_progress.h"
 
 namespace bounce {
+
+struct TexelIrradiance;
 
 struct IrradianceSettings {
   int maxSpp = 1024;         // samples per texel at most
@@ -36,6 +41,11 @@ struct IrradianceSettings {
   // Where the rows of texels done are counted (total: the coverage's rows), and whether to stop
   // (then BakeCancelled is thrown after the rows in flight); null: neither.
   StageProgress* progress = nullptr;
+  // The tiles to compute (all texels by default); the others are left zero.
+  TileWork work;
+  // Called with each tile of `work` once its texels are in `out`, from the worker that finished
+  // it (several at once: it must lock what it shares); may be empty.
+  std::function<void(uint32_t tile, const TexelIrradiance& out)> tileDone;
 };
 
 inline constexpr int kIrradianceBatch = 16;
@@ -47,12 +57,15 @@ struct TexelIrradiance {
   Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered
   std::vector<uint32_t> samples;     // per texel
   std::vector<float> relativeError;  // per texel, estimated relative standard error (0 uncovered)
-  uint64_t rays = 0;                 // closest-hit and occlusion rays traced
-  uint64_t totalSamples = 0;
-  // Samples whose estimate was non-finite (bad scene data) and counted as black: each biases
-  // its texel low (PathTracer::irradiance).
-  uint64_t nonFiniteSamples = 0;
+  // Per texel: samples whose estimate was non-finite (bad scene data) and counted as black (each
+  // biases its texel low, PathTracer::irradiance); closest-hit and occlusion rays traced.
+  std::vector<uint32_t> nonFinite, rays;
+  // Sums over every texel (summarise()).
+  uint64_t totalRays = 0, totalSamples = 0, nonFiniteSamples = 0;
   double seconds = 0.0;
+
+  // The sums from the per-texel counts, whichever tiles computed them.
+  void summarise();
 };
 
 TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geometry,

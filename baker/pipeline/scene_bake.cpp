@@ -10,6 +10,7 @@
 #include "bake/visibility_file.h"
 #include "bake/vpl_file.h"
 #include "pipeline/bake_memory.h"
+#include "pipeline/tile_journal.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
 #include "trace/stopwatch.h"
@@ -85,15 +86,19 @@ LightmapLayout staticLayout(const Scene& scene, LightmapLayout layout) {
 
 }  // namespace
 
-SceneBakeSettings::SceneBakeSettings() {
-  const LightmapBakeSettings defaults = defaultBakeSettings();
-  maxTexels = kDefaultMaxTexels;
-  spp = defaults.irradiance.maxSpp;
-  targetError = defaults.irradiance.targetError;
-  maxDepth = defaults.irradiance.maxDepth;
-  denoise = defaults.denoise;
-  vpls = VplSettings{}.maxVpls;
-  vplError = VplSettings{}.relativeError;
+nlohmann::json tileJournalKey(const Scene& scene, const SceneBakeSettings& settings, int atlasWidth,
+                              int atlasHeight) {
+  nlohmann::json key = bakeInputsJson(settings);
+  key["bakeFormat"] = kBakeFormatVersion;
+  key["tileJournalFormat"] = kTileJournalVersion;
+  key["sceneHash"] = sceneHash(scene).whole;
+  key["atlasWidth"] = atlasWidth;
+  key["atlasHeight"] = atlasHeight;
+  std::error_code ec;
+  const std::filesystem::path file = std::filesystem::absolute(scene.source, ec);
+  key["scene"] = (ec ? std::filesystem::path(scene.source) : file).string();
+  key["shard"] = std::to_string(settings.shard + 1) + "/" + std::to_string(settings.shards);
+  return key;
 }
 
 std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSettings& settings) {
@@ -101,6 +106,7 @@ std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSett
                                      kStageIrradiance};
   if (LightmapBakeSettings{}.visibility.enabled && sceneAreaLights(scene).staticCount() > 0)
     stages.push_back(kStageVisibility);
+  if (settings.shards > 1) return stages;  // the merge runs the rest
   stages.push_back(kStageFilters);
   if (settings.vpls > 0) stages.push_back(kStageVpls);
   return stages;
@@ -148,6 +154,38 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
 
   LightmapBakeSettings settings = defaultBakeSettings();
   settings.stages = &plan;
+  // The tiles: this bake's share, those a journal or the parts already hold, where new ones go.
+  LightmapTiles& tiles = settings.tiles;
+  tiles.size = o.tileSize;
+  tiles.shard = o.shard;
+  tiles.shards = o.shards;
+  const nlohmann::json key = tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height);
+  const auto restore = [&](TileJournal&& journal) {
+    for (TileRecord& record : journal.records) tiles.restored.push_back(std::move(record));
+  };
+  for (const std::filesystem::path& part : o.parts) {
+    TileJournal journal = readTileJournal(part);
+    checkTileJournalKey(part, journal.key, key, kTileKeyNotShared);
+    restore(std::move(journal));
+  }
+  if (!o.parts.empty()) tiles.computeMissing = false;
+  std::unique_ptr<TileJournalWriter> journal;
+  if (!o.journal.empty()) {
+    constexpr const char* kSceneOnly[] = {"scene"};
+    if (o.resume && std::filesystem::exists(o.journal)) {
+      TileJournal earlier = readTileJournal(o.journal);
+      checkTileJournalKey(o.journal, earlier.key, key, kSceneOnly);
+      if (earlier.droppedBytes > 0)
+        result.notes.push_back(o.journal.string() + ": its last " +
+                               std::to_string(earlier.droppedBytes) +
+                               " bytes were a tile cut short when the bake stopped: dropped");
+      journal = std::make_unique<TileJournalWriter>(o.journal, earlier);
+      restore(std::move(earlier));
+    } else {
+      journal = std::make_unique<TileJournalWriter>(o.journal, key);
+    }
+    tiles.finished = [&writer = *journal](const TileRecord& record) { writer.append(record); };
+  }
   settings.irradiance.maxSpp = o.spp;
   settings.irradiance.targetError = o.targetError;
   settings.irradiance.maxDepth = o.maxDepth;
@@ -157,6 +195,19 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   const LightmapBake bake =
       bakeLightmap(statics, geometry, *kernel, staticLayout(scene, atlas.layout), settings);
   lap.lap();  // the lightmap steps time themselves (bake.seconds)
+  result.tiles = bake.tiles;
+  result.tilesRestored = bake.tilesRestored;
+  if (o.resume && bake.tilesRestored > 0)
+    result.notes.push_back("resumed: " + std::to_string(bake.tilesRestored) + " of " +
+                           std::to_string(o.shards > 1
+                                              ? (bake.tiles + o.shards - 1 - o.shard) / o.shards
+                                              : bake.tiles) +
+                           " tiles were in " + o.journal.string());
+  if (bake.partial) {
+    result.partial = true;
+    result.measuredPeakBytes = peakResidentBytes();
+    return result;
+  }
   if (!bake.irradiance.allFinite())
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
 

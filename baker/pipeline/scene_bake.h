@@ -14,30 +14,12 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/bake_folder.h"
+#include "pipeline/scene_bake_settings.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "trace/stage_progress.h"
 
 namespace bounce {
-
-// bounce-bake's options, with its defaults (docs/baker.md).
-struct SceneBakeSettings {
-  float texelSize = 0.0f;  // m; 0: the density rule (atlas/texel_density.h)
-  int texelBudget = 0;     // texels instead of the rule; 0: the rule
-  int64_t maxTexels;       // cap (texel_density.h's default)
-  int spp;                 // most samples per texel
-  float targetError;       // relative standard error to stop a texel at; 0: always spp
-  int maxDepth;
-  uint32_t seed = 0;
-  int threads = 0;  // 0: all cores
-  RayBackend backend = RayBackend::Embree;
-  bool denoise;
-  int vpls;        // most VPLs; 0: none
-  float vplError;  // relative standard error of the total VPL flux to stop at
-  // Bytes the bake may take at its peak (bake_memory.h's estimate, after the atlas); 0: no limit.
-  double maxMemory = 0.0;
-  SceneBakeSettings();
-};
 
 // The estimate said the bake would go over SceneBakeSettings::maxMemory; nothing was baked.
 struct BakeOverMemoryBudget : std::runtime_error {
@@ -51,13 +33,28 @@ struct SceneBake {
   uint64_t coveredTexels = 0;
   double estimatedPeakBytes = 0.0;  // bake_memory.h, made after the atlas
   double measuredPeakBytes = 0.0;   // the process's peak resident set at the end
+  // The tiles with work, and how many were restored from a journal or parts, not computed.
+  uint32_t tiles = 0, tilesRestored = 0;
+  // A shard (settings.shards > 1): only its tiles were baked, into settings.journal; `folder`
+  // and `manifest` are empty (bounce-bake merge makes the folder from every shard's tiles).
+  bool partial = false;
 };
+
+// The key of this bake's tile journal (pipeline/tile_journal.h): everything a tile's bytes
+// depend on (formats, scene hash, the inputs, the atlas's size) and, apart from that, the scene
+// file and the shard, which a resume checks and a merge does not (kTileKeyNotShared).
+nlohmann::json tileJournalKey(const Scene& scene, const SceneBakeSettings& settings, int atlasWidth,
+                              int atlasHeight);
+inline constexpr const char* kTileKeyNotShared[] = {"scene", "shard"};
 
 // The stages bakeScene will run for this scene and settings, in order (its StagePlan).
 std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSettings& settings);
 
 // Throws BakeCancelled when `observer` cancels, std::runtime_error for a scene with nothing
-// static to bake. `observer` may be null.
+// static to bake, LoadError for a journal or part that is not this bake's, MissingTiles for a
+// merge that lacks tiles. `observer` may be null. With settings.journal, every tile finished
+// is appended there (after the restored ones when settings.resume); the caller removes the
+// journal once the folder is written.
 SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& settings,
                     BakeObserver* observer = nullptr);
 
