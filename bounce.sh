@@ -17,6 +17,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   clang libclang-rt-14-dev
+  libopenmpi-dev openmpi-bin
 )
 
 install_missing() {

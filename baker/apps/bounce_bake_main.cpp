@@ -11,6 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_merge.h"
+#ifdef BOUNCE_HAVE_MPI
+#include "bake_mpi.h"
+#endif
 #include "bake_progress_line.h"
 #include "bake_summary.h"
 #include "image/image_io.h"
@@ -36,6 +39,7 @@ struct Options {
   float exposure = 0.0f;
   std::string shard;  // "K/N"; empty: the whole bake
   bool resume = false;
+  bool mpi = false;
   bool progress = false;
   bool quiet = false;
 };
@@ -91,6 +95,16 @@ int run(Options o) {
       o.out.empty() ? std::filesystem::path(o.scene).replace_extension(".bake") : o.out;
   // Finished tiles go to a journal beside the folder until the folder is written (--resume).
   o.bake.journal = out.string() + ".journal";
+  if (o.mpi) {
+#ifdef BOUNCE_HAVE_MPI
+    return bounce::bakeOverMpi(scene, o.bake, {out, o.scene, o.png, o.exposure, loadSeconds, start},
+                               !o.quiet && (o.progress || bounce::stderrIsTerminal()));
+#else
+    throw std::runtime_error(
+        "--mpi: this bounce-bake was built without MPI (install libopenmpi-dev and rebuild); "
+        "--shard K/N and 'bounce-bake merge' spread a bake without it");
+#endif
+  }
   if (!o.resume && std::filesystem::exists(o.bake.journal))
     std::fprintf(stderr,
                  "bounce-bake: note: starting afresh: %s held the tiles of an unfinished bake "
@@ -186,6 +200,10 @@ int main(int argc, char** argv) {
                  "K/N: bake only the K-th of N shares of the tiles into the part file -o PART; "
                  "'bounce-bake merge PART_1 ... PART_N -o DIR' then writes the bake folder, the "
                  "same bytes as one process's bake");
+  app.add_flag("--mpi", o.mpi,
+               "one bake over every rank of 'mpirun -np N bounce-bake SCENE -o DIR --mpi': rank 0 "
+               "hands out tiles, costliest first, gathers them and writes the folder (the same "
+               "bytes as one process); every rank reads SCENE");
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);

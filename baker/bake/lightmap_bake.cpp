@@ -67,7 +67,8 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   const std::vector<uint32_t> mine =
       tiling.shards > 1 ? shardTiles(byCost, tiling.shard, tiling.shards) : byCost;
   bake.tiles = static_cast<uint32_t>(byCost.size());
-  bake.partial = tiling.shards > 1;
+  TileExchange* exchange = tiling.exchange;
+  bake.partial = tiling.shards > 1 || (exchange && !exchange->keeper());
   std::vector<uint8_t> hasWork(grid.count(), 0);
   for (const uint32_t t : byCost) hasWork[t] = 1;
   std::vector<const TileRecord*> restored[2];  // by stage, then tile
@@ -97,22 +98,47 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     return left;
   };
   const auto journal = [&](TileStage of, uint32_t tile, std::vector<unsigned char> bytes) {
-    if (tiling.finished) tiling.finished(TileRecord{of, tile, std::move(bytes), {}});
+    const TileRecord record{of, tile, std::move(bytes), {}};
+    if (exchange) exchange->finished(record);
+    if (tiling.finished) tiling.finished(record);
+  };
+  // With an exchange the stage's tiles are pulled from it, one at a time.
+  const auto share = [&](TileStage of, TileWork& work) {
+    if (!exchange) return;
+    exchange->open(of, work.tiles);
+    work.next = [exchange, of] { return exchange->next(of); };
+  };
+  // The tiles other processes computed (the keeper's), checked like restored ones and journalled.
+  const auto received = [&](TileStage of) {
+    std::vector<TileRecord> records;
+    if (exchange) records = exchange->gather(of);
+    for (const TileRecord& record : records) {
+      if (record.tile >= grid.count() || !hasWork[record.tile])
+        throw std::runtime_error("a process sent tile " + std::to_string(record.tile) +
+                                 ", which is not one of this bake's tiles");
+      if (tiling.finished) tiling.finished(record);
+    }
+    return records;
   };
 
   IrradianceSettings irradiance = settings.irradiance;
-  irradiance.work = {&grid, todo(TileStage::Irradiance)};
+  irradiance.work = {&grid, todo(TileStage::Irradiance), {}};
   bake.tilesRestored = static_cast<uint32_t>(mine.size() - irradiance.work.tiles.size());
   irradiance.tileDone = [&](uint32_t tile, const TexelIrradiance& out) {
     journal(TileStage::Irradiance, tile, encodeIrradianceTile(out, coverage, grid.rect(tile)));
   };
   step = stage(kStageIrradiance, tileRows(irradiance.work, coverage.height));
   irradiance.progress = step.get();
+  share(TileStage::Irradiance, irradiance.work);
   TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, irradiance);
   for (const TileRecord* record : restored[0])
     if (record)
       decodeIrradianceTile(record->source, record->bytes, coverage, grid.rect(record->tile),
                            gathered);
+  for (const TileRecord& record : received(TileStage::Irradiance)) {
+    decodeIrradianceTile(record.source, record.bytes, coverage, grid.rect(record.tile), gathered);
+    if (irradiance.progress) irradiance.progress->advance(grid.rect(record.tile).height());
+  }
   gathered.summarise();
   bake.irradiance = std::move(gathered.irradiance);
   bake.samples = std::move(gathered.samples);
@@ -129,17 +155,22 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     VisibilityBakeSettings visibility = settings.visibility;
     visibility.seed = settings.irradiance.seed;
     visibility.threads = settings.irradiance.threads;
-    visibility.work = {&grid, todo(TileStage::Visibility)};
+    visibility.work = {&grid, todo(TileStage::Visibility), {}};
     visibility.tileDone = [&](uint32_t tile, const VisibilityTexels& out) {
       journal(TileStage::Visibility, tile, encodeVisibilityTile(out, coverage, grid.rect(tile)));
     };
     step = stage(kStageVisibility, tileRows(visibility.work, coverage.height));
     visibility.progress = step.get();
+    share(TileStage::Visibility, visibility.work);
     VisibilityTexels computed = bakeVisibilityTexels(lights, kernel, coverage, visibility);
     for (const TileRecord* record : restored[1])
       if (record)
         decodeVisibilityTile(record->source, record->bytes, coverage, grid.rect(record->tile),
                              computed);
+    for (const TileRecord& record : received(TileStage::Visibility)) {
+      decodeVisibilityTile(record.source, record.bytes, coverage, grid.rect(record.tile), computed);
+      if (visibility.progress) visibility.progress->advance(grid.rect(record.tile).height());
+    }
     bake.visibilityReport = summariseVisibility(computed);
     bake.visibility = std::move(computed.map);
     bake.rays += bake.visibilityReport.rays;

@@ -15,6 +15,7 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_layout.h"
 #include "bake/texel_irradiance.h"
+#include "bake/tile_exchange.h"
 #include "bake/tile_payload.h"
 #include "image/image.h"
 #include "ray/ray_kernel.h"
@@ -43,6 +44,9 @@ struct LightmapTiles {
   // Told of each tile computed here, with its bytes, from the worker that finished it (several
   // at once: it must lock what it shares); may be empty.
   std::function<void(const TileRecord&)> finished;
+  // Tiles shared out among processes as they bake (tile_exchange.h); null: none. A process that
+  // is not the keeper stops after the tile stages, like a shard.
+  TileExchange* exchange = nullptr;
 };
 
 struct LightmapBakeSettings {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -22,6 +24,9 @@ struct TileWork {
   // The tiles to compute, handed out in this order; the other tiles' texels are left as they
   // are (zero). Ignored without a grid.
   std::vector<uint32_t> tiles;
+  // Instead of `tiles` when set: asked for the next tile after each one (one tile at a time,
+  // its rows in parallel), until it gives none (tile_exchange.h).
+  std::function<std::optional<uint32_t>()> next;
 };
 
 // Rows of texels in `work`'s tiles: the number a stage's progress counts to.
@@ -42,26 +47,35 @@ void forEachTileRow(const TileWork& work, int width, int height, Row texelRow, F
                     Cancelled cancelled) {
   const TileGrid image(width, height, std::max(width, height));
   const TileGrid& grid = work.grid ? *work.grid : image;
+  const auto doTile = [&](uint32_t tile) {
+    const TileRect r = grid.rect(tile);
+    std::atomic<bool> complete{true};
+    tbb::parallel_for(tbb::blocked_range<int>(r.y0, r.y1, 1),
+                      [&](const tbb::blocked_range<int>& rows) {
+                        const DenormalsFlushed flushed;
+                        for (int y = rows.begin(); y != rows.end(); ++y) {
+                          if (cancelled()) {
+                            complete = false;
+                            return;
+                          }
+                          texelRow(y, r.x0, r.x1);
+                        }
+                      });
+    if (complete) finished(tile);
+  };
+  if (work.grid && work.next) {
+    while (!cancelled()) {
+      const std::optional<uint32_t> tile = work.next();
+      if (!tile) break;
+      doTile(*tile);
+    }
+    return;
+  }
   const std::vector<uint32_t> one = {0};
   const std::vector<uint32_t>& tiles = work.grid ? work.tiles : one;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
                     [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        const TileRect r = grid.rect(tiles[i]);
-                        std::atomic<bool> complete{true};
-                        tbb::parallel_for(tbb::blocked_range<int>(r.y0, r.y1, 1),
-                                          [&](const tbb::blocked_range<int>& rows) {
-                                            const DenormalsFlushed flushed;
-                                            for (int y = rows.begin(); y != rows.end(); ++y) {
-                                              if (cancelled()) {
-                                                complete = false;
-                                                return;
-                                              }
-                                              texelRow(y, r.x0, r.x1);
-                                            }
-                                          });
-                        if (complete) finished(tiles[i]);
-                      }
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) doTile(tiles[i]);
                     });
 }
 

@@ -106,7 +106,8 @@ std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSett
                                      kStageIrradiance};
   if (LightmapBakeSettings{}.visibility.enabled && sceneAreaLights(scene).staticCount() > 0)
     stages.push_back(kStageVisibility);
-  if (settings.shards > 1) return stages;  // the merge runs the rest
+  if (settings.shards > 1 || (settings.exchange && !settings.exchange->keeper()))
+    return stages;  // the merge, or the keeper, runs the rest
   stages.push_back(kStageFilters);
   if (settings.vpls > 0) stages.push_back(kStageVpls);
   return stages;
@@ -159,6 +160,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   tiles.size = o.tileSize;
   tiles.shard = o.shard;
   tiles.shards = o.shards;
+  tiles.exchange = o.exchange;
   const nlohmann::json key = tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height);
   const auto restore = [&](TileJournal&& journal) {
     for (TileRecord& record : journal.records) tiles.restored.push_back(std::move(record));

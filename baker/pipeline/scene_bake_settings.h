@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/tile_exchange.h"
 #include "bake/tile_grid.h"
 #include "ray/ray_kernel.h"
 
@@ -37,6 +38,9 @@ struct SceneBakeSettings {
   int shard = 0, shards = 1;      // bake only shard `shard` (0-based) of `shards`'s tiles
   // A merge: every tile comes from these shards' journals; none is computed.
   std::vector<std::filesystem::path> parts;
+  // Tiles shared out among processes as they bake (bake/tile_exchange.h, bounce-bake --mpi);
+  // null: none. A process that is not the keeper bakes its tiles only (SceneBake::partial).
+  TileExchange* exchange = nullptr;
   SceneBakeSettings();
 };
 

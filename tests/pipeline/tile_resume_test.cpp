@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -206,6 +207,32 @@ TEST_F(TileBake, ShardsMergeToTheBytesOfOneProcess) {
       << mixed.output;
   EXPECT_FALSE(fs::exists(dir_ / "mixed.bake"));
 }
+
+#ifdef BOUNCE_MPIEXEC
+// mpirun -np 2 (oversubscribed, as root with OpenMPI's two variables): rank 0 and rank 1 both
+// compute tiles, and the folder is the one-process bake's bytes. Leak checks are off for it
+// (under the sanitizer preset): OpenMPI does not free what it allocates at start.
+TEST_F(TileBake, MpiRanksBakeTheBytesOfOneProcess) {
+  bakeWhole(dir_ / "whole.bake");
+  const test::ToolRun r = test::runCommand(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+      "OMPI_MCA_rmaps_base_oversubscribe=1 "
+      "LSAN_OPTIONS=detect_leaks=0 " BOUNCE_MPIEXEC " -np 2 " +
+          bakeCommand(dir_ / "mpi.bake", "--mpi"),
+      dir_ / "mpi.log");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  int rank0 = 0, rank1 = 0;
+  const std::size_t at = r.output.find("tiles computed by rank 0, 1, ...: ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  ASSERT_EQ(std::sscanf(r.output.c_str() + at, "tiles computed by rank 0, 1, ...: %d, %d", &rank0,
+                        &rank1),
+            2)
+      << r.output;
+  EXPECT_GT(rank0, 0) << r.output;
+  EXPECT_GT(rank1, 0) << r.output;
+  expectSameBake(dir_ / "whole.bake", dir_ / "mpi.bake", "mpirun -np 2");
+}
+#endif
 
 // In the library: 7-texel tiles on one thread and 64-texel tiles on all cores give the same
 // lightmap, error map and visibility bit for bit.
