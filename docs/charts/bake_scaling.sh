@@ -46,8 +46,8 @@ run() {  # name ranks threads command...
   echo "$name: $seconds s" >&2
 }
 run one 1 "$cores" "$bake"
-run np2_core_each 2 1 mpirun -np 2 "$bake" --mpi
-run np2_oversubscribed 2 "$cores" mpirun --oversubscribe -np 2 "$bake" --mpi
-run np4_oversubscribed 4 1 mpirun --oversubscribe -np 4 "$bake" --mpi
+run np2_core_each 2 1 mpirun --bind-to none -np 2 "$bake" --mpi
+run np2_oversubscribed 2 "$cores" mpirun --bind-to none --oversubscribe -np 2 "$bake" --mpi
+run np4_oversubscribed 4 1 mpirun --bind-to none --oversubscribe -np 4 "$bake" --mpi
 /usr/bin/python3 "$here/plot_bake_scaling.py" "$csv" "$out/bake_scaling.png"
 echo "wrote $csv and $out/bake_scaling.png" >&2

@@ -217,7 +217,7 @@ TEST_F(TileBake, MpiRanksBakeTheBytesOfOneProcess) {
   const test::ToolRun r = test::runCommand(
       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
       "OMPI_MCA_rmaps_base_oversubscribe=1 "
-      "LSAN_OPTIONS=detect_leaks=0 " BOUNCE_MPIEXEC " -np 2 " +
+      "LSAN_OPTIONS=detect_leaks=0 " BOUNCE_MPIEXEC " --bind-to none -np 2 " +
           bakeCommand(dir_ / "mpi.bake", "--mpi"),
       dir_ / "mpi.log");
   ASSERT_EQ(r.exitCode, 0) << r.output;
