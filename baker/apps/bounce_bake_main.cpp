@@ -9,7 +9,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
 #include "pipeline/bake_memory.h"
@@ -90,11 +89,10 @@ int run(Options o) {
   }
   for (const std::string& note : baked.notes)
     std::fprintf(stderr, "bounce-bake: note: %s\n", note.c_str());
-  nlohmann::json& manifest = baked.manifest;
-  manifest["seconds"]["load"] = loadSeconds;
-  manifest["seconds"]["total"] =
+  bounce::BakeManifest::Measured& measured = baked.folder.manifest.measured;
+  measured.seconds.load = loadSeconds;
+  measured.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  baked.folder.manifestJson = manifest.dump(1) + "\n";
   bounce::writeBake(out, baked.folder);
   if (!o.png.empty()) {
     // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
@@ -102,22 +100,20 @@ int run(Options o) {
     for (glm::vec3& p : radiance.pixels) p *= bounce::kInvPi;
     bounce::writePng(o.png, radiance, o.exposure);
   }
-  const nlohmann::json& atlas = manifest["atlas"];
-  const nlohmann::json& error = manifest["estimatedError"];
-  std::fprintf(
-      stderr,
-      "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
-      "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
-      "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
-      o.scene.filename().string().c_str(), atlas["width"].get<int>(), atlas["height"].get<int>(),
-      atlas["charts"].get<int>(), 100.0 * atlas["utilisation"].get<double>(),
-      atlas["texelSize"].get<double>(), static_cast<unsigned long long>(baked.coveredTexels),
-      manifest["samples"]["perTexelMean"].get<double>(), 100.0 * error["mean"].get<double>(),
-      100.0 * error["p95"].get<double>(), manifest["rays"]["perSecond"].get<double>() * 1e-6,
-      manifest["seconds"]["total"].get<double>(), manifest["seconds"]["irradiance"].get<double>(),
-      bounce::formatBytes(baked.measuredPeakBytes).c_str(),
-      bounce::formatBytes(baked.estimatedPeakBytes).c_str(), out.string().c_str());
-  const auto nonFinite = manifest["samples"]["nonFinite"].get<unsigned long long>();
+  const bounce::BakeManifest& manifest = baked.folder.manifest;
+  const bounce::BakeManifest::Atlas& atlas = manifest.atlas;
+  std::fprintf(stderr,
+               "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
+               "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
+               "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
+               o.scene.filename().string().c_str(), atlas.width, atlas.height, atlas.charts,
+               100.0 * atlas.utilisation, atlas.texelSize,
+               static_cast<unsigned long long>(baked.coveredTexels), manifest.samples.perTexelMean,
+               100.0 * manifest.estimatedError.mean, 100.0 * manifest.estimatedError.p95,
+               measured.raysPerSecond * 1e-6, measured.seconds.total, measured.seconds.irradiance,
+               bounce::formatBytes(baked.measuredPeakBytes).c_str(),
+               bounce::formatBytes(baked.estimatedPeakBytes).c_str(), out.string().c_str());
+  const auto nonFinite = static_cast<unsigned long long>(manifest.samples.nonFinite);
   if (nonFinite > 0)
     std::fprintf(stderr,
                  "bounce-bake: warning: %llu samples were non-finite (NaN or infinite scene data "
