@@ -309,10 +309,12 @@ std::optional<std::pair<std::string, std::string>> disagreement(const BakeManife
 std::map<std::string, std::vector<unsigned char>> readRecordedFiles(const fs::path& dir,
                                                                     const BakeManifest& m) {
   const fs::path manifestFile = dir / kManifestName;
-  for (const auto& [name, record] : m.files)
-    if (std::find_if(std::begin(kFolderFiles), std::end(kFolderFiles),
-                     [&](const char* known) { return name == known; }) == std::end(kFolderFiles))
-      throw LoadError(manifestFile, "\"files\" records \"" + name + "\", not a bake folder file");
+  for (const auto& record : m.files)
+    if (std::find_if(std::begin(kFolderFiles), std::end(kFolderFiles), [&](const char* known) {
+          return record.first == known;
+        }) == std::end(kFolderFiles))
+      throw LoadError(manifestFile,
+                      "\"files\" records \"" + record.first + "\", not a bake folder file");
   for (const char* required : {kLayoutName, kLightmapName})
     if (!m.files.contains(required))
       throw LoadError(manifestFile, std::string("\"files\" does not record ") + required);
