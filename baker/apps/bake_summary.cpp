@@ -11,11 +11,10 @@ namespace bounce {
 void writeBakeAndReport(SceneBake& baked, const BakeOutput& out) {
   for (const std::string& note : baked.notes)
     std::fprintf(stderr, "bounce-bake: note: %s\n", note.c_str());
-  nlohmann::json& manifest = baked.manifest;
-  manifest["seconds"]["load"] = out.loadSeconds;
-  manifest["seconds"]["total"] =
+  BakeManifest::Measured& measured = baked.folder.manifest.measured;
+  measured.seconds.load = out.loadSeconds;
+  measured.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - out.start).count();
-  baked.folder.manifestJson = manifest.dump(1) + "\n";
   writeBake(out.folder, baked.folder);
   if (!out.png.empty()) {
     // A white Lambertian surface's radiance E/π, tone-mapped: what the map looks like.
@@ -23,22 +22,20 @@ void writeBakeAndReport(SceneBake& baked, const BakeOutput& out) {
     for (glm::vec3& p : radiance.pixels) p *= kInvPi;
     writePng(out.png, radiance, out.exposure);
   }
-  const nlohmann::json& atlas = manifest["atlas"];
-  const nlohmann::json& error = manifest["estimatedError"];
-  std::fprintf(
-      stderr,
-      "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
-      "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
-      "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
-      out.scene.filename().string().c_str(), atlas["width"].get<int>(), atlas["height"].get<int>(),
-      atlas["charts"].get<int>(), 100.0 * atlas["utilisation"].get<double>(),
-      atlas["texelSize"].get<double>(), static_cast<unsigned long long>(baked.coveredTexels),
-      manifest["samples"]["perTexelMean"].get<double>(), 100.0 * error["mean"].get<double>(),
-      100.0 * error["p95"].get<double>(), manifest["rays"]["perSecond"].get<double>() * 1e-6,
-      manifest["seconds"]["total"].get<double>(), manifest["seconds"]["irradiance"].get<double>(),
-      formatBytes(baked.measuredPeakBytes).c_str(), formatBytes(baked.estimatedPeakBytes).c_str(),
-      out.folder.string().c_str());
-  const auto nonFinite = manifest["samples"]["nonFinite"].get<unsigned long long>();
+  const BakeManifest& manifest = baked.folder.manifest;
+  const BakeManifest::Atlas& atlas = manifest.atlas;
+  std::fprintf(stderr,
+               "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
+               "texels, %.0f spp mean, estimated error mean %.2f%% p95 %.2f%%, %.2f Mrays/s, "
+               "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
+               out.scene.filename().string().c_str(), atlas.width, atlas.height, atlas.charts,
+               100.0 * atlas.utilisation, atlas.texelSize,
+               static_cast<unsigned long long>(baked.coveredTexels), manifest.samples.perTexelMean,
+               100.0 * manifest.estimatedError.mean, 100.0 * manifest.estimatedError.p95,
+               measured.raysPerSecond * 1e-6, measured.seconds.total, measured.seconds.irradiance,
+               formatBytes(baked.measuredPeakBytes).c_str(),
+               formatBytes(baked.estimatedPeakBytes).c_str(), out.folder.string().c_str());
+  const auto nonFinite = static_cast<unsigned long long>(manifest.samples.nonFinite);
   if (nonFinite > 0)
     std::fprintf(stderr,
                  "bounce-bake: warning: %llu samples were non-finite (NaN or infinite scene data "

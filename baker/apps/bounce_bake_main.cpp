@@ -8,7 +8,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "bake_merge.h"
 #ifdef BOUNCE_HAVE_MPI

@@ -26,27 +26,21 @@ constexpr char kStageVpls[] = "VPLs";
 
 // bake.json's "vpls": what the vpls file holds (baker/vpl/vpl_generate.h, bake/vpl.h).
 // `area`: the static surface area the VPLs lie on, m².
-nlohmann::json vplManifest(const VplSet& set, double area, const SceneBakeSettings& o) {
-  const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.r, v.g, v.b}); };
-  nlohmann::json perBounce = nlohmann::json::array();
+BakeManifest::Vpls vplManifest(const VplSet& set, double area, const SceneBakeSettings& o) {
+  BakeManifest::Vpls m;
+  m.count = set.vpls.size();
+  m.paths = set.paths;
+  m.totalFlux = set.totalFlux();
   std::size_t last = 0;  // bounces after the deepest VPL are left out
   for (std::size_t k = 0; k < set.fluxPerBounce.size(); ++k)
     if (set.fluxPerBounce[k] != glm::dvec3(0.0)) last = k + 1;
-  for (std::size_t k = 0; k < last; ++k) perBounce.push_back(rgb(set.fluxPerBounce[k]));
-  return {{"file", kVplFileName},
-          {"count", set.vpls.size()},
-          {"paths", set.paths},
-          {"unit", "W"},
-          {"holds",
-           "indirect light only: one VPL per diffuse hit of a light path from the first bounce "
-           "on; flux already multiplied by the albedo of its surface; it adds "
-           "Phi/pi cos(theta_vpl) cos(theta_x) / d^2 rho_x/pi (docs/vpl.md)"},
-          {"totalFlux", rgb(set.totalFlux())},
-          {"fluxPerBounce", perBounce},
-          {"relativeError", set.relativeError},
-          {"errorTarget", o.vplError},
-          {"cap", o.vpls},
-          {"clampDistance", vplClampDistance(area, set.vpls.size())}};
+  m.fluxPerBounce.assign(set.fluxPerBounce.begin(),
+                         set.fluxPerBounce.begin() + static_cast<std::ptrdiff_t>(last));
+  m.relativeError = set.relativeError;
+  m.errorTarget = o.vplError;
+  m.cap = o.vpls;
+  m.clampDistance = vplClampDistance(area, set.vpls.size());
+  return m;
 }
 
 // The bake folder's error.exr: each texel's estimated relative standard error (before
@@ -57,18 +51,6 @@ Image errorMap(const LightmapBake& bake) {
   for (std::size_t t = 0; t < map.pixels.size(); ++t)
     if (bake.covered[t] && !bake.invalid[t]) map.pixels[t] = glm::vec3(bake.relativeError[t]);
   return map;
-}
-
-// FNV-1a (64 bit) of the settings that change the lightmap, hex.
-std::string settingsHash(const nlohmann::json& settings) {
-  uint64_t h = 14695981039346656037ull;
-  for (const unsigned char c : settings.dump()) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
 }
 
 // `layout` (instance indices into `scene`) renumbered for staticScene(scene), which keeps the
@@ -229,12 +211,14 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     stage.reset();
   }
   const double vplSeconds = lap.lap();
+  // bake.json (bake/bake_manifest.h): what was baked and how; run-dependent figures under
+  // `measured` only.
+  BakeManifest& manifest = result.folder.manifest;
   // What the map holds: every light's indirect light; direct light only of baked-only lights.
-  nlohmann::json bakedDirect = nlohmann::json::array();
   for (const Light& light : scene.lights)
-    if (light.bakeDirect) bakedDirect.push_back(light.name);
+    if (light.bakeDirect) manifest.directBaked.push_back(light.name);
   for (const Material& material : scene.materials)
-    if (material.bakeDirect && material.isEmissive()) bakedDirect.push_back(material.name);
+    if (material.bakeDirect && material.isEmissive()) manifest.directBaked.push_back(material.name);
   uint32_t fewest = 0xffffffffu, most = 0;
   for (std::size_t t = 0; t < bake.samples.size(); ++t) {
     if (!bake.covered[t] || bake.invalid[t]) continue;
@@ -242,119 +226,86 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     most = std::max(most, bake.samples[t]);
   }
   const uint64_t valid = bake.coveredTexels - bake.invalidTexels;
-  const nlohmann::json settingsJson = {{"texelSize", atlas.layout.texelSize},
-                                       {"texelBudget", o.texelSize > 0 ? 0 : o.texelBudget},
-                                       {"maxTexels", o.maxTexels},
-                                       {"maxSpp", o.spp},
-                                       {"targetError", o.targetError},
-                                       {"maxDepth", o.maxDepth},
-                                       {"seed", o.seed},
-                                       {"denoise", settings.denoise},
-                                       {"pointsPerTexel", settings.pointsPerTexel},
-                                       {"vpls", o.vpls},
-                                       {"vplError", o.vplError}};
-  const double totalSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  BakeManifest::Settings& s = manifest.settings;
+  s.texelSize = atlas.layout.texelSize;
+  s.texelBudget = o.texelSize > 0 ? 0 : o.texelBudget;
+  s.maxTexels = o.maxTexels;
+  s.maxSpp = o.spp;
+  s.targetError = o.targetError;
+  s.maxDepth = o.maxDepth;
+  s.seed = o.seed;
+  s.denoise = settings.denoise;
+  s.pointsPerTexel = settings.pointsPerTexel;
+  s.vpls = o.vpls;
+  s.vplError = o.vplError;
   // The whole hash decides; the parts let a stale bake say what changed (bake_folder.h).
   const SceneHash hash = sceneHash(scene);
-  nlohmann::json sceneParts = nlohmann::json::object();
+  manifest.sceneHash = hash.whole;
   for (std::size_t i = 0; i < hash.parts.size(); ++i)
-    sceneParts[kScenePartNames[i]] = hash.parts[i];
-  nlohmann::json manifest = {
-      {"formatVersion", kBakeFormatVersion},
-      {"sceneHash", hash.whole},
-      {"sceneParts", sceneParts},
-      {"settingsHash", settingsHash(settingsJson)},
-      {"scene", std::filesystem::path(scene.source).filename().string()},
-      {"settings", settingsJson},
-      {"lightmap",
-       {{"quantity", "irradiance"},
-        {"unit", "W/m^2"},
-        {"holds",
-         "indirect light (two or more reflections counted at the viewer, i.e. light that "
-         "reflected at least once before reaching the texel) of every light and emitter, plus "
-         "the direct light of the baked-only lights listed in directBaked"},
-        {"indirect", "all"},
-        {"directBaked", bakedDirect}}},
-      {"atlas",
-       {{"width", atlas.layout.width},
-        {"height", atlas.layout.height},
-        {"texelSize", atlas.layout.texelSize},
-        {"texelRule", atlas.texelRule},
-        {"staticArea", atlas.staticArea},
-        {"weightedArea", atlas.weightedArea},
-        {"padding", atlas.layout.padding},
-        {"charts", atlas.layout.chartCount},
-        {"vplLitInstances", atlas.vplLitInstances.size()},
-        {"utilisation", atlas.layout.utilisation},
-        {"coveredTexels", bake.coveredTexels},
-        {"invalidTexels", bake.invalidTexels},
-        {"notes", atlas.notes}}},
-      {"samples",
-       {{"total", bake.totalSamples},
-        {"perTexelMean",
-         valid > 0 ? static_cast<double>(bake.totalSamples) / static_cast<double>(valid) : 0.0},
-        {"perTexelMin", valid > 0 ? fewest : 0},
-        {"perTexelMax", most},
-        {"nonFinite", bake.nonFiniteSamples}}},
-      {"estimatedError",
-       {{"what",
-         "relative standard error of each texel's irradiance (luminance), from its "
-         "sample variance; before denoising"},
-        {"file", "error.exr"},
-        {"mean", bake.meanRelativeError},
-        {"p95", bake.p95RelativeError},
-        {"target", o.targetError}}},
-      {"leaks",
-       {{"pointsInsideGeometry", bake.pointsInside},
-        {"pointsAcrossWalls", bake.pointsAcross},
-        {"invalidTexelsFilled", bake.invalidTexels}}},
-      {"seams", {{"count", bake.seams}, {"relativeMismatchAfterStitching", bake.seamMismatch}}},
-      {"rays",
-       {{"traced", bake.rays},
-        {"perSecond",
-         bake.seconds.leakGuard + bake.seconds.irradiance > 0
-             ? static_cast<double>(bake.rays) / (bake.seconds.leakGuard + bake.seconds.irradiance)
-             : 0.0},
-        {"backend", kernel->name()}}},
-      {"seconds",
-       {{"atlas", atlasSeconds},
-        {"rayKernel", kernelSeconds},
-        {"coverage", bake.seconds.coverage},
-        {"leakGuard", bake.seconds.leakGuard},
-        {"irradiance", bake.seconds.irradiance},
-        {"visibility", bake.seconds.visibility},
-        {"denoise", bake.seconds.denoise},
-        {"dilate", bake.seconds.dilate},
-        {"stitch", bake.seconds.stitch},
-        {"vpls", vplSeconds},
-        {"total", totalSeconds}}}};
-  if (o.vpls > 0) manifest["vpls"] = vplManifest(vpls, vplArea, o);
+    manifest.sceneParts[kScenePartNames[i]] = hash.parts[i];
+  manifest.settingsHash = settingsHash(s);
+  manifest.scene = std::filesystem::path(scene.source).filename().string();
+  BakeManifest::Atlas& a = manifest.atlas;
+  a.width = atlas.layout.width;
+  a.height = atlas.layout.height;
+  a.texelSize = atlas.layout.texelSize;
+  a.texelRule = atlas.texelRule;
+  a.staticArea = atlas.staticArea;
+  a.weightedArea = atlas.weightedArea;
+  a.padding = atlas.layout.padding;
+  a.charts = atlas.layout.chartCount;
+  a.regions = atlas.layout.instances.size();
+  a.vplLitInstances = atlas.vplLitInstances.size();
+  a.utilisation = atlas.layout.utilisation;
+  a.coveredTexels = bake.coveredTexels;
+  a.invalidTexels = bake.invalidTexels;
+  a.notes = atlas.notes;
+  manifest.samples = {
+      .total = bake.totalSamples,
+      .perTexelMin = valid > 0 ? fewest : 0,
+      .perTexelMax = most,
+      .nonFinite = bake.nonFiniteSamples,
+      .perTexelMean =
+          valid > 0 ? static_cast<double>(bake.totalSamples) / static_cast<double>(valid) : 0.0};
+  manifest.estimatedError = {
+      .mean = bake.meanRelativeError, .p95 = bake.p95RelativeError, .target = o.targetError};
+  manifest.leaks = {.pointsInsideGeometry = bake.pointsInside,
+                    .pointsAcrossWalls = bake.pointsAcross,
+                    .invalidTexelsFilled = bake.invalidTexels};
+  manifest.seams = {.count = bake.seams, .relativeMismatchAfterStitching = bake.seamMismatch};
+  manifest.rays = {.traced = bake.rays, .backend = kernel->name()};
+  if (o.vpls > 0) manifest.vpls = vplManifest(vpls, vplArea, o);
   if (bake.visibility) {
     const VisibilityBakeReport& v = bake.visibilityReport;
-    manifest["visibility"] = {
-        {"file", kVisibilityFileName},
-        {"what",
-         "per texel, the visible fraction V of each static area light's unshadowed irradiance "
-         "(bake/light_visibility.h); the renderer multiplies its exact polygon irradiance by it"},
-        {"lights", v.lights},
-        {"slotsPerTexel", kVisibilitySlots},
-        {"samplesPerLight", settings.visibility.samplesPerLight},
-        {"texelsReached", v.texelsWithLight},
-        {"texelsOverSlots", v.texelsOverSlots},
-        {"otherLightsShare", v.otherLightsShare},
-        {"rays", v.rays},
-        {"seconds", bake.seconds.visibility}};
+    manifest.visibility = BakeManifest::Visibility{
+        .lights = v.lights,
+        .slotsPerTexel = kVisibilitySlots,
+        .samplesPerLight = static_cast<uint64_t>(settings.visibility.samplesPerLight),
+        .texelsReached = v.texelsWithLight,
+        .texelsOverSlots = v.texelsOverSlots,
+        .rays = v.rays,
+        .otherLightsShare = v.otherLightsShare};
   }
 
   result.coveredTexels = bake.coveredTexels;
   result.measuredPeakBytes = peakResidentBytes();
-  manifest["memory"] = {{"estimatedPeak", result.estimatedPeakBytes},
-                        {"measuredPeak", result.measuredPeakBytes},
-                        {"unit", "bytes"},
-                        {"what",
-                         "resident set: estimated after the atlas (bake_memory.h), "
-                         "measured at the end (the process's peak)"}};
+  BakeManifest::Measured& measured = manifest.measured;
+  const double tracing = bake.seconds.leakGuard + bake.seconds.irradiance;
+  measured.raysPerSecond = tracing > 0 ? static_cast<double>(bake.rays) / tracing : 0.0;
+  measured.peakBytes = result.measuredPeakBytes;
+  measured.estimatedPeakBytes = result.estimatedPeakBytes;
+  measured.seconds = {
+      .atlas = atlasSeconds,
+      .rayKernel = kernelSeconds,
+      .coverage = bake.seconds.coverage,
+      .leakGuard = bake.seconds.leakGuard,
+      .irradiance = bake.seconds.irradiance,
+      .visibility = bake.seconds.visibility,
+      .denoise = bake.seconds.denoise,
+      .dilate = bake.seconds.dilate,
+      .stitch = bake.seconds.stitch,
+      .vpls = vplSeconds,
+      .total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
   if (bake.visibility && bake.visibilityReport.texelsOverSlots > 0)
     result.notes.push_back(
         std::to_string(bake.visibilityReport.texelsOverSlots) + " of " +
@@ -369,8 +320,6 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   if (o.vpls > 0) result.folder.vpls = vpls.vpls;
   result.folder.visibility = bake.visibility;
   result.folder.relativeError = errorMap(bake);
-  result.folder.manifestJson = manifest.dump(1) + "\n";
-  result.manifest = std::move(manifest);
   return result;
 }
 

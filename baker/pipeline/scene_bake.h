@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 #include "pipeline/scene_bake_settings.h"
 #include "ray/ray_kernel.h"
@@ -27,8 +25,7 @@ struct BakeOverMemoryBudget : std::runtime_error {
 };
 
 struct SceneBake {
-  Bake folder;              // layout, lightmap, error map, VPLs, visibility; manifestJson set
-  nlohmann::json manifest;  // the same as folder.manifestJson, parsed
+  Bake folder;                     // layout, lightmap, error map, VPLs, visibility and the manifest
   std::vector<std::string> notes;  // the atlas's (e.g. the texel cap) and the visibility's
   uint64_t coveredTexels = 0;
   double estimatedPeakBytes = 0.0;  // bake_memory.h, made after the atlas

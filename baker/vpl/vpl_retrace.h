@@ -26,11 +26,11 @@
 namespace bounce {
 
 // The count rule a bake's VPLs were traced with, from its bake.json ("vpls": cap, errorTarget;
-// "settings": seed; a manifest without them gives VplSettings{}, bounce-bake's defaults), for a
-// bake that holds `bakeVplCount` VPLs. The cap is held to 2·bakeVplCount + kVplBatch: a re-trace
+// "settings": seed; a hand-made manifest leaves them 0: VplSettings{}, bounce-bake's defaults), for
+// a bake that holds `bakeVplCount` VPLs. The cap is held to 2·bakeVplCount + kVplBatch: a re-trace
 // makes about the bake's count (more only where paths now also bounce off the dynamic objects),
 // and a tampered cap must not make a move trace billions of paths.
-VplSettings vplSettingsOfBake(const std::string& manifestJson, std::size_t bakeVplCount);
+VplSettings vplSettingsOfBake(const BakeManifest& manifest, std::size_t bakeVplCount);
 
 class PlacedVplTracer {
  public:

@@ -4,19 +4,8 @@
 #include <cstdio>
 #include <system_error>
 
-#include <nlohmann/json.hpp>
-
 namespace bounce {
 namespace {
-
-std::optional<double> number(const nlohmann::json& j, const char* object, const char* field) {
-  if (!j.is_object()) return std::nullopt;
-  const auto o = j.find(object);
-  if (o == j.end() || !o->is_object()) return std::nullopt;
-  const auto f = o->find(field);
-  if (f == o->end() || !f->is_number()) return std::nullopt;
-  return f->get<double>();
-}
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
   char line[160];
@@ -35,14 +24,18 @@ BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
   f.vpls = bake.vpls ? bake.vpls->size() : 0;
   f.bakedAreaLights = bake.visibility ? bake.visibility->lightCount : 0;
   f.errorMap = bake.relativeError.has_value();
-  const nlohmann::json m = nlohmann::json::parse(bake.manifestJson, nullptr, false);
-  f.utilisation = number(m, "atlas", "utilisation");
-  if (const auto charts = number(m, "atlas", "charts")) f.charts = static_cast<long long>(*charts);
-  f.samplesPerTexel = number(m, "samples", "perTexelMean");
-  f.errorMean = number(m, "estimatedError", "mean");
-  f.errorP95 = number(m, "estimatedError", "p95");
-  f.errorTarget = number(m, "estimatedError", "target");
-  f.bakeSeconds = number(m, "seconds", "total");
+  // bounce-bake's manifests hash their settings; a hand-made one (tests, tools) records none of
+  // these figures, and zeros would be shown as if measured.
+  const BakeManifest& m = bake.manifest;
+  if (!m.settingsHash.empty()) {
+    f.utilisation = m.atlas.utilisation;
+    f.charts = m.atlas.charts;
+    f.samplesPerTexel = m.samples.perTexelMean;
+    f.errorMean = m.estimatedError.mean;
+    f.errorP95 = m.estimatedError.p95;
+    f.errorTarget = m.estimatedError.target;
+    f.bakeSeconds = m.measured.seconds.total;
+  }
   std::error_code error;
   const auto written = std::filesystem::last_write_time(dir / "bake.json", error);
   if (!dir.empty() && !error)

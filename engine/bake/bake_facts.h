@@ -1,7 +1,7 @@
 // What a bake is, in the lines the viewer's panel shows: its folder, atlas, texel size, samples,
 // estimated error, what it holds and its age. Read from the Bake (layout, VPLs, visibility) and
-// from bake.json where bounce-bake wrote the figure (a hand-made manifest may lack them: those
-// lines are then left out). GL-free.
+// from its manifest where bounce-bake wrote the figures (a hand-made manifest, without a
+// settingsHash, has none: those lines are then left out). GL-free.
 #pragma once
 
 #include <filesystem>

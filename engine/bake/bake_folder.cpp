@@ -4,25 +4,27 @@
 #include <stdio.h>  // renameat2, RENAME_EXCHANGE (glibc ≥ 2.28)
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_input_file.h"
+#include "bake/byte_stream.h"
 #include "bake/visibility_file.h"
 #include "bake/vpl_file.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/area_lights.h"
-#include "scene/gltf_schema.h"  // checkJsonDepth
 #include "scene/load_error.h"
 
 namespace bounce {
@@ -42,54 +44,6 @@ constexpr char kLayoutName[] = "layout.bin";
 // and nothing after the last instance.
 constexpr char kLayoutMagic[8] = {'B', 'N', 'C', 'L', 'M', 'L', 'A', 'Y'};
 
-// ---- little-endian byte stream for layout.bin
-class ByteWriter {
- public:
-  void u32(uint32_t v) {
-    for (int i = 0; i < 4; ++i) bytes_.push_back(static_cast<unsigned char>(v >> (8 * i)));
-  }
-  void i32(int32_t v) { u32(static_cast<uint32_t>(v)); }
-  void f32(float v) { u32(std::bit_cast<uint32_t>(v)); }
-  void raw(const char* data, std::size_t n) { bytes_.insert(bytes_.end(), data, data + n); }
-  const std::vector<unsigned char>& bytes() const { return bytes_; }
-
- private:
-  std::vector<unsigned char> bytes_;
-};
-
-class ByteReader {
- public:
-  ByteReader(const fs::path& file, std::vector<unsigned char> bytes)
-      : file_(file), bytes_(std::move(bytes)) {}
-  void need(std::size_t n, const char* what) const {
-    if (bytes_.size() - pos_ < n)
-      throw LoadError(file_, "truncated: " + std::to_string(bytes_.size()) + " bytes, " + what +
-                                 " needs " + std::to_string(n) + " more at byte " +
-                                 std::to_string(pos_));
-  }
-  uint32_t u32(const char* what) {
-    need(4, what);
-    uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(bytes_[pos_ + i]) << (8 * i);
-    pos_ += 4;
-    return v;
-  }
-  int32_t i32(const char* what) { return static_cast<int32_t>(u32(what)); }
-  float f32(const char* what) { return std::bit_cast<float>(u32(what)); }
-  bool matches(const char* data, std::size_t n) {
-    need(n, "the magic");
-    const bool same = std::memcmp(bytes_.data() + pos_, data, n) == 0;
-    pos_ += n;
-    return same;
-  }
-  std::size_t remaining() const { return bytes_.size() - pos_; }
-
- private:
-  fs::path file_;
-  std::vector<unsigned char> bytes_;
-  std::size_t pos_ = 0;
-};
-
 std::vector<unsigned char> encodeLayout(const LightmapLayout& layout) {
   ByteWriter w;
   w.raw(kLayoutMagic, sizeof kLayoutMagic);
@@ -106,11 +60,11 @@ std::vector<unsigned char> encodeLayout(const LightmapLayout& layout) {
     w.u32(static_cast<uint32_t>(region.cornerUv.size()));
     for (const glm::vec2& uv : region.cornerUv) w.f32(uv.x), w.f32(uv.y);
   }
-  return w.bytes();
+  return w.take();
 }
 
 LightmapLayout decodeLayout(const fs::path& file, std::vector<unsigned char> bytes) {
-  ByteReader r(file, std::move(bytes));
+  ByteReader r(file, bytes);
   if (!r.matches(kLayoutMagic, sizeof kLayoutMagic))
     throw LoadError(file, "bad magic: not a bounce lightmap layout");
   const uint32_t version = r.u32("the version");
@@ -144,7 +98,7 @@ LightmapLayout decodeLayout(const fs::path& file, std::vector<unsigned char> byt
 }
 
 // The layout must describe this scene: one region per static instance with triangles at most,
-// sorted, each with 3 corners per triangle, UVs finite.
+// sorted, each with 3 corners per triangle, UVs in [0, 1].
 void checkLayoutAgainstScene(const fs::path& file, const LightmapLayout& layout,
                              const Scene& scene) {
   if (layout.width <= 0 || layout.height <= 0 || layout.width > 65536 || layout.height > 65536)
@@ -168,54 +122,21 @@ void checkLayoutAgainstScene(const fs::path& file, const LightmapLayout& layout,
     if (region.cornerUv.size() != 3 * triangles)
       throw LoadError(file, which + " has " + std::to_string(region.cornerUv.size()) +
                                 " corner UVs, its mesh needs 3 × " + std::to_string(triangles));
+    // Atlas UVs lie in [0, 1]² (lightmap_layout.h); NaN fails both comparisons.
     for (const glm::vec2& uv : region.cornerUv)
-      if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
-        throw LoadError(file, which + " has a non-finite corner UV");
+      if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f))
+        throw LoadError(file, which + " has a corner UV (" + std::to_string(uv.x) + ", " +
+                                  std::to_string(uv.y) + ") outside [0, 1]");
   }
-}
-
-struct Manifest {
-  int formatVersion = 0;
-  std::string sceneHash;
-  // Optional, read only to explain a stale bake: the scene file's name ("scene") and the
-  // per-part hashes ("sceneParts", scene_hash.h), empty when absent or malformed.
-  std::string sceneFile;
-  std::map<std::string, std::string> sceneParts;
-};
-
-// Parses and checks the two fields every reader and writer relies on; `fail` builds the error.
-template <class Fail>
-Manifest parseManifest(const std::string& text, Fail fail) {
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    fail(std::string("not JSON: ") + e.what());
-  }
-  if (!json.is_object()) fail("not a JSON object");
-  Manifest m;
-  const auto version = json.find("formatVersion");
-  if (version == json.end() || !version->is_number_integer()) fail("no integer \"formatVersion\"");
-  m.formatVersion = version->get<int>();
-  const auto hash = json.find("sceneHash");
-  if (hash == json.end() || !hash->is_string()) fail("no string \"sceneHash\"");
-  m.sceneHash = hash->get<std::string>();
-  const auto file = json.find("scene");
-  if (file != json.end() && file->is_string()) m.sceneFile = file->get<std::string>();
-  const auto parts = json.find("sceneParts");
-  if (parts != json.end() && parts->is_object())
-    for (auto part = parts->begin(); part != parts->end(); ++part)
-      if (part->is_string()) m.sceneParts[part.key()] = part->get<std::string>();
-  return m;
 }
 
 // Why a bake whose scene hash differs from the scene's does not match it, as far as bake.json
 // and the files' times tell.
-std::string whyStale(const fs::path& manifestFile, const Manifest& m, const Scene& scene,
+std::string whyStale(const fs::path& manifestFile, const BakeManifest& m, const Scene& scene,
                      const SceneHash& now) {
   const std::string sceneName = fs::path(scene.source).filename().string();
-  if (!m.sceneFile.empty() && !sceneName.empty() && m.sceneFile != sceneName)
-    return "it was made for another scene, " + m.sceneFile;
+  if (!m.scene.empty() && !sceneName.empty() && m.scene != sceneName)
+    return "it was made for another scene, " + m.scene;
   std::error_code sceneError, bakeError;
   const auto sceneTime = fs::last_write_time(scene.source, sceneError);
   const auto bakeTime = fs::last_write_time(manifestFile, bakeError);
@@ -297,6 +218,94 @@ Image readLayoutExr(const fs::path& file, const LightmapLayout& layout) {
   return image;
 }
 
+// The files a bake folder may hold besides bake.json; bake.json records each one present.
+constexpr const char* kFolderFiles[] = {kLayoutName, kLightmapName, kErrorMapName, kVplFileName,
+                                        kVisibilityFileName};
+
+// What the manifest says must agree with the folder's files: the first disagreement as (file,
+// reason), or nullopt. Shared by the writer (a caller's bug) and the reader (a damaged folder).
+// The layout's part, checked as soon as layout.bin is read: the other files are sized by it.
+std::optional<std::string> layoutDisagreement(const BakeManifest& m, const LightmapLayout& layout) {
+  const auto size = [](auto w, auto h) { return std::to_string(w) + "x" + std::to_string(h); };
+  if (m.atlas.width != layout.width || m.atlas.height != layout.height)
+    return "is " + size(layout.width, layout.height) + ", bake.json's atlas is " +
+           size(m.atlas.width, m.atlas.height) + ": another bake's";
+  if (m.atlas.regions != layout.instances.size())
+    return "has " + std::to_string(layout.instances.size()) +
+           " instance regions, bake.json's atlas has " + std::to_string(m.atlas.regions);
+  return std::nullopt;
+}
+
+std::optional<std::pair<std::string, std::string>> disagreement(const BakeManifest& m,
+                                                                const Bake& bake) {
+  if (const auto why = layoutDisagreement(m, bake.layout)) return std::pair{kLayoutName, *why};
+  if (m.vpls.has_value() != bake.vpls.has_value())
+    return std::pair{kVplFileName, bake.vpls ? "present, but bake.json describes no VPLs"
+                                             : "missing, bake.json describes VPLs"};
+  if (bake.vpls && m.vpls->count != bake.vpls->size())
+    return std::pair{kVplFileName, "holds " + std::to_string(bake.vpls->size()) +
+                                       " VPLs, bake.json says " + std::to_string(m.vpls->count)};
+  if (m.visibility.has_value() != bake.visibility.has_value())
+    return std::pair{kVisibilityFileName, bake.visibility
+                                              ? "present, but bake.json describes no visibility"
+                                              : "missing, bake.json describes a visibility"};
+  if (bake.visibility && m.visibility->lights != bake.visibility->lightCount)
+    return std::pair{kVisibilityFileName, "holds " + std::to_string(bake.visibility->lightCount) +
+                                              " lights, bake.json says " +
+                                              std::to_string(m.visibility->lights)};
+  return std::nullopt;
+}
+
+// Every file bake.json records is there with its recorded size and hash, and every file of the
+// folder is recorded: a damaged, truncated, swapped or foreign file is refused before it is
+// parsed. Returns the files' bytes by name.
+std::map<std::string, std::vector<unsigned char>> readRecordedFiles(const fs::path& dir,
+                                                                    const BakeManifest& m) {
+  const fs::path manifestFile = dir / kManifestName;
+  for (const auto& record : m.files)
+    if (std::find_if(std::begin(kFolderFiles), std::end(kFolderFiles), [&](const char* known) {
+          return record.first == known;
+        }) == std::end(kFolderFiles))
+      throw LoadError(manifestFile,
+                      "\"files\" records \"" + record.first + "\", not a bake folder file");
+  for (const char* required : {kLayoutName, kLightmapName})
+    if (!m.files.contains(required))
+      throw LoadError(manifestFile, std::string("\"files\" does not record ") + required);
+  std::map<std::string, std::vector<unsigned char>> bytes;
+  for (const char* name : kFolderFiles) {
+    const fs::path file = dir / name;
+    const auto record = m.files.find(name);
+    if (record == m.files.end()) {
+      if (fs::exists(file))
+        throw LoadError(file, "not recorded in bake.json's \"files\": another bake's: rebake");
+      continue;
+    }
+    std::vector<unsigned char> content = readBakeInputFile(file);
+    if (content.size() != record->second.bytes)
+      throw LoadError(file, std::to_string(content.size()) + " bytes, bake.json records " +
+                                std::to_string(record->second.bytes) + ": damaged: rebake");
+    const std::string hash = fnv1a64Hex(content);
+    if (hash != record->second.hash)
+      throw LoadError(file, "its hash is " + hash + ", bake.json records " + record->second.hash +
+                                ": damaged or another bake's: rebake");
+    bytes[name] = std::move(content);
+  }
+  return bytes;
+}
+
+// Irradiance the renderer can draw: finite, non-negative, below kMaxBakeIrradiance.
+void checkIrradiance(const fs::path& file, const Image& irradiance) {
+  for (std::size_t i = 0; i < irradiance.pixels.size(); ++i) {
+    const glm::vec3 e = irradiance.pixels[i];
+    for (int c = 0; c < 3; ++c)
+      if (!(e[c] >= 0.0f && e[c] <= kMaxBakeIrradiance))
+        throw LoadError(file, "texel (" + std::to_string(i % irradiance.width) + ", " +
+                                  std::to_string(i / irradiance.width) + ") holds irradiance " +
+                                  std::to_string(e[c]) + " W/m^2, outside [0, " +
+                                  shortNumber(kMaxBakeIrradiance) + "]");
+  }
+}
+
 }  // namespace
 
 Bake readBake(const fs::path& dir, const Scene& scene) {
@@ -308,30 +317,27 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
   const fs::path manifestFile = dir / kManifestName;
   const std::vector<unsigned char> manifestBytes =
       readBakeInputFile(manifestFile, kMaxBakeManifestBytes);
-  bake.manifestJson.assign(manifestBytes.begin(), manifestBytes.end());
-  checkJsonDepth(manifestFile, bake.manifestJson);  // before the recursive parser
-  const Manifest manifest = parseManifest(
-      bake.manifestJson, [&](const std::string& why) { throw LoadError(manifestFile, why); });
-  if (manifest.formatVersion != kBakeFormatVersion)
-    throw LoadError(manifestFile, "format version " + std::to_string(manifest.formatVersion) +
-                                      ", this build reads version " +
-                                      std::to_string(kBakeFormatVersion) + ": rebake");
+  bake.manifest =
+      parseManifest(manifestFile, std::string(manifestBytes.begin(), manifestBytes.end()));
+  const BakeManifest& manifest = bake.manifest;
   const SceneHash hash = sceneHash(scene);
   if (manifest.sceneHash != hash.whole)
     throw LoadError(manifestFile, "stale bake: it does not match the scene (" +
                                       whyStale(manifestFile, manifest, scene, hash) +
                                       "): its scene hash is " + manifest.sceneHash + ", " +
                                       scene.source + " hashes to " + hash.whole + ": rebake");
+  std::map<std::string, std::vector<unsigned char>> files = readRecordedFiles(dir, manifest);
 
   const fs::path layoutFile = dir / kLayoutName;
-  bake.layout = decodeLayout(layoutFile, readBakeInputFile(layoutFile));
+  bake.layout = decodeLayout(layoutFile, std::move(files[kLayoutName]));
   checkLayoutAgainstScene(layoutFile, bake.layout, scene);
+  if (const auto why = layoutDisagreement(manifest, bake.layout)) throw LoadError(layoutFile, *why);
 
   const fs::path lightmapFile = dir / kLightmapName;
-  if (!fs::exists(lightmapFile)) throw LoadError(lightmapFile, "missing");
   bake.irradiance = readLayoutExr(lightmapFile, bake.layout);
+  checkIrradiance(lightmapFile, bake.irradiance);
   const fs::path errorFile = dir / kErrorMapName;
-  if (fs::exists(errorFile)) {
+  if (files.contains(kErrorMapName)) {
     bake.relativeError = readLayoutExr(errorFile, bake.layout);
     for (const glm::vec3& e : bake.relativeError->pixels)
       if (!(e.r == kNoErrorEstimate || (e.r >= 0.0f && e.r <= kMaxRelativeError)) || e.g != e.r ||
@@ -342,10 +348,10 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                        std::to_string(kMaxRelativeError) +
                                        "] in all three channels, or -1 for none");
   }
-  if (fs::exists(dir / kVplFileName)) bake.vpls = readVplFile(dir / kVplFileName);
+  if (files.contains(kVplFileName)) bake.vpls = decodeVpls(dir / kVplFileName, files[kVplFileName]);
   const fs::path visibilityFile = dir / kVisibilityFileName;
-  if (fs::exists(visibilityFile)) {
-    bake.visibility = readVisibilityFile(visibilityFile);
+  if (files.contains(kVisibilityFileName)) {
+    bake.visibility = decodeVisibility(visibilityFile, files[kVisibilityFileName]);
     if (bake.visibility->width != bake.layout.width ||
         bake.visibility->height != bake.layout.height)
       throw LoadError(visibilityFile, "is " + std::to_string(bake.visibility->width) + "x" +
@@ -359,6 +365,7 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                           " static area lights, " + scene.source + " has " +
                                           std::to_string(lights) + ": rebake");
   }
+  if (const auto why = disagreement(manifest, bake)) throw LoadError(dir / why->first, why->second);
   return bake;
 }
 
@@ -366,11 +373,10 @@ void writeBake(const fs::path& dir, const Bake& bake) {
   const auto fail = [&](const std::string& why) {
     throw std::runtime_error(dir.string() + ": " + why);
   };
-  const Manifest manifest =
-      parseManifest(bake.manifestJson, [&](const std::string& why) { fail("manifest " + why); });
-  if (manifest.formatVersion != kBakeFormatVersion)
-    fail("manifest formatVersion " + std::to_string(manifest.formatVersion) + " is not " +
+  if (bake.manifest.formatVersion != kBakeFormatVersion)
+    fail("manifest formatVersion " + std::to_string(bake.manifest.formatVersion) + " is not " +
          std::to_string(kBakeFormatVersion));
+  if (bake.manifest.sceneHash.empty()) fail("manifest has no sceneHash");
   if (bake.layout.width <= 0 || bake.layout.height <= 0 ||
       bake.irradiance.width != bake.layout.width || bake.irradiance.height != bake.layout.height ||
       bake.irradiance.pixels.size() != static_cast<std::size_t>(bake.irradiance.width) *
@@ -378,11 +384,12 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     fail("lightmap " + std::to_string(bake.irradiance.width) + "x" +
          std::to_string(bake.irradiance.height) + " does not match the layout's " +
          std::to_string(bake.layout.width) + "x" + std::to_string(bake.layout.height));
-
   if (bake.relativeError && (bake.relativeError->width != bake.layout.width ||
                              bake.relativeError->height != bake.layout.height))
     fail("error map " + std::to_string(bake.relativeError->width) + "x" +
          std::to_string(bake.relativeError->height) + " does not match the layout");
+  if (const auto why = disagreement(bake.manifest, bake))
+    fail("manifest disagrees with " + why->first + ": " + why->second);
 
   fs::path tmp = dir;
   tmp += ".tmp-" + std::to_string(::getpid());
@@ -397,7 +404,15 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     if (bake.vpls) writeVplFile(tmp / kVplFileName, *bake.vpls);
     if (bake.visibility) writeVisibilityFile(tmp / kVisibilityFileName, *bake.visibility);
     if (bake.relativeError) writeExr(tmp / kErrorMapName, *bake.relativeError);
-    const std::string& json = bake.manifestJson;
+    // The records are of the bytes on disk, read back, as readBake will see them.
+    BakeManifest manifest = bake.manifest;
+    manifest.files.clear();
+    for (const char* name : kFolderFiles)
+      if (fs::exists(tmp / name)) {
+        const std::vector<unsigned char> bytes = readBakeInputFile(tmp / name);
+        manifest.files[name] = {bytes.size(), fnv1a64Hex(bytes)};
+      }
+    const std::string json = manifestText(manifest);
     writeFileAtomically(tmp / kManifestName,
                         {reinterpret_cast<const unsigned char*>(json.data()), json.size()});
     replaceFolder(tmp, dir);

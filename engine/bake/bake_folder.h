@@ -1,10 +1,10 @@
 // The bake folder: what bounce-bake writes and the renderer reads, one versioned format with its
 // reader and writer here. GL-free.
 //
-//   <dir>/bake.json       manifest: format version, scene hash and its parts (scene_hash.h),
-//                         settings, what the map holds (indirect only, or direct too for
-//                         baked-only lights), atlas stats,
-//                         samples per texel, estimated error, time per phase
+//   <dir>/bake.json       the manifest (bake_manifest.h): format version, scene hash and its
+//                         parts (scene_hash.h), settings, atlas stats, samples, estimated error,
+//                         ..., the size and hash of every other file, and under "measured" what
+//                         varies from run to run (times, rays per second, peak memory)
 //   <dir>/lightmap.exr    irradiance E in W/m² per linear-RGB channel, one texel per atlas texel,
 //                         rows top first (see lightmap_layout.h)
 //   <dir>/layout.bin      the LightmapLayout (versioned binary)
@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/bake_manifest.h"
 #include "bake/light_visibility.h"
 #include "bake/lightmap_layout.h"
 #include "bake/scene_hash.h"
@@ -34,14 +35,13 @@
 
 namespace bounce {
 
-inline constexpr int kBakeFormatVersion = 1;
-
 struct Bake {
   LightmapLayout layout;
-  Image irradiance;          // W/m², layout.width × layout.height
-  std::string manifestJson;  // bake.json as written (the renderer reads what it needs from it)
-  // The VPLs (written to and read from <dir>/vpls when present; bake.json's "vpls" describes
-  // them).
+  Image irradiance;  // W/m², layout.width × layout.height
+  // bake.json; writeBake fills `files`. Its "atlas" size and "regions" are the layout's, its
+  // "vpls" and "visibility" are present exactly when those files are (and agree with them).
+  BakeManifest manifest;
+  // The VPLs (written to and read from <dir>/vpls when present).
   std::optional<std::vector<Vpl>> vpls;
   // The static area lights' baked visibility (<dir>/visibility.bin when present).
   std::optional<BakedVisibility> visibility;
@@ -53,16 +53,21 @@ struct Bake {
 inline constexpr float kNoErrorEstimate = -1.0f;
 inline constexpr float kMaxRelativeError = 1e6f;  // what a reader accepts
 
-// Reads <dir>; throws LoadError naming the file and the reason when a file is missing or
-// malformed, when the format version is not kBakeFormatVersion, or when the bake is stale: its
-// "sceneHash" differs from sceneContentHash(scene). A stale bake's message gives both hashes and
+// Reads <dir>; throws LoadError naming the folder or its file and the reason when a file is
+// missing or malformed, when the format version is not kBakeFormatVersion, when the bake is
+// stale (its "sceneHash" differs from sceneContentHash(scene); the message gives both hashes and
 // why, where bake.json tells: another scene file ("scene"), which parts changed ("sceneParts",
-// scene_hash.h), or a scene file modified after bake.json.
+// scene_hash.h), or a scene file modified after bake.json), when a file's size or hash is not
+// the one bake.json records (damaged, or another bake's), when a file disagrees with the
+// manifest (atlas size, regions, VPL count, visibility lights), and when a value is out of its
+// documented range (docs/bake_folder.md: irradiance finite in [0, kMaxBakeIrradiance], UVs in
+// [0, 1], VPL flux and positions).
 Bake readBake(const std::filesystem::path& dir, const Scene& scene);
 
-// Writes <dir> whole or not at all (see above). bake.manifestJson must be a JSON object holding
-// at least "formatVersion" (= kBakeFormatVersion) and "sceneHash"; throws std::runtime_error
-// naming the folder and the reason otherwise, or when a write fails.
+// Writes <dir> whole or not at all (see above), with bake.json's "files" set from the bytes
+// written. bake.manifest must hold formatVersion = kBakeFormatVersion, a sceneHash and agree with
+// the files as readBake requires; throws std::runtime_error naming the folder and the reason
+// otherwise, or when a write fails.
 void writeBake(const std::filesystem::path& dir, const Bake& bake);
 
 }  // namespace bounce

@@ -3,21 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 
 namespace bounce {
 
-float bakeErrorTarget(const std::string& manifestJson) {
-  const nlohmann::json manifest = nlohmann::json::parse(manifestJson, nullptr, false);
-  if (!manifest.is_object()) return kDefaultErrorTarget;
-  const auto error = manifest.find("estimatedError");
-  if (error == manifest.end() || !error->is_object()) return kDefaultErrorTarget;
-  const auto target = error->find("target");
-  if (target == error->end() || !target->is_number()) return kDefaultErrorTarget;
-  const double value = target->get<double>();
-  return std::isfinite(value) && value > 0.0 ? static_cast<float>(value) : kDefaultErrorTarget;
+float bakeErrorTarget(const BakeManifest& manifest) {
+  const double target = manifest.estimatedError.target;
+  return std::isfinite(target) && target > 0.0 ? static_cast<float>(target) : kDefaultErrorTarget;
 }
 
 glm::vec3 errorFalseColour(float relativeError, float target) {

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "bake/bake_manifest.h"
 #include "image/image.h"
 
 namespace bounce {
@@ -18,8 +19,8 @@ namespace bounce {
 inline constexpr float kDefaultErrorTarget = 0.1f;  // when bake.json does not give one
 
 // bake.json's "estimatedError"."target" (the relative error the bake aimed at), or
-// kDefaultErrorTarget where it is missing or not a positive number.
-float bakeErrorTarget(const std::string& manifestJson);
+// kDefaultErrorTarget where it is not a positive number (0 in a hand-made manifest).
+float bakeErrorTarget(const BakeManifest& manifest);
 
 glm::vec3 errorFalseColour(float relativeError, float target);
 

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include <nlohmann/json.hpp>
-
 namespace bounce {
 
 float vplClampDistance(double surfaceArea, std::size_t vplCount) {
@@ -35,16 +33,9 @@ double staticSurfaceArea(const Scene& scene) {
   return area;
 }
 
-std::optional<float> manifestVplClampDistance(const std::string& manifestJson) {
-  const nlohmann::json manifest = nlohmann::json::parse(manifestJson, nullptr, false);
-  if (!manifest.is_object()) return std::nullopt;
-  const auto vpls = manifest.find("vpls");
-  if (vpls == manifest.end() || !vpls->is_object()) return std::nullopt;
-  const auto r = vpls->find("clampDistance");
-  if (r == vpls->end() || !r->is_number()) return std::nullopt;
-  const double value = r->get<double>();
-  if (!std::isfinite(value) || value < 0.0) return std::nullopt;
-  return static_cast<float>(value);
+std::optional<float> manifestVplClampDistance(const BakeManifest& manifest) {
+  if (!manifest.vpls) return std::nullopt;
+  return static_cast<float>(manifest.vpls->clampDistance);
 }
 
 }  // namespace bounce

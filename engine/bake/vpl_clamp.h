@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "bake/bake_manifest.h"
 #include "scene/world_geometry.h"
 
 namespace bounce {
@@ -20,8 +21,8 @@ float vplClampDistance(double surfaceArea, std::size_t vplCount);
 double surfaceArea(const WorldGeometry& geometry);
 // Σ triangle areas of the static instances (the surfaces VPLs are generated on), m².
 double staticSurfaceArea(const Scene& scene);
-// bake.json's "vpls"."clampDistance" (m) when present, finite and ≥ 0; nullopt otherwise
-// (also for text that is not JSON).
-std::optional<float> manifestVplClampDistance(const std::string& manifestJson);
+// bake.json's "vpls"."clampDistance" (m; the reader keeps it in [0, kMaxBakeLength]), nullopt
+// when the manifest describes no VPLs.
+std::optional<float> manifestVplClampDistance(const BakeManifest& manifest);
 
 }  // namespace bounce

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bake/bake_input_file.h"
+#include "bake/bake_manifest.h"  // the ranges
 #include "image/atomic_file.h"
 #include "scene/load_error.h"
 
@@ -35,6 +36,11 @@ float getF32(std::span<const unsigned char> bytes, std::size_t at) {
 
 bool finite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Each coordinate finite and within ±limit (NaN fails the comparison).
+bool within(glm::vec3 v, float limit) {
+  return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
 }
 
 }  // namespace
@@ -87,12 +93,18 @@ std::vector<Vpl> decodeVpls(const std::filesystem::path& file,
     }
     v.path = getU32(bytes, at + 48);
     const std::string which = "VPL " + std::to_string(i) + ": ";
-    if (!finite(v.position)) throw LoadError(file, which + "position is not finite");
+    if (!within(v.position, kMaxBakeLength))
+      throw LoadError(
+          file, which + "position is not finite or beyond " + shortNumber(kMaxBakeLength) + " m");
     if (!finite(v.normal) || std::abs(glm::length(v.normal) - 1.0f) > 1e-3f)
       throw LoadError(file, which + "normal is not a unit vector");
-    if (!finite(v.flux) || v.flux.r < 0.0f || v.flux.g < 0.0f || v.flux.b < 0.0f)
+    if (!(finite(v.flux) && v.flux.r >= 0.0f && v.flux.g >= 0.0f && v.flux.b >= 0.0f))
       throw LoadError(file, which + "flux is negative or not finite");
-    if (!finite(v.from)) throw LoadError(file, which + "path segment start is not finite");
+    if (!(v.flux.r <= kMaxVplFlux && v.flux.g <= kMaxVplFlux && v.flux.b <= kMaxVplFlux))
+      throw LoadError(file, which + "flux is over " + shortNumber(kMaxVplFlux) + " W");
+    if (!within(v.from, kMaxBakeLength))
+      throw LoadError(file, which + "path segment start is not finite or beyond " +
+                                shortNumber(kMaxBakeLength) + " m");
     if (i > 0 && v.path < vpls[i - 1].path)
       throw LoadError(file, which + "path index " + std::to_string(v.path) +
                                 " is smaller than the previous VPL's " +

@@ -13,9 +13,9 @@
 //
 // Version 2 added `from` and the path index (bake/vpl.h); version 1 files are refused ("rebake").
 // The reader refuses (LoadError naming the file and the reason) a wrong magic or version, a
-// size that disagrees with N, a non-finite position or `from`, a normal not of unit length
-// (±1e-3), a flux that is negative or not finite, and a path index smaller than the previous
-// VPL's.
+// size that disagrees with N, a position or `from` not finite or beyond ±kMaxBakeLength m in a
+// coordinate, a normal not of unit length (±1e-3), a flux that is negative, not finite or over
+// kMaxVplFlux W (bake_manifest.h), and a path index smaller than the previous VPL's.
 #pragma once
 
 #include <filesystem>

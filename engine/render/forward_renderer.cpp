@@ -157,7 +157,7 @@ void ForwardRenderer::setBake(const Bake& bake) {
   p.lights.setBakedDirectInLightmap(true);
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {
-    const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifestJson);
+    const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifest);
     const float r = fromManifest ? *fromManifest
                                  : vplClampDistance(staticSurfaceArea(scene_), bake.vpls->size());
     // The grid covers the static surfaces (where the VPLs and most receivers are).

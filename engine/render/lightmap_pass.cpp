@@ -56,7 +56,7 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   if (bake.relativeError) {
     errorColours_.emplace(
         layout.width, layout.height,
-        errorFalseColourImage(*bake.relativeError, bakeErrorTarget(bake.manifestJson)).pixels,
+        errorFalseColourImage(*bake.relativeError, bakeErrorTarget(bake.manifest)).pixels,
         gl::Filter::Nearest, gl::Wrap::ClampToEdge);
     validityColours_.emplace(layout.width, layout.height,
                              texelValidityImage(*bake.relativeError, charts).pixels,

@@ -8,8 +8,6 @@
 #include <fstream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_facts.h"
 
 namespace bounce {
@@ -21,12 +19,12 @@ bool hasLine(const std::vector<std::string>& lines, const std::string& line) {
   return std::find(lines.begin(), lines.end(), line) != lines.end();
 }
 
-Bake bakeWithManifest(const nlohmann::json& manifest) {
+Bake bakeWithManifest(const BakeManifest& manifest) {
   Bake bake;
   bake.layout.width = 276;
   bake.layout.height = 72;
   bake.layout.texelSize = 0.01087f;
-  bake.manifestJson = manifest.dump();
+  bake.manifest = manifest;
   bake.vpls = std::vector<Vpl>(4095);
   return bake;
 }
@@ -34,14 +32,16 @@ Bake bakeWithManifest(const nlohmann::json& manifest) {
 TEST(BakeFacts, LinesGiveTheManifestsFiguresAndTheAge) {
   const fs::path dir = fs::temp_directory_path() / "bounce_bake_facts_test.bake";
   fs::create_directories(dir);
-  const nlohmann::json manifest = {
-      {"atlas", {{"utilisation", 0.849}, {"charts", 16}}},
-      {"samples", {{"perTexelMean", 219.4}}},
-      {"estimatedError", {{"mean", 0.0969}, {"p95", 0.0998}, {"target", 0.1}}},
-      {"seconds", {{"total", 4.71}}}};
+  BakeManifest manifest;
+  manifest.settingsHash = "0123456789abcdef";  // made by bounce-bake
+  manifest.atlas.utilisation = 0.849;
+  manifest.atlas.charts = 16;
+  manifest.samples.perTexelMean = 219.4;
+  manifest.estimatedError = {.mean = 0.0969, .p95 = 0.0998, .target = 0.1};
+  manifest.measured.seconds.total = 4.71;
   const Bake bake = bakeWithManifest(manifest);
   fs::path json = dir / "bake.json";
-  std::ofstream(json) << bake.manifestJson;
+  std::ofstream(json) << manifestText(bake.manifest);
   fs::last_write_time(json, fs::file_time_type::clock::now() - std::chrono::hours(3));
   const std::vector<std::string> lines = bakeFactLines(bakeFacts(bake, dir));
   EXPECT_TRUE(hasLine(lines, dir.string()));
@@ -56,7 +56,7 @@ TEST(BakeFacts, LinesGiveTheManifestsFiguresAndTheAge) {
 }
 
 TEST(BakeFacts, AHandMadeManifestLeavesItsFiguresOut) {
-  const Bake bake = bakeWithManifest({{"formatVersion", 1}});
+  const Bake bake = bakeWithManifest(BakeManifest{});
   const std::vector<std::string> lines = bakeFactLines(bakeFacts(bake, "/nowhere/x.bake"));
   EXPECT_TRUE(hasLine(lines, "atlas 276 x 72 texels"));
   for (const std::string& line : lines) {

@@ -82,11 +82,11 @@ Bake testBake(const Scene& scene) {
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 16; ++x)
       b.irradiance.at(x, y) = {x * 0.3f + 1e-30f, y * 123.456f, 1.0f / (1 + x + 7 * y)};
-  b.irradiance.at(0, 0) = {3.0e38f, 1.17549435e-38f, 0.0f};
-  nlohmann::json manifest = {{"formatVersion", kBakeFormatVersion},
-                             {"sceneHash", sceneContentHash(scene)},
-                             {"holds", "indirect"}};
-  b.manifestJson = manifest.dump(2);
+  b.irradiance.at(0, 0) = {kMaxBakeIrradiance, 1.17549435e-38f, 0.0f};  // the extremes
+  b.manifest.sceneHash = sceneContentHash(scene);
+  b.manifest.atlas.width = 16;
+  b.manifest.atlas.height = 8;
+  b.manifest.atlas.regions = 2;
   return b;
 }
 
@@ -108,6 +108,28 @@ void writeBytes(const fs::path& file, const std::vector<unsigned char>& bytes) {
             static_cast<std::streamsize>(bytes.size()));
 }
 
+BakeManifest readManifest(const fs::path& dir) {
+  const std::vector<unsigned char> text = readBytes(dir / "bake.json");
+  return parseManifest(dir / "bake.json", std::string(text.begin(), text.end()));
+}
+
+void writeManifest(const fs::path& dir, const BakeManifest& manifest) {
+  std::ofstream(dir / "bake.json", std::ios::trunc) << manifestText(manifest);
+}
+
+// Records every file's size and hash in bake.json again, as a forger would: the check under test
+// is then reached rather than the hash check that catches any edit first.
+void restamp(const fs::path& dir) {
+  BakeManifest manifest = readManifest(dir);
+  manifest.files.clear();
+  for (const char* name : {"layout.bin", "lightmap.exr", "error.exr", "vpls", "visibility.bin"})
+    if (fs::is_regular_file(dir / name)) {
+      const std::vector<unsigned char> bytes = readBytes(dir / name);
+      manifest.files[name] = {bytes.size(), fnv1a64Hex(bytes)};
+    }
+  writeManifest(dir, manifest);
+}
+
 // readBake's message, or "" when it succeeds.
 std::string readError(const fs::path& dir, const Scene& scene) {
   try {
@@ -123,7 +145,10 @@ bool bitEqual(float a, float b) {
 }
 
 void expectSameBake(const Bake& a, const Bake& b) {
-  EXPECT_EQ(a.manifestJson, b.manifestJson);
+  // The manifest round-trips whole; only its file records are writeBake's.
+  BakeManifest written = a.manifest;
+  written.files = b.manifest.files;
+  EXPECT_EQ(manifestText(written), manifestText(b.manifest));
   EXPECT_EQ(a.layout.width, b.layout.width);
   EXPECT_EQ(a.layout.height, b.layout.height);
   EXPECT_TRUE(bitEqual(a.layout.texelSize, b.layout.texelSize));
@@ -213,6 +238,7 @@ TEST(BakeFolder, FailedWriteLeavesThePreviousBake) {
 
   Bake big = testBake(scene);
   big.layout.width = big.layout.height = 256;
+  big.manifest.atlas.width = big.manifest.atlas.height = 256;
   big.irradiance = Image(256, 256);
   uint32_t bits = 12345;  // an xorshift pattern: incompressible, so the EXR stays large
   for (glm::vec3& p : big.irradiance.pixels)
@@ -254,10 +280,17 @@ TEST(BakeFolder, WriterRefusesAnIncompleteManifestOrAMismatchedLightmap) {
     return "";
   };
   Bake b = testBake(scene);
-  b.manifestJson = R"({"formatVersion": 1})";
+  b.manifest.sceneHash.clear();
   EXPECT_NE(writeError(b).find("sceneHash"), std::string::npos);
-  b.manifestJson = R"({"formatVersion": 99, "sceneHash": "x"})";
+  b = testBake(scene);
+  b.manifest.formatVersion = 99;
   EXPECT_NE(writeError(b).find("formatVersion 99"), std::string::npos);
+  b = testBake(scene);
+  b.manifest.atlas.width = 17;
+  EXPECT_NE(writeError(b).find("bake.json's atlas is 17x8"), std::string::npos);
+  b = testBake(scene);
+  b.vpls = std::vector<Vpl>(2);
+  EXPECT_NE(writeError(b).find("bake.json describes no VPLs"), std::string::npos);
   b = testBake(scene);
   b.irradiance = Image(8, 8);
   EXPECT_NE(writeError(b).find("does not match"), std::string::npos);
@@ -283,6 +316,12 @@ class BakeRejection : public ::testing::Test {
     std::vector<unsigned char> bytes = readBytes(dir_ / "layout.bin");
     edit(bytes);
     writeBytes(dir_ / "layout.bin", bytes);
+    restamp(dir_);
+  }
+  void rewriteManifest(std::function<void(BakeManifest&)> edit) {
+    BakeManifest manifest = readManifest(dir_);
+    edit(manifest);
+    writeManifest(dir_, manifest);
   }
   // Writes a bake whose layout was edited (the writer does not know the scene).
   void writeWithLayout(std::function<void(LightmapLayout&)> edit) {
@@ -313,6 +352,7 @@ TEST_F(BakeRejection, MissingFiles) {
 TEST_F(BakeRejection, FilesThatAreNotRegularAreRefusedWithoutBlocking) {
   Bake withVpls = testBake(scene_);
   withVpls.vpls = std::vector<Vpl>{{{0, 1, 0}, {0, -1, 0}, {0.1f, 0.2f, 0.3f}}};
+  withVpls.manifest.vpls = BakeManifest::Vpls{.count = 1};
   for (const char* file : {"bake.json", "layout.bin", "lightmap.exr", "vpls"}) {
     writeBake(dir_, withVpls);
     fs::remove(dir_ / file);
@@ -345,6 +385,13 @@ TEST_F(BakeRejection, ManifestFormatVersion) {
   expectRefused("bake.json", "format version " + std::to_string(kBakeFormatVersion + 1) +
                                  ", this build reads version " +
                                  std::to_string(kBakeFormatVersion));
+  // 2^32 + 2 would read as 2 through a 32-bit int; 2.0 is not an exact integer.
+  std::ofstream(dir_ / "bake.json", std::ios::trunc)
+      << R"({"formatVersion": 4294967298, "sceneHash": "x"})";
+  expectRefused("bake.json", "format version 4294967298, this build reads version 2: rebake");
+  std::ofstream(dir_ / "bake.json", std::ios::trunc)
+      << R"({"formatVersion": 2.0, "sceneHash": "x"})";
+  expectRefused("bake.json", "no integer \"formatVersion\"");
 }
 
 // ---- a stale bake: the folder, both hashes, and why where bake.json or the files' times tell
@@ -353,12 +400,12 @@ TEST_F(BakeRejection, ManifestFormatVersion) {
 // per-part hashes of `baked`.
 void writeManifestWithParts(const fs::path& dir, const Scene& baked, const std::string& file) {
   const SceneHash hash = sceneHash(baked);
-  nlohmann::json parts = nlohmann::json::object();
-  for (std::size_t i = 0; i < hash.parts.size(); ++i) parts[kScenePartNames[i]] = hash.parts[i];
-  std::ofstream(dir / "bake.json") << nlohmann::json{{"formatVersion", kBakeFormatVersion},
-                                                     {"sceneHash", hash.whole},
-                                                     {"scene", file},
-                                                     {"sceneParts", parts}};
+  BakeManifest manifest = readManifest(dir);
+  manifest.sceneHash = hash.whole;
+  manifest.scene = file;
+  for (std::size_t i = 0; i < hash.parts.size(); ++i)
+    manifest.sceneParts[kScenePartNames[i]] = hash.parts[i];
+  writeManifest(dir, manifest);
 }
 
 TEST_F(BakeRejection, StaleBakeGivesBothHashes) {
@@ -414,6 +461,7 @@ TEST_F(BakeRejection, LayoutTruncatedAnywhere) {
   const std::vector<unsigned char> whole = readBytes(dir_ / "layout.bin");
   for (std::size_t size = 0; size < whole.size(); ++size) {
     writeBytes(dir_ / "layout.bin", {whole.begin(), whole.begin() + static_cast<long>(size)});
+    restamp(dir_);
     expectRefused("layout.bin", "truncated");
   }
 }
@@ -448,18 +496,24 @@ TEST_F(BakeRejection, CornerCountIsNotThreePerTriangle) {
   expectRefused("layout.bin", "has 5 corner UVs, its mesh needs 3 × 2");
 }
 
-TEST_F(BakeRejection, NonFiniteCornerUv) {
-  writeWithLayout([](LightmapLayout& l) { l.instances[1].cornerUv[2].y = NAN; });
-  expectRefused("layout.bin", "non-finite corner UV");
+// Atlas UVs lie in [0, 1]² (lightmap_layout.h): NaN, 1e30 (an undefined float-to-int cast in
+// the renderer) and one flipped exponent bit are refused.
+TEST_F(BakeRejection, CornerUvOutsideTheAtlas) {
+  for (const float bad : {NAN, INFINITY, 1e30f, -1e-6f, 1.0001f, 2.0f}) {
+    writeWithLayout([&](LightmapLayout& l) { l.instances[1].cornerUv[2].y = bad; });
+    expectRefused("layout.bin", "outside [0, 1]");
+  }
 }
 
 TEST_F(BakeRejection, LightmapSizeDisagreesWithLayout) {
   writeExr(dir_ / "lightmap.exr", Image(16, 9));
+  restamp(dir_);
   expectRefused("lightmap.exr", "is 16x9, layout.bin says 16x8");
 }
 
 TEST_F(BakeRejection, ErrorMapSizeDisagreesWithLayout) {
   writeExr(dir_ / "error.exr", Image(8, 8));
+  restamp(dir_);
   expectRefused("error.exr", "is 8x8, layout.bin says 16x8");
 }
 
@@ -467,19 +521,132 @@ TEST_F(BakeRejection, ErrorMapWithANegativeOrUnequalTexel) {
   Image error(16, 8, glm::vec3(0.1f));
   error.at(3, 2) = glm::vec3(-0.5f);
   writeExr(dir_ / "error.exr", error);
+  restamp(dir_);
   expectRefused("error.exr", "each texel is one relative error");
   error.at(3, 2) = glm::vec3(0.1f, 0.2f, 0.1f);
   writeExr(dir_ / "error.exr", error);
+  restamp(dir_);
   expectRefused("error.exr", "each texel is one relative error");
   error.at(3, 2) = glm::vec3(NAN);
   writeExr(dir_ / "error.exr", error);
+  restamp(dir_);
   expectRefused("error.exr", "each texel is one relative error");
   error.at(3, 2) = glm::vec3(kNoErrorEstimate);
   writeExr(dir_ / "error.exr", error);
+  restamp(dir_);
   EXPECT_EQ(readError(dir_, scene_), "");
 }
 
 TEST_F(BakeRejection, LightmapNotAnExr) {
   std::ofstream(dir_ / "lightmap.exr") << "not an exr";
+  restamp(dir_);
   expectRefused("lightmap.exr", "cannot read EXR");
+}
+
+// ---- the files are tied to the manifest: their sizes and hashes, and what it says of them
+
+// Any edit of a file, even one byte or one that keeps its size and every range (an all-black
+// lightmap, two regions swapped), is refused by the hash bake.json records.
+TEST_F(BakeRejection, DamagedOrReplacedFileIsRefusedByItsHash) {
+  Bake bake = testBake(scene_);
+  bake.vpls = std::vector<Vpl>{{{0, 1, 0}, {0, -1, 0}, {0.1f, 0.2f, 0.3f}}};
+  bake.manifest.vpls = BakeManifest::Vpls{.count = 1};
+  bake.relativeError = Image(16, 8, glm::vec3(0.1f));
+  for (const char* file : {"layout.bin", "lightmap.exr", "error.exr", "vpls"}) {
+    writeBake(dir_, bake);
+    std::vector<unsigned char> bytes = readBytes(dir_ / file);
+    bytes[bytes.size() / 2] ^= 0x10;
+    writeBytes(dir_ / file, bytes);
+    expectRefused(file, "damaged or another bake's: rebake");
+    bytes.pop_back();
+    writeBytes(dir_ / file, bytes);
+    expectRefused(file, "bytes, bake.json records");
+  }
+  writeBake(dir_, bake);
+  writeExr(dir_ / "lightmap.exr", Image(16, 8));  // all black
+  expectRefused("lightmap.exr", "rebake");
+  Bake swapped = bake;  // the two regions' UVs exchanged where their sizes allow
+  std::swap(swapped.layout.instances[0].cornerUv[0], swapped.layout.instances[1].cornerUv[0]);
+  const fs::path other = dir_.parent_path() / "other.bake";
+  writeBake(other, swapped);
+  fs::copy_file(other / "layout.bin", dir_ / "layout.bin", fs::copy_options::overwrite_existing);
+  expectRefused("layout.bin", "its hash is");
+}
+
+// The layout, lightmap and VPLs of another bake under this bake's manifest.
+TEST_F(BakeRejection, FilesOfAnotherBakeAreRefused) {
+  Bake other = testBake(scene_);
+  other.irradiance.at(5, 5) = {1, 2, 3};
+  const fs::path otherDir = dir_.parent_path() / "other.bake";
+  writeBake(otherDir, other);
+  fs::copy_file(otherDir / "lightmap.exr", dir_ / "lightmap.exr",
+                fs::copy_options::overwrite_existing);
+  expectRefused("lightmap.exr", "damaged");
+  writeBake(dir_, testBake(scene_));
+  other.vpls = std::vector<Vpl>(1, Vpl{{0, 1, 0}, {0, -1, 0}, {1, 1, 1}});
+  other.manifest.vpls = BakeManifest::Vpls{.count = 1};
+  writeBake(otherDir, other);
+  fs::copy_file(otherDir / "vpls", dir_ / "vpls");
+  expectRefused("vpls", "not recorded in bake.json");
+}
+
+TEST_F(BakeRejection, ManifestWithoutFileRecordsAsksForARebake) {
+  std::string text = manifestText(readManifest(dir_));
+  text.replace(text.find("\"files\""), 7, "\"filez\"");
+  std::ofstream(dir_ / "bake.json", std::ios::trunc) << text;
+  expectRefused("bake.json", "no \"files\" (the sizes and hashes of the folder's files): rebake");
+  writeBake(dir_, testBake(scene_));
+  rewriteManifest([](BakeManifest& m) { m.files.erase("lightmap.exr"); });
+  expectRefused("bake.json", "\"files\" does not record lightmap.exr");
+}
+
+// NaN, infinite, negative or huge irradiance would reach the frame (one NaN texel puts NaN
+// pixels in it).
+TEST_F(BakeRejection, IrradianceOutOfRange) {
+  for (const float bad : {NAN, INFINITY, -1.0f, 3e38f, 2.0f * kMaxBakeIrradiance}) {
+    Image irradiance = testBake(scene_).irradiance;
+    irradiance.at(4, 2).g = bad;
+    writeExr(dir_ / "lightmap.exr", irradiance);
+    restamp(dir_);
+    expectRefused("lightmap.exr", "texel (4, 2) holds irradiance");
+  }
+}
+
+// What bake.json says of the files must hold, forged hashes or not: the atlas size, the region
+// count (a layout with a region missing), the VPL count.
+TEST_F(BakeRejection, FilesDisagreeingWithTheManifest) {
+  rewriteManifest([](BakeManifest& m) { m.atlas.width = 20; });
+  expectRefused("layout.bin", "is 16x8, bake.json's atlas is 20x8");
+  writeBake(dir_, testBake(scene_));
+  Bake oneRegion = testBake(scene_);
+  oneRegion.layout.instances.pop_back();
+  oneRegion.manifest.atlas.regions = 1;
+  const fs::path other = dir_.parent_path() / "other.bake";
+  writeBake(other, oneRegion);
+  fs::copy_file(other / "layout.bin", dir_ / "layout.bin", fs::copy_options::overwrite_existing);
+  restamp(dir_);
+  expectRefused("layout.bin", "has 1 instance regions, bake.json's atlas has 2");
+  Bake withVpls = testBake(scene_);
+  withVpls.vpls = std::vector<Vpl>(2, Vpl{{0, 1, 0}, {0, -1, 0}, {1, 1, 1}});
+  withVpls.manifest.vpls = BakeManifest::Vpls{.count = 2};
+  writeBake(dir_, withVpls);
+  rewriteManifest([](BakeManifest& m) { m.vpls->count = 3; });
+  expectRefused("vpls", "holds 2 VPLs, bake.json says 3");
+}
+
+// A clamp distance that overflows a float, or a field of the wrong type, is refused by name.
+TEST_F(BakeRejection, ManifestFieldsOutOfRange) {
+  Bake withVpls = testBake(scene_);
+  withVpls.vpls = std::vector<Vpl>(1, Vpl{{0, 1, 0}, {0, -1, 0}, {1, 1, 1}});
+  withVpls.manifest.vpls = BakeManifest::Vpls{.count = 1};
+  writeBake(dir_, withVpls);
+  rewriteManifest([](BakeManifest& m) { m.vpls->clampDistance = 0.5; });
+  EXPECT_EQ(readError(dir_, scene_), "");
+  rewriteManifest([](BakeManifest& m) { m.vpls->clampDistance = 1e39; });
+  expectRefused("bake.json", "\"vpls.clampDistance\" is 1e+39, out of range [0, 1e+06]");
+  writeBake(dir_, withVpls);
+  std::string text = manifestText(readManifest(dir_));
+  text.replace(text.find("\"width\": 16"), 11, "\"width\": 4294967312");
+  std::ofstream(dir_ / "bake.json", std::ios::trunc) << text;
+  expectRefused("bake.json", "\"atlas.width\" is 4294967312, out of range 1..65536");
 }

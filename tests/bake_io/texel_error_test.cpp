@@ -13,9 +13,12 @@ TEST(TexelError, FalseColourRunsBlueGreenRedAgainstTheTarget) {
   EXPECT_EQ(errorFalseColour(0.05f, 0.1f), glm::vec3(0, 0.5f, 0.5f));
   EXPECT_EQ(errorFalseColour(0.9f, 0.1f), glm::vec3(1, 0, 0));
   EXPECT_EQ(errorFalseColour(kNoErrorEstimate, 0.1f), glm::vec3(0.05f));
-  EXPECT_EQ(bakeErrorTarget(R"({"estimatedError": {"target": 0.25}})"), 0.25f);
-  EXPECT_EQ(bakeErrorTarget(R"({"estimatedError": {"target": -1}})"), kDefaultErrorTarget);
-  EXPECT_EQ(bakeErrorTarget("not json"), kDefaultErrorTarget);
+  BakeManifest manifest;
+  EXPECT_EQ(bakeErrorTarget(manifest), kDefaultErrorTarget);  // a hand-made manifest: 0
+  manifest.estimatedError.target = 0.25;
+  EXPECT_EQ(bakeErrorTarget(manifest), 0.25f);
+  manifest.estimatedError.target = -1.0;
+  EXPECT_EQ(bakeErrorTarget(manifest), kDefaultErrorTarget);
 }
 
 // Sampled where the texel has an estimate, filled where a chart covers it without one, padding

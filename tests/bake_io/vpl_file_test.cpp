@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 #include "bake/vpl_file.h"
 #include "scene/load_error.h"
@@ -26,10 +24,10 @@ std::vector<Vpl> someVpls() {
   return {{{1.5f, -2.0f, 0.25f}, {0, 0, 1}, {0.5f, 0.25f, 1e-30f}, {0.0f, 9.0f, -1.0f}, 0u},
           {{-1e6f, 3.0e-7f, 7.0f},
            {0.6f, 0.0f, -0.8f},
-           {3.0e38f, 0.0f, 1.17549435e-38f},
+           {kMaxVplFlux, 0.0f, 1.17549435e-38f},
            {1.5f, -2.0f, 0.25f},
            0u},
-          {{0, 0, 0}, {0, -1, 0}, {1, 2, 3}, {-4.0f, 1e7f, 2.5f}, 4000000000u}};
+          {{0, 0, 0}, {0, -1, 0}, {1, 2, 3}, {-4.0f, kMaxBakeLength, 2.5f}, 4000000000u}};
 }
 
 fs::path freshDir(const std::string& name) {
@@ -66,7 +64,7 @@ TEST(VplFile, BytesFollowTheDocumentedLayout) {
   EXPECT_EQ(std::bit_cast<float>(u32At(b, 68)), -1e6f);
   EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 12)), 0.6f);
   EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 20)), -0.8f);
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 24)), 3.0e38f);
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 24)), kMaxVplFlux);
   EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 36)), 1.5f);
   EXPECT_EQ(std::bit_cast<float>(u32At(b, 68 + 44)), 0.25f);
   EXPECT_EQ(u32At(b, 68 + 48), 0u);
@@ -118,6 +116,12 @@ TEST(VplFile, DamagedFilesAreRefusedWithTheFileAndTheReason) {
        damaged([&](auto& b) { putF32(b, 120 + 32, std::numeric_limits<float>::infinity()); })},
       {"VPL 1: path segment start is not finite",
        damaged([&](auto& b) { putF32(b, 68 + 40, nan); })},
+      // Finite but beyond the documented ranges: NaN or a 14 % shift in the frame otherwise.
+      {"VPL 1: flux is over 1e+09 W", damaged([&](auto& b) { putF32(b, 68 + 24, 3e38f); })},
+      {"VPL 1: position is not finite or beyond 1e+06 m",
+       damaged([&](auto& b) { putF32(b, 68 + 4, 1e30f); })},
+      {"VPL 1: path segment start is not finite or beyond 1e+06 m",
+       damaged([&](auto& b) { putF32(b, 68 + 40, -1e30f); })},
       {"VPL 1: path index 7 is smaller than the previous VPL's 9", damaged([&](auto& b) {
          b[16 + 48] = 9;
          b[68 + 48] = 7;
@@ -144,14 +148,14 @@ TEST(VplFile, TravelsWithTheBakeFolder) {
   bake.layout.height = 1;
   bake.layout.texelSize = 1.0f;
   bake.irradiance = Image(1, 1);
-  bake.manifestJson =
-      nlohmann::json{{"formatVersion", kBakeFormatVersion}, {"sceneHash", sceneContentHash(scene)}}
-          .dump();
+  bake.manifest.sceneHash = sceneContentHash(scene);
+  bake.manifest.atlas.width = bake.manifest.atlas.height = 1;
   const fs::path dir = freshDir("folder") / "scene.bake";
   writeBake(dir, bake);
   EXPECT_FALSE(fs::exists(dir / "vpls"));
   EXPECT_FALSE(readBake(dir, scene).vpls.has_value());
   bake.vpls = someVpls();
+  bake.manifest.vpls = BakeManifest::Vpls{.count = bake.vpls->size()};
   writeBake(dir, bake);
   ASSERT_TRUE(fs::exists(dir / "vpls"));
   const Bake back = readBake(dir, scene);

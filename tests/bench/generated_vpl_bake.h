@@ -6,8 +6,6 @@
 
 #include <cstdint>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 #include "bake/vpl_clamp.h"
 #include "ray/ray_kernel.h"
@@ -29,10 +27,9 @@ inline Bake generatedVplBake(const Scene& scene, int cap, uint32_t seed = 0) {
   b.layout.texelSize = 1.0f;
   b.irradiance = Image(1, 1);
   b.vpls = generateVpls(statics, geometry, *kernel, settings).vpls;
-  b.manifestJson =
-      nlohmann::json{
-          {"vpls", {{"clampDistance", vplClampDistance(surfaceArea(geometry), b.vpls->size())}}}}
-          .dump();
+  b.manifest.vpls =
+      BakeManifest::Vpls{.count = b.vpls->size(),
+                         .clampDistance = vplClampDistance(surfaceArea(geometry), b.vpls->size())};
   return b;
 }
 

@@ -474,7 +474,10 @@ write("exr/window_pixels_over_limit.exr", exr(2, 2, window=(0, 0, 3, 1 << 28)), 
 # committed; regenerate it (after a format or scene-hash change) with
 #   build/release/bin/bounce-bake tests/corpus/bake/scene.gltf -o tests/corpus/bake/valid.bake \
 #     --texel-budget 64 --spp 16 --vpls 16 --quiet
-# Every other folder is valid.bake with one file tampered. Rows: "<folder> error <reason>".
+# Every other folder is valid.bake with one file tampered. bake.json records every file's size and
+# FNV-1a 64 hash ("files"): a tampered file is re-recorded (stamped) there, as a forger would, so
+# that the check under test is reached, unless the case is about the hash (stamp=False). Rows:
+# "<folder> error <reason>".
 def bake_scene():
     # (corners, normal) floor 2 m x 2 m at y = 0; wall at x = -1; panel at y = 1.9 straddling
     # the wall, so the wall hides part of it from the floor and the texels' V lie inside (0, 1)
@@ -513,7 +516,14 @@ def bake_scene():
 
 write("bake/scene.gltf", bake_scene(), "ok", "triangles=6;lights=1")
 VALID = os.path.join(ROOT, "bake", "valid.bake")
-BAKE_FILES = ("bake.json", "layout.bin", "lightmap.exr", "vpls", "visibility.bin")
+BAKE_FILES = ("bake.json", "layout.bin", "lightmap.exr", "vpls", "visibility.bin", "error.exr")
+
+
+def fnv1a64(data):
+    h = 14695981039346656037
+    for c in data:
+        h = ((h ^ c) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    return "%016x" % h
 
 
 def bake_file(name):
@@ -521,12 +531,21 @@ def bake_file(name):
         return f.read()
 
 
-def bake_case(name, expect, detail, **files):
-    """A copy of valid.bake with files replaced (bytes) or removed (None)."""
+def bake_case(name, expect, detail, stamp=True, **files):
+    """A copy of valid.bake with files replaced (bytes) or removed (None); with `stamp`, the
+    replaced files' sizes and hashes are recorded in its bake.json (unless bake.json is replaced
+    too)."""
     folder = "bake/%s.bake" % name
+    contents = {f: files.get(f.replace(".", "_"), bake_file(f)) for f in BAKE_FILES}
+    if stamp and "bake_json" not in files:
+        m = json.loads(bake_file("bake.json"))
+        for f, content in contents.items():
+            if f != "bake.json" and content is not None and f.replace(".", "_") in files:
+                m["files"][f] = {"bytes": len(content), "hash": fnv1a64(content)}
+        contents["bake.json"] = json.dumps(m, indent=1, sort_keys=True).encode()
     for f in BAKE_FILES:
         path = os.path.join(ROOT, folder, f)
-        content = files.get(f.replace(".", "_"), bake_file(f))
+        content = contents[f]
         if os.path.exists(path):
             os.remove(path)
         if content is not None:
@@ -563,7 +582,22 @@ if os.path.isdir(VALID):
     bake_case("manifest_deep", "error", "bake.json: JSON nests arrays/objects deeper than 64",
               bake_json=b"{\"x\": " + b"[" * 100000 + b"]" * 100000 + b"}")
     bake_case("manifest_version_string", "error", "no integer \"formatVersion\"", bake_json=manifest_with(formatVersion="1"))
-    bake_case("manifest_version_2", "error", "format version 2, this build reads version 1", bake_json=manifest_with(formatVersion=2))
+    bake_case("manifest_version_1", "error", "format version 1, this build reads version 2: rebake", bake_json=manifest_with(formatVersion=1))
+    # A 64-bit version that a 32-bit read would take as 1 or as this build's 2.
+    for v in (2 ** 32 + 1, 2 ** 32 + 2):
+        bake_case("manifest_version_%d" % v, "error", "format version %d, this build reads version 2: rebake" % v,
+                  bake_json=manifest_with(formatVersion=v))
+    bake_case("manifest_version_2_0", "error", "no integer \"formatVersion\"", bake_json=manifest_with(formatVersion=2.0))
+    bake_case("manifest_no_files", "error", "bake.json: no \"files\" (the sizes and hashes of the folder's files): rebake",
+              bake_json=json.dumps({k: v for k, v in manifest.items() if k != "files"}).encode())
+    bake_case("manifest_atlas_width_2_32", "error", "\"atlas.width\" is 4294967312, out of range 1..65536",
+              bake_json=manifest_with(atlas=dict(manifest["atlas"], width=2 ** 32 + 16)))
+    bake_case("manifest_atlas_other_size", "error", "layout.bin: is %dx%d, bake.json's atlas is 64x8: another bake's" % struct.unpack_from("<ii", layout, 12),
+              bake_json=manifest_with(atlas=dict(manifest["atlas"], width=64)))
+    bake_case("manifest_clamp_overflows", "error", "\"vpls.clampDistance\" is 1e+39, out of range [0, 1e+06]",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], clampDistance=1e39)))
+    bake_case("manifest_vpl_count_other", "error", "vpls: holds 16 VPLs, bake.json says 17",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], count=17)))
     bake_case("manifest_other_scene", "error", "stale bake: it does not match the scene (every part's hash matches", bake_json=manifest_with(sceneHash="0123456789abcdef"))
     bake_case("manifest_hash_number", "error", "no string \"sceneHash\"", bake_json=manifest_with(sceneHash=12))
     bake_case("layout_missing", "error", "layout.bin: missing", layout_bin=None)
@@ -576,16 +610,59 @@ if os.path.isdir(VALID):
     bake_case("layout_texel_nan", "error", "texel size nan m is not positive", layout_bin=layout_with(20, "<f", float("nan")))
     bake_case("layout_region_count_huge", "error", "instance regions announced", layout_bin=layout_with(36, "<I", 0xFFFFFFF0))
     bake_case("layout_instance_out_of_range", "error", "out of range (the scene has 3 instances)", layout_bin=layout_with(40, "<I", 7))
-    bake_case("layout_corner_nan", "error", "has a non-finite corner UV", layout_bin=layout_with(48, "<f", float("inf")))
+    bake_case("layout_corner_nan", "error", "outside [0, 1]", layout_bin=layout_with(48, "<f", float("inf")))
+    # Atlas UVs lie in [0, 1]: one flipped exponent byte, and 1e30 (an undefined float-to-int cast).
+    flipped = bytearray(layout)
+    flipped[51] ^= 0x40
+    bake_case("layout_corner_byte_flipped", "error", "outside [0, 1]", layout_bin=bytes(flipped))
+    bake_case("layout_corner_1e30", "error", "outside [0, 1]", layout_bin=layout_with(52, "<f", 1e30))
+    # The last region left out: the count says one fewer and its bytes are gone.
+    regions = struct.unpack_from("<I", layout, 36)[0]
+    at = 40
+    for r in range(regions - 1):
+        at += 8 + 8 * struct.unpack_from("<I", layout, at + 4)[0]
+    fewer = bytearray(layout[:at])
+    struct.pack_into("<I", fewer, 36, regions - 1)
+    bake_case("layout_region_missing", "error", "layout.bin: has %d instance regions, bake.json's atlas has %d" % (regions - 1, regions),
+              layout_bin=bytes(fewer))
+    # Any edit, stamped by no one, is caught by the hash: a flipped byte, two regions' first
+    # corners swapped (same size, every range kept), an all-black lightmap.
+    bake_case("layout_byte_flipped_unstamped", "error", "layout.bin: its hash is", stamp=False, layout_bin=bytes(flipped))
+    swapped = bytearray(layout)
+    swapped[48:56], swapped[104:112] = layout[104:112], layout[48:56]
+    bake_case("layout_regions_swapped", "error", "layout.bin: its hash is", stamp=False, layout_bin=bytes(swapped))
     bake_case("lightmap_missing", "error", "lightmap.exr: missing", lightmap_exr=None)
     bake_case("lightmap_not_exr", "error", "lightmap.exr: cannot read EXR: not an OpenEXR file", lightmap_exr=b"P6\n2 2\n255\n" + b"\0" * 12)
     bake_case("lightmap_wrong_size", "error", "lightmap.exr: is 2x2, layout.bin says", lightmap_exr=exr(2, 2))
+    # Irradiance the renderer would draw: one bad texel (3, 1) of a map of the layout's size.
+    width, height = struct.unpack_from("<ii", layout, 12)
+    for label, bad in (("nan", float("nan")), ("inf", float("inf")), ("negative", -1.0), ("3e38", 3e38)):
+        bake_case("lightmap_texel_" + label, "error", "lightmap.exr: texel (3, 1) holds irradiance",
+                  lightmap_exr=exr(width, height, values=lambda x, y, c, bad=bad: bad if (x, y, c) == (3, 1, 1) else 0.5))
+    black = exr(width, height, values=lambda x, y, c: 0.0)
+    bake_case("lightmap_black_unstamped", "error", "lightmap.exr: " + (
+        "its hash is" if len(black) == len(bake_file("lightmap.exr")) else "%d bytes, bake.json records" % len(black)),
+        stamp=False, lightmap_exr=black)
+    # The layout, lightmap and VPLs of another bake (twice the atlas width, other VPLs): refused
+    # by their hashes, and, re-recorded, by the atlas size bake.json gives.
+    other_layout = layout_with(12, "<i", 2 * width)
+    other_vpls = vpls_with(16, "<f", 0.125)
+    other_map = exr(2 * width, height, values=lambda x, y, c: 0.25)
+    bake_case("other_bakes_files_unstamped", "error", "layout.bin: ", stamp=False,
+              layout_bin=other_layout, lightmap_exr=other_map, vpls=other_vpls)
+    bake_case("other_bakes_files", "error", "layout.bin: is %dx%d, bake.json's atlas is %dx%d: another bake's" % (2 * width, height, width, height),
+              layout_bin=other_layout, lightmap_exr=other_map, vpls=other_vpls)
+    bake_case("error_map_unrecorded", "error", "error.exr: not recorded in bake.json's \"files\"", stamp=False, error_exr=bake_file("error.exr"),
+              bake_json=manifest_with(files={k: v for k, v in manifest["files"].items() if k != "error.exr"}))
     bake_case("vpls_bad_magic", "error", "vpls: bad magic", vpls=b"BNCVPLX\0" + vpls[8:])
     bake_case("vpls_version_3", "error", "vpls: format version 3", vpls=vpls_with(8, "<I", 3))
     bake_case("vpls_count_mismatch", "error", "VPLs announced need", vpls=vpls_with(12, "<I", 1000))
     bake_case("vpls_position_nan", "error", "position is not finite", vpls=vpls_with(16, "<f", float("nan")))
     bake_case("vpls_normal_long", "error", "normal is not a unit vector", vpls=vpls_with(28, "<3f", 0.0, 2.0, 0.0))
     bake_case("vpls_flux_negative", "error", "flux is negative or not finite", vpls=vpls_with(40, "<f", -1.0))
+    bake_case("vpls_flux_3e38", "error", "VPL 0: flux is over 1e+09 W", vpls=vpls_with(40, "<f", 3e38))
+    bake_case("vpls_position_1e30", "error", "VPL 0: position is not finite or beyond 1e+06 m", vpls=vpls_with(16, "<f", 1e30))
+    bake_case("vpls_flipped_unstamped", "error", "vpls: its hash is", stamp=False, vpls=vpls_with(40, "<f", 0.0))
     bake_case("vpls_cut", "error", "vpls: truncated", vpls=vpls[:10])
     # Version 2 (per VPL 52 bytes: ... flux at 40, from at 52, path index at 64).
     bake_case("vpls_version_1", "error", "format version 1, this build reads version 2: rebake",

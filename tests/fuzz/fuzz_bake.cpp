@@ -1,13 +1,18 @@
 // libFuzzer target: the bake-folder reader (engine/bake/bake_folder.h). The input's first byte
 // picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls,
-// 4 visibility.bin; modulo 5), the rest of the input is that file's content; the other four are
-// those of tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf (one static
-// area light, so it has a visibility.bin). Allowed outcomes: a Bake that the renderer can use
-// blindly (lightmap size = layout size, one region per static instance with 3 UVs per triangle,
-// finite UVs; VPLs finite with unit normals and non-negative flux; a visibility of the layout's
-// size whose V are finite and in [0, 1] and whose lights are < the scene's static area-light
-// count or one of the two marks), or a LoadError naming a file of the folder. Anything else
-// aborts.
+// 4 visibility.bin, 5 error.exr; modulo 6), the rest of the input is that file's content; the
+// others are those of tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf
+// (one static area light, so it has a visibility.bin). bake.json records every file's size and
+// hash; for a fuzzed file other than bake.json, the second bit of the first byte says whether
+// bake.json records the fuzzed bytes (as a forger would, so the parsers and range checks behind
+// the hash are reached) or keeps valid.bake's record (the hash check). Allowed outcomes: a Bake
+// that the renderer can use blindly (lightmap size = layout size = bake.json's atlas size,
+// irradiance finite in [0, kMaxBakeIrradiance]; one region per static instance with 3 UVs per
+// triangle, UVs in [0, 1]; VPLs within ±kMaxBakeLength with unit normals and flux in
+// [0, kMaxVplFlux], as many as bake.json says, its clamp distance in [0, kMaxBakeLength]; a
+// visibility of the layout's size whose V are finite and in [0, 1] and whose lights are < the
+// scene's static area-light count or one of the two marks), or a LoadError naming a file of the
+// folder. Anything else aborts.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -27,9 +32,9 @@
 namespace {
 
 namespace fs = std::filesystem;
-constexpr int kFileCount = 5;
-const char* const kFiles[kFileCount] = {"bake.json", "layout.bin", "lightmap.exr", "vpls",
-                                        "visibility.bin"};
+constexpr int kFileCount = 6;
+const char* const kFiles[kFileCount] = {"bake.json", "layout.bin",     "lightmap.exr",
+                                        "vpls",      "visibility.bin", "error.exr"};
 
 struct ValidBake {
   bounce::Scene scene;
@@ -74,12 +79,21 @@ void checkVisibility(const bounce::BakedVisibility& visibility,
     }
 }
 
+bool within(const glm::vec3& v, float limit) {
+  return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
+}
+
 void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
   const bounce::LightmapLayout& layout = bake.layout;
   if (bake.irradiance.width != layout.width || bake.irradiance.height != layout.height ||
       bake.irradiance.pixels.size() !=
           static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height))
     finding("lightmap size disagrees with the layout");
+  if (bake.manifest.atlas.width != layout.width || bake.manifest.atlas.height != layout.height)
+    finding("bake.json's atlas size disagrees with the layout");
+  for (const glm::vec3& e : bake.irradiance.pixels)
+    if (!within(e, bounce::kMaxBakeIrradiance) || e.r < 0.0f || e.g < 0.0f || e.b < 0.0f)
+      finding("irradiance not finite or outside [0, kMaxBakeIrradiance]");
   for (const bounce::InstanceLightmapUv& region : layout.instances) {
     if (region.instance >= scene.instances.size()) finding("region of a missing instance");
     const bounce::Instance& instance = scene.instances[region.instance];
@@ -87,16 +101,23 @@ void checkUsable(const bounce::Bake& bake, const bounce::Scene& scene) {
     if (region.cornerUv.size() != 3 * scene.meshes.at(instance.mesh).triangleCount())
       finding("region corner count is not 3 per triangle");
     for (const glm::vec2& uv : region.cornerUv)
-      if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) finding("non-finite corner UV");
+      if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f))
+        finding("corner UV outside [0, 1]");
   }
+  if (bake.vpls.has_value() != bake.manifest.vpls.has_value() ||
+      (bake.vpls && bake.vpls->size() != bake.manifest.vpls->count))
+    finding("VPLs disagree with bake.json");
+  if (bake.manifest.vpls && !(bake.manifest.vpls->clampDistance >= 0.0 &&
+                              bake.manifest.vpls->clampDistance <= bounce::kMaxBakeLength))
+    finding("VPL clamp distance out of range");
   if (bake.vpls)
     for (const bounce::Vpl& v : *bake.vpls) {
-      for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(v.position[k]) || !std::isfinite(v.flux[k]) || v.flux[k] < 0.0f)
-          finding("VPL with a non-finite position or a negative/non-finite flux");
+      if (!within(v.position, bounce::kMaxBakeLength) || !within(v.from, bounce::kMaxBakeLength))
+        finding("VPL position or path segment start not finite or beyond kMaxBakeLength");
+      if (!within(v.flux, bounce::kMaxVplFlux) || v.flux.r < 0.0f || v.flux.g < 0.0f ||
+          v.flux.b < 0.0f)
+        finding("VPL flux negative, not finite or over kMaxVplFlux");
       if (std::abs(glm::length(v.normal) - 1.0f) > 1e-3f) finding("VPL normal not unit");
-      for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(v.from[k])) finding("VPL with a non-finite path segment start");
     }
   if (bake.vpls)
     for (std::size_t i = 1; i < bake.vpls->size(); ++i)
@@ -110,12 +131,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const ValidBake& v = valid();
   const int which = data[0] % kFileCount;
+  const bool stamp = ((data[0] / kFileCount) & 1) == 0;
   const fs::path dir = bounce::fuzz::writeInput(data, 0, "unused").parent_path() / "f.bake";
   fs::create_directories(dir);
+  std::string manifest(v.files[0].begin(), v.files[0].end());
+  if (which != 0 && stamp) {
+    bounce::BakeManifest m = bounce::parseManifest(dir / kFiles[0], manifest);
+    m.files[kFiles[which]] = {size - 1, bounce::fnv1a64Hex({data + 1, size - 1})};
+    manifest = bounce::manifestText(m);
+  }
   for (int i = 0; i < kFileCount; ++i) {
     std::ofstream out(dir / kFiles[i], std::ios::binary | std::ios::trunc);
     if (i == which)
       out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+    else if (i == 0)
+      out.write(manifest.data(), static_cast<std::streamsize>(manifest.size()));
     else
       out.write(v.files[i].data(), static_cast<std::streamsize>(v.files[i].size()));
   }

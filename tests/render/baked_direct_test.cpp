@@ -128,7 +128,7 @@ TEST(BakedDirect, ADynamicBoxCastsAndReceivesShadowsUnderABakedPanel) {
   statics.instances.pop_back();
   const BakeRun run = bakeVisibility(statics);
   Bake bake = run.bake;
-  bake.manifestJson = minimalManifest(scene);
+  bake.manifest = minimalManifest(scene);
   const Reference reference =
       traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
   const Image rendered = renderDirect(scene, &bake, camera);

@@ -43,7 +43,7 @@ Bake visibilityBake(const Scene& scene, Record record) {
     panel.cornerUv.push_back(glm::vec2(1.0f - 0.5f / kSize));
   bake.layout.instances = {region, panel};
   bake.irradiance = Image(kSize, kSize);
-  bake.manifestJson = minimalManifest(scene);
+  bake.manifest = minimalManifest(scene);
   BakedVisibility v;
   v.width = v.height = kSize;
   v.lightCount = 1;

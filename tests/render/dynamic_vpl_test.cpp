@@ -271,7 +271,7 @@ class DynamicSphere : public ::testing::Test {
 
   static Bake bake(const Scene& scene) { return readBake(dir_ / "box.bake", scene); }
   static float clampDistance(const Bake& bake) {
-    return nlohmann::json::parse(bake.manifestJson).at("vpls").at("clampDistance").get<float>();
+    return static_cast<float>(bake.manifest.vpls.value().clampDistance);
   }
 
   static fs::path dir_;
@@ -544,8 +544,7 @@ TEST_F(VplCorner, NoPixelExceedsTheTruthByMoreThanOneClampedVpl) {
   const Scene loaded = loadScene(wrapper);
   const Bake bake = readBake(bakeDir, loaded);
   ASSERT_TRUE(bake.vpls.has_value());
-  const float r =
-      nlohmann::json::parse(bake.manifestJson).at("vpls").at("clampDistance").get<float>();
+  const float r = static_cast<float>(bake.manifest.vpls.value().clampDistance);
   glm::vec3 fluxMax(0.0f);
   for (const Vpl& vpl : *bake.vpls) fluxMax = glm::max(fluxMax, vpl.flux);
   const Image truth = readExr(dir_ / "t.exr"), sigma = readExr(dir_ / "s.exr");

@@ -15,8 +15,6 @@
 #include <cmath>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "atlas/atlas.h"
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
@@ -48,9 +46,7 @@ inline BakeRun bakeScene(const Scene& scene, const AtlasSettings& atlasSettings,
   run.bake.layout = atlas.layout;
   run.bake.irradiance = run.stats.irradiance;
   run.bake.visibility = run.stats.visibility;
-  run.bake.manifestJson =
-      nlohmann::json{{"formatVersion", kBakeFormatVersion}, {"sceneHash", sceneContentHash(scene)}}
-          .dump();
+  run.bake.manifest.sceneHash = sceneContentHash(scene);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -373,7 +373,7 @@ TEST(LightCulling, BakedVisibilityIsReadByTheLightsOwnIndex) {
                 scene.meshes[i].indices.size(),
                 glm::vec2(1.0f - 0.5f / kAtlas, (static_cast<float>(i) - 0.5f) / kAtlas))});
   bake.irradiance = Image(kAtlas, kAtlas);
-  bake.manifestJson = minimalManifest(scene);
+  bake.manifest = minimalManifest(scene);
   BakedVisibility v;
   v.width = v.height = kAtlas;
   v.lightCount = 2;

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 #include "scene/scene.h"
 #include "test_scenes.h"
@@ -60,12 +58,25 @@ inline uint32_t addInstance(Scene& scene, Mesh mesh, const Material& material,
   return instance;
 }
 
-// A manifest good enough for readBake: format version and the scene's hash.
-inline std::string minimalManifest(const Scene& scene) {
-  return nlohmann::json{{"formatVersion", kBakeFormatVersion},
-                        {"sceneHash", sceneContentHash(scene)},
-                        {"holds", "indirect"}}
-      .dump();
+// A hand-made manifest for a bake held in memory: format version and the scene's hash (writeBake
+// also needs the atlas size and regions of the layout: manifestFor).
+inline BakeManifest minimalManifest(const Scene& scene) {
+  BakeManifest manifest;
+  manifest.sceneHash = sceneContentHash(scene);
+  return manifest;
+}
+
+// minimalManifest agreeing with `bake`'s files as writeBake and readBake require (atlas size,
+// regions, VPL count, visibility lights).
+inline BakeManifest manifestFor(const Scene& scene, const Bake& bake) {
+  BakeManifest manifest = minimalManifest(scene);
+  manifest.atlas.width = bake.layout.width;
+  manifest.atlas.height = bake.layout.height;
+  manifest.atlas.regions = bake.layout.instances.size();
+  if (bake.vpls) manifest.vpls = BakeManifest::Vpls{.count = bake.vpls->size()};
+  if (bake.visibility)
+    manifest.visibility = BakeManifest::Visibility{.lights = bake.visibility->lightCount};
+  return manifest;
 }
 
 }  // namespace bounce::test

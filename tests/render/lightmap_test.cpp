@@ -67,7 +67,7 @@ Bake planeBake(const Scene& scene, const Image& irradiance) {
     region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
   bake.layout.instances = {region};
   bake.irradiance = irradiance;
-  bake.manifestJson = minimalManifest(scene);
+  bake.manifest = minimalManifest(scene);
   return bake;
 }
 
@@ -188,9 +188,7 @@ TEST(Lightmap, BakedOnlyLightIsNotDrawnLiveOnceABakeIsAttached) {
 TEST(Lightmap, ErrorModeShowsEachTexelsErrorAgainstTheTarget) {
   const PlaneScene p = planeScene();
   Bake bake = planeBake(p.scene, Image(2, 2, glm::vec3(1.0f)));
-  nlohmann::json manifest = nlohmann::json::parse(bake.manifestJson);
-  manifest["estimatedError"] = {{"target", 0.2}};
-  bake.manifestJson = manifest.dump();
+  bake.manifest.estimatedError.target = 0.2;
   bake.relativeError = Image(2, 2);
   bake.relativeError->at(0, 0) = glm::vec3(0.1f);              // half the target
   bake.relativeError->at(1, 0) = glm::vec3(0.3f);              // 1.5 × the target

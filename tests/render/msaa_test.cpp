@@ -63,7 +63,7 @@ QuadScene quadScene() {
   for (uint32_t index : mesh.indices) region.cornerUv.push_back(uv[index]);
   q.bake.layout.instances = {region};
   q.bake.irradiance = irradiance;
-  q.bake.manifestJson = minimalManifest(q.scene);
+  q.bake.manifest = minimalManifest(q.scene);
   return q;
 }
 

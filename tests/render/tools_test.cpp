@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/bake_folder.h"
+#include "bake/vpl_clamp.h"
 #include "image/image_io.h"
 #include "scene/load.h"
 #include "support/test_context.h"
@@ -396,9 +397,9 @@ void writeConstantBake(const fs::path& dir, const bounce::Scene& scene, const bo
           {i, std::vector<glm::vec2>(scene.meshes[scene.instances[i].mesh].indices.size(),
                                      glm::vec2(0.5f))});
   bake.irradiance = bounce::Image(4, 4, {2.0f, 3.0f, 5.0f});
-  bake.manifestJson = nlohmann::json{{"formatVersion", bounce::kBakeFormatVersion},
-                                     {"sceneHash", bounce::sceneContentHash(hashOf)}}
-                          .dump();
+  bake.manifest.sceneHash = bounce::sceneContentHash(hashOf);
+  bake.manifest.atlas.width = bake.manifest.atlas.height = 4;
+  bake.manifest.atlas.regions = bake.layout.instances.size();
   bounce::writeBake(dir, bake);
   if (formatVersion != bounce::kBakeFormatVersion)
     std::ofstream(dir / "bake.json") << nlohmann::json{
@@ -557,9 +558,9 @@ TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
       ++lit;
     }
   }
-  std::ifstream in(built / "bake.json");
-  const nlohmann::json manifest = nlohmann::json::parse(in);
-  const double mean = manifest["estimatedError"]["mean"].get<double>();
+  const double mean =
+      bounce::parseManifest(built / "bake.json", bounce::test::readText(built / "bake.json"))
+          .estimatedError.mean;
   ASSERT_GT(lit, 1000u);
   EXPECT_GT(none, 0u);  // the padding between charts
   EXPECT_NEAR(sum / static_cast<double>(lit), mean, 0.02 * mean);
@@ -592,6 +593,8 @@ TEST_F(ToolsTest, VplModeNeedsVplsAndReportsTheClamp) {
   bake.vpls =
       std::vector<bounce::Vpl>{{{0.0f, 0.5f, 0.0f}, {0.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 1.0f}},
                                {{0.3f, 0.2f, 0.1f}, {0.0f, -1.0f, 0.0f}, {0.5f, 0.2f, 0.1f}}};
+  bake.manifest.vpls = bounce::BakeManifest::Vpls{
+      .count = 2, .clampDistance = bounce::vplClampDistance(bounce::staticSurfaceArea(scene), 2)};
   bounce::writeBake(dir_ / "plane.bake", bake);
   r = run(render + quote(dir_ / "vpl.exr"));
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -10,8 +10,6 @@
 #include <cmath>
 #include <random>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/vpl_groups.h"
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
@@ -65,9 +63,8 @@ Bake vplBake(const VplScene& s, float clampDistance) {
   bake.layout.width = bake.layout.height = 1;
   bake.layout.texelSize = 1.0f;
   bake.irradiance = Image(1, 1);
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(s.scene));
-  manifest["vpls"] = {{"count", s.vpls.size()}, {"clampDistance", clampDistance}};
-  bake.manifestJson = manifest.dump();
+  bake.manifest = minimalManifest(s.scene);
+  bake.manifest.vpls = BakeManifest::Vpls{.count = s.vpls.size(), .clampDistance = clampDistance};
   bake.vpls = s.vpls;
   return bake;
 }

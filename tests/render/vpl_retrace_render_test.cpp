@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <nlohmann/json.hpp>
 
 #include "gl/shader.h"
 #include "lightmap_scenes.h"
@@ -43,9 +42,8 @@ TEST(VplRetraceRender, MovingADynamicBoxTracesTheVplsAgainWithItThere) {
   bake.layout.width = bake.layout.height = 1;
   bake.layout.texelSize = 1.0f;
   bake.irradiance = Image(1, 1);
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
-  manifest["vpls"] = {{"count", 1}, {"clampDistance", 0.02f}};
-  bake.manifestJson = manifest.dump();
+  bake.manifest = minimalManifest(scene);
+  bake.manifest.vpls = BakeManifest::Vpls{.count = 1, .clampDistance = 0.02f};
   bake.vpls = std::vector<Vpl>(1);  // replaced by the trace
   VplSettings vplSettings;
   vplSettings.maxVpls = 1024;

@@ -12,7 +12,6 @@
 #include <optional>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
 #include "render/vpl_shadow_maps.h"
@@ -442,9 +441,8 @@ BoxUnderVpls boxUnderVpls(glm::vec3 (*from)(glm::vec3 position)) {
     v.path = static_cast<uint32_t>(i);
     vpls.push_back(v);
   }
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(s.scene));
-  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", 0.02f}};
-  s.bake.manifestJson = manifest.dump();
+  s.bake.manifest = minimalManifest(s.scene);
+  s.bake.manifest.vpls = BakeManifest::Vpls{.count = vpls.size(), .clampDistance = 0.02f};
   s.bake.vpls = vpls;
   return s;
 }
@@ -594,10 +592,9 @@ TEST(VplShadow, EachVplOfAGroupReadsTheCubeOfItsOwnPart) {
   bake.layout.width = bake.layout.height = 1;
   bake.layout.texelSize = 1.0f;
   bake.irradiance = Image(1, 1);
-  nlohmann::json manifest = nlohmann::json::parse(minimalManifest(scene));
+  bake.manifest = minimalManifest(scene);
   constexpr float kClamp = 0.02f;  // m; every VPL is ≥ 0.6 m from the sphere
-  manifest["vpls"] = {{"count", vpls.size()}, {"clampDistance", kClamp}};
-  bake.manifestJson = manifest.dump();
+  bake.manifest.vpls = BakeManifest::Vpls{.count = vpls.size(), .clampDistance = kClamp};
   bake.vpls = vpls;
   RendererSettings settings;
   settings.mode = RenderMode::Vpl;

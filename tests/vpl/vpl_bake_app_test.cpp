@@ -11,8 +11,6 @@
 #include <fstream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "bake/bake_folder.h"
 #include "scene/load.h"
 
@@ -33,9 +31,9 @@ TEST(VplBakeApp, PointOverPlaneVplsMatchTheManifestAndTheClosedForm) {
   const Scene loaded = loadScene(scene);
   const Bake bake = readBake(out, loaded);
   ASSERT_TRUE(bake.vpls.has_value());
-  const nlohmann::json manifest = nlohmann::json::parse(bake.manifestJson);
-  const nlohmann::json& v = manifest.at("vpls");
-  EXPECT_EQ(v.at("count").get<std::size_t>(), bake.vpls->size());
+  ASSERT_TRUE(bake.manifest.vpls.has_value());
+  const BakeManifest::Vpls& v = *bake.manifest.vpls;
+  EXPECT_EQ(v.count, bake.vpls->size());
   EXPECT_LE(bake.vpls->size(), 3000u);
   glm::dvec3 sum(0.0);
   for (const Vpl& vpl : *bake.vpls) {
@@ -44,15 +42,15 @@ TEST(VplBakeApp, PointOverPlaneVplsMatchTheManifestAndTheClosedForm) {
   }
   const double omega = 4.0 * std::asin(0.8);
   const double exact = 0.5 * 1.0 * omega;
-  const double relError = v.at("relativeError").get<double>();
+  const double relError = v.relativeError;
   std::printf("VPLs: %zu, Σ Φ = %.5f W (relative error %.4f), closed form %.5f W\n",
               bake.vpls->size(), sum.g, relError, exact);
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(v.at("totalFlux")[c].get<double>(), sum[c], 1e-5 * sum[c]) << "channel " << c;
-    EXPECT_NEAR(v.at("fluxPerBounce")[0][c].get<double>(), sum[c], 1e-5 * sum[c]);
+    EXPECT_NEAR(v.totalFlux[c], sum[c], 1e-5 * sum[c]) << "channel " << c;
+    EXPECT_NEAR(v.fluxPerBounce.at(0)[c], sum[c], 1e-5 * sum[c]);
     EXPECT_NEAR(sum[c], exact, 5.0 * relError * exact) << "channel " << c;
   }
-  EXPECT_EQ(v.at("fluxPerBounce").size(), 1u) << "a lone plane reflects nothing onto itself";
+  EXPECT_EQ(v.fluxPerBounce.size(), 1u) << "a lone plane reflects nothing onto itself";
   fs::remove_all(out);
 }
 

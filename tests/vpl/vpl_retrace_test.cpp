@@ -32,7 +32,7 @@ TEST(VplRetrace, WithNothingMovedItIsTheBakesVplSetBitForBit) {
   ASSERT_FALSE(bake.vpls->empty());
   std::vector<glm::mat4> transforms;
   for (const Instance& instance : scene.instances) transforms.push_back(instance.transform);
-  PlacedVplTracer tracer(scene, vplSettingsOfBake(bake.manifestJson, bake.vpls->size()));
+  PlacedVplTracer tracer(scene, vplSettingsOfBake(bake.manifest, bake.vpls->size()));
   const std::vector<Vpl> again = tracer.trace(transforms);
   ASSERT_EQ(again.size(), bake.vpls->size());
   for (std::size_t i = 0; i < again.size(); ++i) {
@@ -46,17 +46,19 @@ TEST(VplRetrace, WithNothingMovedItIsTheBakesVplSetBitForBit) {
 }
 
 TEST(VplRetrace, ReadsTheCountRuleFromTheManifest) {
-  const VplSettings s = vplSettingsOfBake(
-      R"({"settings": {"seed": 7}, "vpls": {"cap": 123, "errorTarget": 0.05}})", 100);
+  BakeManifest manifest;
+  manifest.settings.seed = 7;
+  manifest.vpls = BakeManifest::Vpls{.errorTarget = 0.05, .cap = 123};
+  const VplSettings s = vplSettingsOfBake(manifest, 100);
   EXPECT_EQ(s.maxVpls, 123);
   EXPECT_FLOAT_EQ(s.relativeError, 0.05f);
   EXPECT_EQ(s.seed, 7u);
-  const VplSettings none = vplSettingsOfBake("not json", 100000);
+  const VplSettings none = vplSettingsOfBake(BakeManifest{}, 100000);
   EXPECT_EQ(none.maxVpls, VplSettings{}.maxVpls);
   EXPECT_EQ(none.seed, VplSettings{}.seed);
   // A tampered cap: held to about the bake's count.
-  const VplSettings huge =
-      vplSettingsOfBake(R"({"vpls": {"cap": 4000000000, "errorTarget": 1e-30}})", 16);
+  manifest.vpls = BakeManifest::Vpls{.errorTarget = 1e-30, .cap = 4000000000};
+  const VplSettings huge = vplSettingsOfBake(manifest, 16);
   EXPECT_EQ(huge.maxVpls, 2 * 16 + kVplBatch);
 }
 

@@ -1,0 +1,416 @@
+#include "bake/bake_manifest.h"
+
+#include "bake/byte_stream.h"
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/gltf_schema.h"  // checkJsonDepth
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+using Json = nlohmann::json;
+
+Json rgb(const glm::dvec3& v) {
+  return Json::array({v.r, v.g, v.b});
+}
+
+// Reads one object's fields; every failure is a LoadError naming bake.json and the field's
+// dotted path ("atlas.width").
+class Fields {
+ public:
+  Fields(const std::filesystem::path& file, const Json& object, std::string path)
+      : file_(file), object_(object), path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& why) const { throw LoadError(file_, why); }
+  std::string name(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  // "\"atlas.width\"", built by appends (GCC 12 warns falsely on `"\"" + string`).
+  std::string quoted(const std::string& name) const {
+    std::string q(1, '"');
+    q.append(name).push_back('"');
+    return q;
+  }
+
+  const Json* find(const char* key) const {
+    const auto it = object_.find(key);
+    return it == object_.end() ? nullptr : &*it;
+  }
+  const Json& need(const char* key, bool ok, const char* kind) const {
+    const Json* v = find(key);
+    if (v == nullptr || !ok) fail(std::string("no ").append(kind).append(" ") + quoted(name(key)));
+    return *v;
+  }
+  Fields object(const char* key) const {
+    const Json* v = find(key);
+    return {file_, need(key, v && v->is_object(), "object"), name(key)};
+  }
+  // An exact integer in [lo, hi]: 1.0, 2^32+1 for an int, or -1 for a count are refused.
+  int64_t integer(const char* key, int64_t lo, int64_t hi) const {
+    const Json* v = find(key);
+    const Json& j = need(key, v && v->is_number_integer(), "integer");
+    const bool tooBig =
+        j.is_number_unsigned() &&
+        j.get<uint64_t>() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max());
+    const int64_t value = tooBig ? hi : j.get<int64_t>();
+    if (tooBig || value < lo || value > hi)
+      fail(quoted(name(key)) + " is " + j.dump() + ", out of range " + std::to_string(lo) + ".." +
+           std::to_string(hi));
+    return value;
+  }
+  uint64_t count(const char* key) const {
+    return static_cast<uint64_t>(integer(key, 0, std::numeric_limits<int64_t>::max()));
+  }
+  double real(const char* key, double lo = 0.0,
+              double hi = std::numeric_limits<double>::max()) const {
+    const Json* v = find(key);
+    const double value = need(key, v && v->is_number(), "number").get<double>();
+    if (!(value >= lo && value <= hi))
+      fail(quoted(name(key)) + " is " + shortNumber(value) + ", out of range [" + shortNumber(lo) +
+           ", " + shortNumber(hi) + "]");
+    return value;
+  }
+  std::string text(const char* key) const {
+    const Json* v = find(key);
+    return need(key, v && v->is_string(), "string").get<std::string>();
+  }
+  bool boolean(const char* key) const {
+    const Json* v = find(key);
+    return need(key, v && v->is_boolean(), "boolean").get<bool>();
+  }
+  std::vector<std::string> texts(const char* key) const {
+    const Json* v = find(key);
+    std::vector<std::string> out;
+    for (const Json& s : need(key, v && v->is_array(), "array")) {
+      if (!s.is_string()) fail(quoted(name(key)) + " holds a non-string");
+      out.push_back(s.get<std::string>());
+    }
+    return out;
+  }
+  glm::dvec3 rgb(const Json& j, const std::string& what) const {
+    if (!j.is_array() || j.size() != 3) fail(quoted(what) + " is not an RGB triple");
+    glm::dvec3 c;
+    for (int k = 0; k < 3; ++k) {
+      if (!j[k].is_number() || !std::isfinite(j[k].get<double>()) || j[k].get<double>() < 0.0)
+        fail(quoted(what) + " holds a value that is not a finite non-negative number");
+      c[k] = j[k].get<double>();
+    }
+    return c;
+  }
+  const Json& json() const { return object_; }
+
+ private:
+  const std::filesystem::path& file_;
+  const Json& object_;
+  std::string path_;
+};
+
+constexpr int64_t kIntMax = std::numeric_limits<int>::max();
+
+BakeManifest::Vpls readVpls(const Fields& f) {
+  BakeManifest::Vpls v;
+  v.count = f.count("count");
+  v.paths = f.count("paths");
+  v.totalFlux = f.rgb(f.need("totalFlux", true, "array"), f.name("totalFlux"));
+  const Json* perBounce = f.find("fluxPerBounce");
+  for (const Json& flux : f.need("fluxPerBounce", perBounce && perBounce->is_array(), "array"))
+    v.fluxPerBounce.push_back(f.rgb(flux, f.name("fluxPerBounce")));
+  v.relativeError = f.real("relativeError");
+  v.errorTarget = f.real("errorTarget");
+  v.cap = f.integer("cap", 0, kIntMax);
+  v.clampDistance = f.real("clampDistance", 0.0, kMaxBakeLength);
+  return v;
+}
+
+BakeManifest::Visibility readVisibility(const Fields& f) {
+  BakeManifest::Visibility v;
+  v.lights = f.count("lights");
+  v.slotsPerTexel = f.count("slotsPerTexel");
+  v.samplesPerLight = f.count("samplesPerLight");
+  v.texelsReached = f.count("texelsReached");
+  v.texelsOverSlots = f.count("texelsOverSlots");
+  v.otherLightsShare = f.real("otherLightsShare", 0.0, 1.0);
+  v.rays = f.count("rays");
+  return v;
+}
+
+void readMeasured(const Fields& f, BakeManifest::Measured& m) {
+  const Fields s = f.object("seconds");
+  BakeManifest::Measured::Seconds& t = m.seconds;
+  for (auto [key, value] : {std::pair{"load", &t.load},
+                            {"atlas", &t.atlas},
+                            {"rayKernel", &t.rayKernel},
+                            {"coverage", &t.coverage},
+                            {"leakGuard", &t.leakGuard},
+                            {"irradiance", &t.irradiance},
+                            {"visibility", &t.visibility},
+                            {"denoise", &t.denoise},
+                            {"dilate", &t.dilate},
+                            {"stitch", &t.stitch},
+                            {"vpls", &t.vpls},
+                            {"total", &t.total}})
+    *value = s.real(key);
+  m.raysPerSecond = f.real("raysPerSecond");
+  m.peakBytes = f.real("peakBytes");
+  m.estimatedPeakBytes = f.real("estimatedPeakBytes");
+}
+
+}  // namespace
+
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::string fnv1a64Hex(std::span<const unsigned char> bytes) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016" PRIx64, fnv1a64(bytes));
+  return hex;
+}
+
+namespace {
+
+// The settings as bake.json writes them; their hash is of this text too.
+Json settingsJson(const BakeManifest::Settings& s) {
+  return {{"texelSize", s.texelSize},
+          {"texelBudget", s.texelBudget},
+          {"maxTexels", s.maxTexels},
+          {"maxSpp", s.maxSpp},
+          {"targetError", s.targetError},
+          {"maxDepth", s.maxDepth},
+          {"seed", s.seed},
+          {"denoise", s.denoise},
+          {"pointsPerTexel", s.pointsPerTexel},
+          {"vpls", s.vpls},
+          {"vplError", s.vplError}};
+}
+
+}  // namespace
+
+std::string settingsHash(const BakeManifest::Settings& settings) {
+  const std::string text = settingsJson(settings).dump();
+  return fnv1a64Hex({reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+}
+
+std::string manifestText(const BakeManifest& m) {
+  const BakeManifest::Atlas& a = m.atlas;
+  const BakeManifest::Measured::Seconds& t = m.measured.seconds;
+  Json files = Json::object();
+  for (const auto& [name, record] : m.files)
+    files[name] = {{"bytes", record.bytes}, {"hash", record.hash}};
+  Json json = {
+      {"formatVersion", m.formatVersion},
+      {"sceneHash", m.sceneHash},
+      {"sceneParts", m.sceneParts},
+      {"settingsHash", m.settingsHash},
+      {"scene", m.scene},
+      {"settings", settingsJson(m.settings)},
+      {"lightmap",
+       {{"quantity", "irradiance"},
+        {"unit", "W/m^2"},
+        {"holds",
+         "indirect light (two or more reflections counted at the viewer, i.e. light that "
+         "reflected at least once before reaching the texel) of every light and emitter, plus "
+         "the direct light of the baked-only lights listed in directBaked"},
+        {"indirect", "all"},
+        {"directBaked", m.directBaked}}},
+      {"atlas",
+       {{"width", a.width},
+        {"height", a.height},
+        {"texelSize", a.texelSize},
+        {"texelRule", a.texelRule},
+        {"staticArea", a.staticArea},
+        {"weightedArea", a.weightedArea},
+        {"padding", a.padding},
+        {"charts", a.charts},
+        {"regions", a.regions},
+        {"vplLitInstances", a.vplLitInstances},
+        {"utilisation", a.utilisation},
+        {"coveredTexels", a.coveredTexels},
+        {"invalidTexels", a.invalidTexels},
+        {"notes", a.notes}}},
+      {"samples",
+       {{"total", m.samples.total},
+        {"perTexelMean", m.samples.perTexelMean},
+        {"perTexelMin", m.samples.perTexelMin},
+        {"perTexelMax", m.samples.perTexelMax},
+        {"nonFinite", m.samples.nonFinite}}},
+      {"estimatedError",
+       {{"what",
+         "relative standard error of each texel's irradiance (luminance), from its "
+         "sample variance; before denoising"},
+        {"file", "error.exr"},
+        {"mean", m.estimatedError.mean},
+        {"p95", m.estimatedError.p95},
+        {"target", m.estimatedError.target}}},
+      {"leaks",
+       {{"pointsInsideGeometry", m.leaks.pointsInsideGeometry},
+        {"pointsAcrossWalls", m.leaks.pointsAcrossWalls},
+        {"invalidTexelsFilled", m.leaks.invalidTexelsFilled}}},
+      {"seams",
+       {{"count", m.seams.count},
+        {"relativeMismatchAfterStitching", m.seams.relativeMismatchAfterStitching}}},
+      {"rays", {{"traced", m.rays.traced}, {"backend", m.rays.backend}}},
+      {"measured",
+       {{"what",
+         "run-dependent: differs between bakes of identical inputs; everything else in "
+         "bake.json does not"},
+        {"seconds",
+         {{"load", t.load},
+          {"atlas", t.atlas},
+          {"rayKernel", t.rayKernel},
+          {"coverage", t.coverage},
+          {"leakGuard", t.leakGuard},
+          {"irradiance", t.irradiance},
+          {"visibility", t.visibility},
+          {"denoise", t.denoise},
+          {"dilate", t.dilate},
+          {"stitch", t.stitch},
+          {"vpls", t.vpls},
+          {"total", t.total}}},
+        {"raysPerSecond", m.measured.raysPerSecond},
+        {"peakBytes", m.measured.peakBytes},
+        {"estimatedPeakBytes", m.measured.estimatedPeakBytes},
+        {"memory",
+         "resident set in bytes: the process's peak at the end of the bake, and the estimate "
+         "made after the atlas (bake_memory.h, which depends on the thread count)"}}},
+      {"files", files}};
+  if (m.vpls) {
+    const BakeManifest::Vpls& v = *m.vpls;
+    Json perBounce = Json::array();
+    for (const glm::dvec3& flux : v.fluxPerBounce) perBounce.push_back(rgb(flux));
+    json["vpls"] = {
+        {"file", "vpls"},
+        {"count", v.count},
+        {"paths", v.paths},
+        {"unit", "W"},
+        {"holds",
+         "indirect light only: one VPL per diffuse hit of a light path from the first bounce "
+         "on; flux already multiplied by the albedo of its surface; it adds "
+         "Phi/pi cos(theta_vpl) cos(theta_x) / d^2 rho_x/pi (docs/vpl.md)"},
+        {"totalFlux", rgb(v.totalFlux)},
+        {"fluxPerBounce", perBounce},
+        {"relativeError", v.relativeError},
+        {"errorTarget", v.errorTarget},
+        {"cap", v.cap},
+        {"clampDistance", v.clampDistance}};
+  }
+  if (m.visibility) {
+    const BakeManifest::Visibility& v = *m.visibility;
+    json["visibility"] = {
+        {"file", "visibility.bin"},
+        {"what",
+         "per texel, the visible fraction V of each static area light's unshadowed irradiance "
+         "(bake/light_visibility.h); the renderer multiplies its exact polygon irradiance by it"},
+        {"lights", v.lights},
+        {"slotsPerTexel", v.slotsPerTexel},
+        {"samplesPerLight", v.samplesPerLight},
+        {"texelsReached", v.texelsReached},
+        {"texelsOverSlots", v.texelsOverSlots},
+        {"otherLightsShare", v.otherLightsShare},
+        {"rays", v.rays}};
+  }
+  return json.dump(1) + "\n";
+}
+
+BakeManifest parseManifest(const std::filesystem::path& file, const std::string& text) {
+  checkJsonDepth(file, text);  // before the recursive parser
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::exception& e) {
+    throw LoadError(file, std::string("not JSON: ") + e.what());
+  }
+  if (!json.is_object()) throw LoadError(file, "not a JSON object");
+  const Fields root(file, json, "");
+  BakeManifest m;
+  // The version first: an older bake is named as such, not by a field it lacks.
+  const Json* version = root.find("formatVersion");
+  if (version == nullptr || !version->is_number_integer())
+    root.fail("no integer \"formatVersion\"");
+  if (version->is_number_unsigned() ? version->get<uint64_t>() != kBakeFormatVersion
+                                    : version->get<int64_t>() != kBakeFormatVersion)
+    root.fail("format version " + version->dump() + ", this build reads version " +
+              std::to_string(kBakeFormatVersion) + ": rebake");
+  m.formatVersion = kBakeFormatVersion;
+  m.sceneHash = root.text("sceneHash");
+  m.scene = root.text("scene");
+  const Fields parts = root.object("sceneParts");
+  for (auto it = parts.json().begin(); it != parts.json().end(); ++it)
+    m.sceneParts[it.key()] = parts.text(it.key().c_str());
+  m.settingsHash = root.text("settingsHash");
+
+  const Fields s = root.object("settings");
+  m.settings.texelSize = s.real("texelSize", 0.0, kMaxBakeLength);
+  m.settings.texelBudget = s.integer("texelBudget", 0, std::numeric_limits<int64_t>::max());
+  m.settings.maxTexels = s.integer("maxTexels", 0, std::numeric_limits<int64_t>::max());
+  m.settings.maxSpp = s.integer("maxSpp", 0, kIntMax);
+  m.settings.targetError = s.real("targetError");
+  m.settings.maxDepth = s.integer("maxDepth", 0, kIntMax);
+  m.settings.seed = static_cast<uint32_t>(s.integer("seed", 0, UINT32_MAX));
+  m.settings.denoise = s.boolean("denoise");
+  m.settings.pointsPerTexel = s.integer("pointsPerTexel", 0, kIntMax);
+  m.settings.vpls = s.integer("vpls", 0, kIntMax);
+  m.settings.vplError = s.real("vplError");
+  m.directBaked = root.object("lightmap").texts("directBaked");
+
+  const Fields a = root.object("atlas");
+  m.atlas.width = static_cast<int>(a.integer("width", 1, 65536));
+  m.atlas.height = static_cast<int>(a.integer("height", 1, 65536));
+  m.atlas.texelSize = a.real("texelSize", 0.0, kMaxBakeLength);
+  m.atlas.texelRule = a.text("texelRule");
+  m.atlas.staticArea = a.real("staticArea");
+  m.atlas.weightedArea = a.real("weightedArea");
+  m.atlas.padding = static_cast<int>(a.integer("padding", 0, kIntMax));
+  m.atlas.charts = static_cast<int>(a.integer("charts", 0, kIntMax));
+  m.atlas.regions = a.count("regions");
+  m.atlas.vplLitInstances = a.count("vplLitInstances");
+  m.atlas.utilisation = a.real("utilisation", 0.0, 1.0);
+  m.atlas.coveredTexels = a.count("coveredTexels");
+  m.atlas.invalidTexels = a.count("invalidTexels");
+  m.atlas.notes = a.texts("notes");
+
+  const Fields samples = root.object("samples");
+  m.samples.total = samples.count("total");
+  m.samples.perTexelMean = samples.real("perTexelMean");
+  m.samples.perTexelMin = samples.count("perTexelMin");
+  m.samples.perTexelMax = samples.count("perTexelMax");
+  m.samples.nonFinite = samples.count("nonFinite");
+  const Fields error = root.object("estimatedError");
+  m.estimatedError.mean = error.real("mean");
+  m.estimatedError.p95 = error.real("p95");
+  m.estimatedError.target = error.real("target");
+  const Fields leaks = root.object("leaks");
+  m.leaks.pointsInsideGeometry = leaks.count("pointsInsideGeometry");
+  m.leaks.pointsAcrossWalls = leaks.count("pointsAcrossWalls");
+  m.leaks.invalidTexelsFilled = leaks.count("invalidTexelsFilled");
+  const Fields seams = root.object("seams");
+  m.seams.count = seams.count("count");
+  m.seams.relativeMismatchAfterStitching = seams.real("relativeMismatchAfterStitching");
+  const Fields rays = root.object("rays");
+  m.rays.traced = rays.count("traced");
+  m.rays.backend = rays.text("backend");
+  readMeasured(root.object("measured"), m.measured);
+  if (root.find("vpls")) m.vpls = readVpls(root.object("vpls"));
+  if (root.find("visibility")) m.visibility = readVisibility(root.object("visibility"));
+
+  if (root.find("files") == nullptr)
+    root.fail("no \"files\" (the sizes and hashes of the folder's files): rebake");
+  const Fields files = root.object("files");
+  if (files.json().empty()) root.fail("\"files\" is empty: rebake");
+  for (auto it = files.json().begin(); it != files.json().end(); ++it) {
+    const Fields record = files.object(it.key().c_str());
+    BakeFileRecord& r = m.files[it.key()];
+    r.bytes = record.count("bytes");
+    r.hash = record.text("hash");
+  }
+  return m;
+}
+
+}  // namespace bounce
