@@ -2,6 +2,7 @@
 
 #include <fcntl.h>  // AT_FDCWD
 #include <stdio.h>  // renameat2, RENAME_EXCHANGE (glibc ≥ 2.28)
+#include <signal.h>  // kill(pid, 0): is the process alive
 #include <unistd.h>
 
 #include <algorithm>
@@ -166,6 +167,26 @@ std::string whyStale(const fs::path& manifestFile, const BakeManifest& m, const 
   if (editedSince) return "the scene changed since the bake" + edited;
   return "made for another scene or the scene changed since the bake (bake.json records no "
          "per-part hashes to tell which)";
+}
+
+// Removes "<dir>.tmp-<pid>" and "<dir>.old-<pid>" folders whose process is gone: what a bake
+// killed while it wrote (kill -9, a power cut) leaves beside the folder.
+void removeLeftovers(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  const std::string name = dir.filename().string();
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent, ec)) {
+    const std::string other = entry.path().filename().string();
+    for (const std::string mark : {".tmp-", ".old-"}) {
+      const std::string prefix = name + mark;
+      if (!other.starts_with(prefix) || other.size() == prefix.size()) continue;
+      const std::string pid = other.substr(prefix.size());
+      if (pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) continue;
+      const pid_t owner = static_cast<pid_t>(std::stol(pid));
+      if (owner != ::getpid() && ::kill(owner, 0) != 0 && errno == ESRCH)
+        fs::remove_all(entry.path(), ec);
+    }
+  }
 }
 
 // Swaps `fresh` into `dir`. With an existing `dir`, renameat2(RENAME_EXCHANGE) swaps the two
@@ -394,6 +415,7 @@ void writeBake(const fs::path& dir, const Bake& bake) {
   fs::path tmp = dir;
   tmp += ".tmp-" + std::to_string(::getpid());
   std::error_code ec;
+  removeLeftovers(dir);
   fs::remove_all(tmp, ec);
   fs::create_directories(tmp, ec);
   if (ec) fail("cannot create " + tmp.string() + ": " + ec.message());

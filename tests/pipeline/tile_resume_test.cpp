@@ -167,6 +167,9 @@ TEST_F(TileBake, ResumeAfterKillsAtRandomMomentsGivesTheSameBytes) {
   const std::string context = "random seed " + std::to_string(seed) + ", kills after" + kills;
   EXPECT_GE(midBake, 2) << context;
   EXPECT_FALSE(fs::exists(journal)) << context;
+  for (const auto& entry : fs::directory_iterator(dir_))  // a kill while writing leaves one
+    EXPECT_EQ(entry.path().filename().string().find("resumed.bake.tmp-"), std::string::npos)
+        << context << ": " << entry.path() << " was left";
   expectSameBake(dir_ / "whole.bake", out, context);
 }
 
