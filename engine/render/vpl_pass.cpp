@@ -84,8 +84,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   VplLightCutSettings cutSettings;
   cutSettings.kappa = settings.culling ? settings.kappa : std::numeric_limits<float>::infinity();
   cutSettings.maxCellsPerAxis = settings.culling ? settings.maxCellsPerAxis : 1;
-  const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lo;
-  const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.hi;
+  const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lower;
+  const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.upper;
   cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
   // The cut table must fit one texture buffer (GL 3.3 promises only 65536 texels): coarser grids
   // until it does (fewer cells, the same κ: fewer texels, more lights per cell).
