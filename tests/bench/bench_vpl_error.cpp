@@ -32,6 +32,7 @@
 #include "gl/render_target.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "image/luminance.h"
 #include "indirect_accuracy.h"
 #include "indirect_reference.h"
 #include "scene/load.h"
@@ -55,7 +56,7 @@ SquaredError squaredError(const test::IndirectComparison& c, const Image& render
     const double yt = luminance(reference.radiance.pixels[i]);
     const double d = (luminance(rendered.pixels[i]) - yt) / yt;
     const glm::vec3 s = reference.stdError.pixels[i];
-    const double sigma = (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b) / yt;
+    const double sigma = luminance(glm::dvec3(s)) / yt;
     e.relMse += d * d;
     e.refRelVar += sigma * sigma;
   }

@@ -53,6 +53,7 @@
 #include "bake/bake_folder.h"
 #include "bake/vpl_occlusion.h"
 #include "image/image_io.h"
+#include "image/luminance.h"
 #include "ray/ray_kernel.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
@@ -183,7 +184,7 @@ Comparison compare(const Image& rendered, const Image& traced, const Image& stdE
           yr += luminance(rendered.pixels[i]);
           // σ of the luminance ≤ Σ_c w_c σ_c (the channels' errors are correlated).
           const glm::vec3 s = stdError.pixels[i];
-          const double sigma = 0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b;
+          const double sigma = luminance(glm::dvec3(s));
           variance += sigma * sigma;
         }
       const double n = kBlock * kBlock;
@@ -564,7 +565,7 @@ TEST_F(VplCorner, NoPixelExceedsTheTruthByMoreThanOneClampedVpl) {
       const glm::vec3 rho = loaded.materials.at(geometry.triangleMaterial[hit.triangle]).albedo;
       const double c = luminance(rho * fluxMax) / (2.0 * kPi * kPi * r * r);
       const glm::vec3 s = sigma.pixels[i];
-      const double noise = 4.0 * (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b);
+      const double noise = 4.0 * luminance(glm::dvec3(s));
       const double excess = luminance(vpl.pixels[i]) - luminance(truth.pixels[i]) - noise;
       // Unclamped, approximately: the removed part (vpl-clamp's green: lum(E_removed)/π on a
       // white surface) times the surface's luminance albedo.

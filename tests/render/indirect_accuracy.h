@@ -21,6 +21,7 @@
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
 #include "gl/shader.h"
+#include "image/luminance.h"
 #include "pixel_surfaces.h"
 #include "ray/ray_kernel.h"
 #include "render/forward_renderer.h"
@@ -119,7 +120,7 @@ inline IndirectComparison compareIndirect(const Scene& scene, const Camera& came
     const glm::vec3 s = reference.stdError.pixels[i];
     sumError += std::abs(yr - yt) / yt;
     sumBias += (yr - yt) / yt;
-    sumSigma += (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b) / yt;
+    sumSigma += luminance(glm::dvec3(s)) / yt;
     ++c.pixels;
   }
   if (c.pixels > 0) {
