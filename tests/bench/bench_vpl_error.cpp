@@ -1,5 +1,5 @@
-// The VPL term's error against its frame time (docs/vpl.md, "Error against frame time"; issue 8,
-// measurement 4). Cornell box, one path-traced indirect-only reference (cached as EXR with its
+// The VPL term's error against its frame time (docs/vpl.md, "Error against frame time").
+// Cornell box, one path-traced indirect-only reference (cached as EXR with its
 // per-pixel standard error), compared as tests/render/indirect_accuracy.h does over the pixels
 // that see one flat piece of a static, non-emissive surface. For each VPL cap (the baker's
 // generator in-process, error target off so the cap is the count, one seed) and each of

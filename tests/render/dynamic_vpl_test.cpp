@@ -1,6 +1,6 @@
-// Issue 8, measurement 1: the dynamic sphere of content/cornell_box_dynamic at three positions
-// in the box, its indirect radiance from the renderer's VPLs against the path tracer, both
-// through their command lines with the same --move, so the tools are shown to see one scene:
+// The VPL term on a dynamic object: the dynamic sphere of content/cornell_box_dynamic at three
+// positions in the box, its indirect radiance from the renderer's VPLs against the path tracer,
+// both through their command lines with the same --move, so the tools are shown to see one scene:
 //
 //   bounce-bake  cornell_box_dynamic.gltf -o B           (VPLs: bounce-bake's defaults)
 //   bounce-render W.json --bake B --mode indirect --move sphere X Y Z --out r.exr
@@ -440,11 +440,11 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
   }
 }
 
-// Measurement 1 of issue 8 through the tools: bounce-render --mode indirect (the dynamic sphere
-// gets ρ/π·E_vpl from VPLs) against bounce-trace --indirect-only, both with --move. bounce-render
-// traces the VPLs again with the sphere at its --move position (--dynamic-vpls retrace, the
-// default; vpl/vpl_retrace.h) with the bake's count rule (4N VPLs, kBakeVpls, so that VPL noise
-// stays within the budget): they carry the sphere's shadow on the room and the light it
+// The dynamic sphere against the path tracer through the tools: bounce-render --mode indirect (the
+// dynamic sphere gets ρ/π·E_vpl from VPLs) against bounce-trace --indirect-only, both with --move.
+// bounce-render traces the VPLs again with the sphere at its --move position (--dynamic-vpls
+// retrace, the default; vpl/vpl_retrace.h) with the bake's count rule (4N VPLs, kBakeVpls, so that
+// VPL noise stays within the budget): they carry the sphere's shadow on the room and the light it
 // reflects into the room and back onto itself.
 // VPL shadow maps on (bounce-render's default: 4 cubes per part of each VPL group). Measured
 // 6.64 / 1.69 / 6.78% (bias +0.4 / −0.5 / −6.1%); without VPL shadows 8.58 / 8.85 / 6.71%.
@@ -472,7 +472,7 @@ TEST_F(DynamicSphere, RendererLightsTheSphereWithin10PercentOfThePathTracer) {
   }
 }
 
-// Issue 8, measurement 2: the singularity. content/vpl_corner is a concave box corner (floor and
+// The VPL clamp at its singularity: content/vpl_corner is a concave box corner (floor and
 // two walls meeting at the origin, a 1 W/sr point light): every face sees every other, so VPL
 // light there has no visibility error, only VPL noise and the clamp. bounce-render --mode vpl
 // draws every surface's indirect light from the bake's VPLs (count from bounce-bake's defaults);

@@ -1,5 +1,6 @@
-// The renderer's baked indirect light against the reference path tracer, as the issue measures
-// it: bake a scene (atlas + bakeLightmap, in-process), draw `--mode indirect`, trace
+// The renderer's baked indirect light against the reference path tracer, as docs/renderer.md
+// ("Baked light") measures it: bake a scene (atlas + bakeLightmap, in-process), draw `--mode
+// indirect`, trace
 // `--indirect-only` with the same camera, and compare over the pixels that see one flat piece
 // of a static, non-emissive surface (pixel_surfaces.h). Used by the CI-sized test and the
 // full-size benchmark (tests/bench/bench_indirect_accuracy.cpp).
