@@ -98,7 +98,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   }
   if (settings.culling && !vpls.empty()) {
     // A cut that keeps more than half the VPLs costs more than it saves (its per-cell lists
-    // are read through the texture cache; docs/vpl.md, "Frame time"): one cell, every VPL.
+    // are read through the texture cache; docs/vpl_measurements.md, "Frame time"): one cell, every
+    // VPL.
     double evaluated = 0.0;
     for (std::size_t c = 0; c < cuts_.cellEntries.size(); ++c)
       evaluated += static_cast<double>(cuts_.lightsEvaluated(c));

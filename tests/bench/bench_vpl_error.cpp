@@ -1,4 +1,4 @@
-// The VPL term's error against its frame time (docs/vpl.md, "Error against frame time").
+// The VPL term's error against its frame time (docs/vpl_measurements.md, "Error against frame time").
 // Cornell box, one path-traced indirect-only reference (cached as EXR with its
 // per-pixel standard error), compared as tests/render/indirect_accuracy.h does over the pixels
 // that see one flat piece of a static, non-emissive surface. For each VPL cap (the baker's

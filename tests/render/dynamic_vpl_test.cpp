@@ -71,7 +71,7 @@ namespace fs = std::filesystem;
 constexpr int kSize = 24;  // pixels per side
 constexpr int kBlock = 4;  // pixels per side of a compared block
 // 4x bounce-bake's default: VPL noise on the sphere at the default N reaches 10.7% (mid-box,
-// "traced with the sphere" row of docs/vpl.md); it falls as 1/sqrt(N), so 4N halves it.
+// "traced with the sphere" row of docs/vpl_measurements.md); it falls as 1/sqrt(N), so 4N halves it.
 constexpr int kBakeVpls = 16384;
 constexpr int kSpp = 2560;       // tracer samples per pixel: its noise adds ≤ 3.5% (asserted)
 constexpr float kRadius = 0.1f;  // the sphere's, m (make_cornell_box_dynamic.py)
@@ -351,7 +351,7 @@ std::vector<Vpl> shadowedByDynamics(const Scene& scene, const VplSet& set) {
 // +13..+39% here). The others show what the VPL estimate is worth once the VPLs know the
 // sphere: VPL noise and the clamp (N ≈ 4096 VPLs from ~1700 light paths: 3-11% on the sphere;
 // 4N: a few %). Asserted: the reference is quiet enough, and 4N VPLs traced with the sphere
-// meet the 10% (the comparison itself is sound); the rest is printed for docs/vpl.md.
+// meet the 10% (the comparison itself is sound); the rest is printed for docs/vpl_measurements.md.
 TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
   for (std::size_t p = 0; p < std::size(kPositions); ++p) {
     const Placement& m = placements_[p];
