@@ -51,19 +51,20 @@ struct VplIrradiance {
 // The irradiance `vpl` gives at x (unit normal n), unoccluded, with the geometry term capped at
 // 1/r² (r2 = r², the clamp distance squared; 0: no cap; docs/vpl.md, "The clamp"):
 //     E = Φ/π · cosθ_vpl · cosθ_x / max(d², r²),    removed = Φ/π · cosθ_vpl · cosθ_x / d² − E.
-// nullopt when nothing arrives: x behind the VPL, the VPL behind x, or the two at one point (the
-// caller need not test visibility then). The one CPU statement of the formula: the baker's
-// gather (baker/vpl/vpl_gather.h) and the renderer's CPU sums (bake/vpl_groups.h) add it up;
+// nullopt when nothing arrives: x behind the VPL, the VPL behind x, the two at one point or
+// a distance or cosine that is not finite (the caller need not test visibility then). The one CPU
+// statement of the formula: the baker's gather (baker/vpl/vpl_gather.h), the renderer's CPU sums
+// (bake/vpl_groups.h) and the path tracer's VPL light (trace/path_tracer.h) use it;
 // shaders/vpl.glsl is its GLSL twin.
 inline std::optional<VplIrradiance> vplIrradiance(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n,
                                                   double r2) {
   const glm::dvec3 d = glm::dvec3(vpl.position) - x;
   const double d2 = glm::dot(d, d);
-  if (!(d2 > 0.0)) return std::nullopt;
+  if (!(d2 > 0.0) || !std::isfinite(d2)) return std::nullopt;
   const double dist = std::sqrt(d2);
   const double cosX = glm::dot(n, d) / dist;
   const double cosV = -glm::dot(glm::dvec3(vpl.normal), d) / dist;
-  if (cosX <= 0.0 || cosV <= 0.0) return std::nullopt;
+  if (!(cosX > 0.0) || !(cosV > 0.0)) return std::nullopt;
   // I(ω) = Φ/π · cosθ_vpl (W/sr); E = I · cosθ_x / d².
   const glm::dvec3 intensity = glm::dvec3(vpl.flux) * (cosV / std::numbers::pi);
   const glm::dvec3 unclamped = intensity * (cosX / d2);
