@@ -64,6 +64,7 @@ vec3 indirectIrradiance(vec2 atlasUv, vec3 vplIrradiance) {
   return uVplReceiver ? vplIrradiance : bakedIrradiance(atlasUv);
 }
 
+// Rec. 709 luminance: the weights of engine/image/luminance.h, which must stay equal to these.
 float luminance(vec3 c) {
   return dot(c, vec3(0.2126, 0.7152, 0.0722));
 }

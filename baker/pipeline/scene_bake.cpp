@@ -207,7 +207,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     vplSettings.progress = stage.get();
     // VPL paths run in the static scene too (baker/vpl/vpl_generate.h: staticScene).
     vpls = generateVpls(statics, geometry, *kernel, vplSettings);
-    vplArea = surfaceArea(geometry);
+    vplArea = staticSurfaceArea(statics, geometry);
     stage.reset();
   }
   const double vplSeconds = lap.lap();

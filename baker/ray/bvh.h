@@ -26,29 +26,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/box.h"
+
 namespace bounce {
-
-struct Box {
-  glm::vec3 lower{std::numeric_limits<float>::infinity()};
-  glm::vec3 upper{-std::numeric_limits<float>::infinity()};
-
-  void grow(glm::vec3 p) {
-    lower = glm::min(lower, p);
-    upper = glm::max(upper, p);
-  }
-  void grow(const Box& b) {
-    lower = glm::min(lower, b.lower);
-    upper = glm::max(upper, b.upper);
-  }
-  bool empty() const { return lower.x > upper.x; }
-  glm::vec3 centre() const { return 0.5f * (lower + upper); }
-  // Surface area in m² (0 for an empty box); proportional to the chance a random ray hits it.
-  float surfaceArea() const {
-    if (empty()) return 0.0f;
-    const glm::vec3 d = upper - lower;
-    return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
-  }
-};
 
 struct BvhNode {
   float bounds[2][3];  // [lower, upper][x, y, z], metres

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
+#include "bake/vpl.h"
 #include "scene/light_falloff.h"
 #include "trace/sampling.h"
 
@@ -144,19 +146,16 @@ glm::vec3 PathTracer::deltaLight(const SurfacePoint& point, const Light& light) 
   return point.albedo * kInvPi * incident * glm::dot(point.shadingNormal, wi);
 }
 
-// bake/vpl.h: L = Φ/π · cosθ_vpl · cosθ_x / d² · ρ_x/π, a cosine emitter of intensity Φ/π·cosθ.
+// L = ρ_x/π · E with E the VPL's irradiance (bake/vpl.h vplIrradiance, unclamped), a cosine
+// emitter of intensity Φ/π·cosθ; the VPL must also lie in front of the geometric surface.
 glm::vec3 PathTracer::virtualLight(const SurfacePoint& point, const Vpl& vpl) const {
-  const glm::vec3 toLight = vpl.position - point.position;
-  const float dist2 = glm::dot(toLight, toLight);
-  if (!(dist2 > 0.0f) || !std::isfinite(dist2)) return glm::vec3(0.0f);
-  const glm::vec3 wi = toLight / std::sqrt(dist2);
-  const float cosLight = glm::dot(vpl.normal, -wi);
-  const float cosSurface = glm::dot(point.shadingNormal, wi);
-  if (cosLight <= 0.0f || cosSurface <= 0.0f || glm::dot(point.geometricNormal, wi) <= 0.0f)
+  const std::optional<VplIrradiance> e =
+      vplIrradiance(vpl, glm::dvec3(point.position), glm::dvec3(point.shadingNormal), 0.0);
+  if (!e || !(glm::dot(point.geometricNormal, vpl.position - point.position) > 0.0f))
     return glm::vec3(0.0f);
   if (!visible(point.position, point.geometricNormal, vpl.position, vpl.normal))
     return glm::vec3(0.0f);
-  return point.albedo * kInvPi * vpl.flux * kInvPi * (cosLight * cosSurface / dist2);
+  return point.albedo * kInvPi * glm::vec3(e->irradiance);
 }
 
 glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int depth,

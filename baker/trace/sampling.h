@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "image/luminance.h"
+
 namespace bounce {
 
 inline constexpr float kPi = 3.14159265358979323846f;
@@ -66,9 +68,6 @@ inline float powerHeuristic(float pdfA, float pdfB) {
 
 inline float maxComponent(glm::vec3 v) {
   return std::max(v.x, std::max(v.y, v.z));
-}
-inline float luminance(glm::vec3 rgb) {
-  return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b;
 }
 inline bool isFinite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -1,7 +1,6 @@
 #include "vpl/vpl_gather.h"
 
-#include <cmath>
-#include <numbers>
+#include <optional>
 
 namespace bounce {
 
@@ -29,20 +28,10 @@ VplIrradiance gatherVplIrradiance(std::span<const Vpl> vpls, glm::vec3 position,
   const double r2 = static_cast<double>(clampDistance) * clampDistance;
   const glm::dvec3 x(position), n(normal);
   for (const Vpl& vpl : vpls) {
-    const glm::dvec3 d = glm::dvec3(vpl.position) - x;
-    const double d2 = glm::dot(d, d);
-    if (!(d2 > 0.0)) continue;
-    const double dist = std::sqrt(d2);
-    const double cosX = glm::dot(n, d) / dist;
-    const double cosV = -glm::dot(glm::dvec3(vpl.normal), d) / dist;
-    if (cosX <= 0.0 || cosV <= 0.0) continue;
+    const std::optional<VplIrradiance> e = vplIrradiance(vpl, x, n, r2);
+    if (!e) continue;
     if (kernel != nullptr && !visible(*kernel, position, normal, vpl)) continue;
-    // I(ω) = Φ/π · cosθ_vpl (W/sr); E = I · cosθ_x / d².
-    const glm::dvec3 intensity = glm::dvec3(vpl.flux) * (cosV / std::numbers::pi);
-    const glm::dvec3 unclamped = intensity * (cosX / d2);
-    const glm::dvec3 clamped = intensity * (cosX / std::max(d2, r2));
-    out.irradiance += clamped;
-    out.removed += unclamped - clamped;
+    out += *e;
   }
   return out;
 }

@@ -19,11 +19,6 @@
 
 namespace bounce {
 
-struct VplIrradiance {
-  glm::dvec3 irradiance{0.0};  // E, W/m² (clamped when r > 0)
-  glm::dvec3 removed{0.0};     // what the clamp took away: E_unclamped − E, W/m²
-};
-
 // kernel: visibility between x and each VPL (nullptr: every VPL visible). r = 0: no clamp.
 VplIrradiance gatherVplIrradiance(std::span<const Vpl> vpls, glm::vec3 position, glm::vec3 normal,
                                   const RayKernel* kernel, float clampDistance);

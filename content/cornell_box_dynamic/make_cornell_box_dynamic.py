@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes cornell_box_dynamic.gltf: the Cornell box of ../cornell_box (same generator) plus a
-white sphere in a node marked dynamic (extras.bounce.mobility = "dynamic"), for the VPL work of
-issue 8 (standard library only).
+white sphere in a node marked dynamic (extras.bounce.mobility = "dynamic"), for the VPL term on
+dynamic objects (standard library only).
 
 Run from anywhere (optional argument: another output path):
     /usr/bin/python3 content/cornell_box_dynamic/make_cornell_box_dynamic.py

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes vpl_corner.gltf: a concave box corner for the VPL clamp (issue 8, measurement 2)
+"""Writes vpl_corner.gltf: a concave box corner for the VPL clamp at its singularity
 (standard library only).
 
 Three 0.5 m squares meet at the origin: a floor (y = 0, facing +y, white), a red wall (x = 0,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Direct light in a real room, error against frame time (docs/shadows.md, "Baked visibility";
-# issue measurement 6): the Conference Room under eight ceiling panels written as one mesh
+# Direct light in a real room, error against frame time (docs/shadows.md, "Baked visibility"):
+# the Conference Room under eight ceiling panels written as one mesh
 # (content/conference/conference_panels.json) rendered --mode direct at 1280x720 with shadow maps
 # only (no bake) and with the static area lights' baked visibility at two texel sizes, each
 # box-filtered 4x4 and compared with bounce-trace --direct-only (320x180, 2048 spp).

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Contact sheet of the dynamic sphere at three positions in the Cornell box (issue 8), modes
-full, indirect and vpl, from PNGs rendered by bounce-render (docs/vpl.md, "The dynamic sphere"):
+"""Contact sheet of the dynamic sphere at three positions in the Cornell box, modes
+full, indirect and vpl, from PNGs rendered by bounce-render (docs/vpl.md, "Dynamic objects"):
 
     S=content/cornell_box_dynamic/cornell_box_dynamic.gltf
     bounce-bake $S -o dyn.bake

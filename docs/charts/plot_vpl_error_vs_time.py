@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The VPL term's error against its frame time, with and without culling and VPL shadow maps,
-and the lightmap's point (docs/vpl.md, "Error against frame time").
+and the lightmap's point (docs/vpl_measurements.md, "Error against frame time").
 
     nice build/release/bin/bench_vpl_error --ref-spp 4096 --ref out/vpl_error_ref128.exr \
         --out docs/charts/vpl_error_vs_time.csv

@@ -1,5 +1,5 @@
 """Frame time of the VPL term against the VPL count, with and without the per-cell lightcuts
-(docs/vpl.md, "Frame time against the VPL count").
+(docs/vpl_measurements.md, "Frame time against the VPL count").
 
     build/release/bin/bench_vpl --benchmark_format=csv > docs/charts/vpl_frame_time.csv
     /usr/bin/python3 docs/charts/plot_vpl_frame_time.py docs/charts/vpl_frame_time.csv \

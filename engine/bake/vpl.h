@@ -13,7 +13,11 @@
 // at the VPL between its normal and x, θ_x the angle at x between its normal and the VPL.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <numbers>
+#include <optional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -32,6 +36,43 @@ struct Vpl {
   glm::vec3 from{0.0f};
   uint32_t path = 0;
 };
+
+// The light one VPL brings to a receiver, W/m² per channel.
+struct VplIrradiance {
+  glm::dvec3 irradiance{0.0};  // E, clamped when r > 0
+  glm::dvec3 removed{0.0};     // what the clamp took away: E_unclamped − E
+  VplIrradiance& operator+=(const VplIrradiance& o) {
+    irradiance += o.irradiance;
+    removed += o.removed;
+    return *this;
+  }
+};
+
+// The irradiance `vpl` gives at x (unit normal n), unoccluded, with the geometry term capped at
+// 1/r² (r2 = r², the clamp distance squared; 0: no cap; docs/vpl.md, "The clamp"):
+//     E = Φ/π · cosθ_vpl · cosθ_x / max(d², r²),    removed = Φ/π · cosθ_vpl · cosθ_x / d² − E.
+// nullopt when nothing arrives: x behind the VPL, the VPL behind x, the two at one point or
+// a distance or cosine that is not finite (the caller need not test visibility then). The one CPU
+// statement of the formula: the baker's gather (baker/vpl/vpl_gather.h), the renderer's CPU sums
+// (bake/vpl_groups.h) and the path tracer's VPL light (trace/path_tracer.h) use it;
+// shaders/vpl.glsl is its GLSL twin.
+inline std::optional<VplIrradiance> vplIrradiance(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n,
+                                                  double r2) {
+  const glm::dvec3 d = glm::dvec3(vpl.position) - x;
+  const double d2 = glm::dot(d, d);
+  if (!(d2 > 0.0) || !std::isfinite(d2)) return std::nullopt;
+  const double dist = std::sqrt(d2);
+  const double cosX = glm::dot(n, d) / dist;
+  const double cosV = -glm::dot(glm::dvec3(vpl.normal), d) / dist;
+  if (!(cosX > 0.0) || !(cosV > 0.0)) return std::nullopt;
+  // I(ω) = Φ/π · cosθ_vpl (W/sr); E = I · cosθ_x / d².
+  const glm::dvec3 intensity = glm::dvec3(vpl.flux) * (cosV / std::numbers::pi);
+  const glm::dvec3 unclamped = intensity * (cosX / d2);
+  VplIrradiance e;
+  e.irradiance = intensity * (cosX / std::max(d2, r2));
+  e.removed = unclamped - e.irradiance;
+  return e;
+}
 
 // The VPL of `members` (not empty) nearest `point`: a point on a real surface and its normal,
 // for a group whose representative, a centroid, may lie inside an object (floor VPLs on both

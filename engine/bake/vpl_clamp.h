@@ -19,7 +19,12 @@ namespace bounce {
 float vplClampDistance(double surfaceArea, std::size_t vplCount);
 // Σ triangle areas, m² (non-finite areas skipped).
 double surfaceArea(const WorldGeometry& geometry);
-// Σ triangle areas of the static instances (the surfaces VPLs are generated on), m².
+// The clamp's A: Σ triangle areas of the static instances (the surfaces VPLs are generated on),
+// m², non-finite areas skipped. `geometry` is flatten(scene); the baker passes its static scene
+// (every instance static), the renderer the whole one: both sum the same triangles in the same
+// order, so the baker's r and the renderer's fallback for a manifest without one agree.
+double staticSurfaceArea(const Scene& scene, const WorldGeometry& geometry);
+// The same, flattening `scene` itself.
 double staticSurfaceArea(const Scene& scene);
 // bake.json's "vpls"."clampDistance" (m; the reader keeps it in [0, kMaxBakeLength]), nullopt
 // when the manifest describes no VPLs.

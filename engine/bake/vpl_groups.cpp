@@ -199,25 +199,15 @@ VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 
 
 namespace {
 
-void addLight(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n, double r2, VplIrradianceSum& sum) {
-  const glm::dvec3 d = glm::dvec3(vpl.position) - x;
-  const double d2 = glm::dot(d, d);
-  if (!(d2 > 0.0)) return;
-  const double dist = std::sqrt(d2);
-  const double cosX = glm::dot(n, d) / dist;
-  const double cosY = -glm::dot(glm::dvec3(vpl.normal), d) / dist;
-  if (cosX <= 0.0 || cosY <= 0.0) return;
-  // I(ω) = Φ/π · cosθ_y (W/sr); E = I · cosθ_x / max(d², r²).
-  const glm::dvec3 intensity = glm::dvec3(vpl.flux) * (cosY / std::numbers::pi);
-  sum.irradiance += intensity * (cosX / std::max(d2, r2));
-  sum.removed += intensity * (cosX / d2 - cosX / std::max(d2, r2));
+void addLight(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n, double r2, VplIrradiance& sum) {
+  if (const std::optional<VplIrradiance> e = vplIrradiance(vpl, x, n, r2)) sum += *e;
 }
 
 }  // namespace
 
-VplIrradianceSum vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
-                                  glm::vec3 n, float clampDistance) {
-  VplIrradianceSum sum;
+VplIrradiance vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
+                               glm::vec3 n, float clampDistance) {
+  VplIrradiance sum;
   const double r2 = static_cast<double>(clampDistance) * clampDistance;
   const std::span<const Vpl> lights = groups.lights();
   const glm::uvec2 range = cuts.cellEntries[cuts.cellOf(p)];
@@ -227,9 +217,9 @@ VplIrradianceSum vplCutIrradiance(const VplGroups& groups, const VplLightCuts& c
   return sum;
 }
 
-VplIrradianceSum vplIrradianceSum(std::span<const Vpl> lights, glm::vec3 p, glm::vec3 n,
-                                  float clampDistance) {
-  VplIrradianceSum sum;
+VplIrradiance vplIrradianceSum(std::span<const Vpl> lights, glm::vec3 p, glm::vec3 n,
+                               float clampDistance) {
+  VplIrradiance sum;
   const double r2 = static_cast<double>(clampDistance) * clampDistance;
   for (const Vpl& vpl : lights) addLight(vpl, glm::dvec3(p), glm::dvec3(n), r2, sum);
   return sum;

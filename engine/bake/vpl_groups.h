@@ -118,17 +118,12 @@ struct VplLightCuts {
 VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 hi,
                                const VplLightCutSettings& settings);
 
-struct VplIrradianceSum {
-  glm::dvec3 irradiance{0.0};  // E = Σ Φ/π · cosθ_y · cosθ_x / max(d², r²), W/m²
-  glm::dvec3 removed{0.0};  // Σ Φ/π · cosθ_y · cosθ_x · (1/d² − 1/max(d², r²)), W/m²
-};
-
 // What shaders/vpl.glsl computes at receiver p (unit normal n) with visibility 1, on the CPU:
-// the lights of p's cell, clamp distance r (m; 0: none).
-VplIrradianceSum vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
-                                  glm::vec3 n, float clampDistance);
+// Σ vplIrradiance (bake/vpl.h) over the lights of p's cell, clamp distance r (m; 0: none).
+VplIrradiance vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
+                               glm::vec3 n, float clampDistance);
 // The same sum over `lights` (every one evaluated).
-VplIrradianceSum vplIrradianceSum(std::span<const Vpl> lights, glm::vec3 p, glm::vec3 n,
-                                  float clampDistance);
+VplIrradiance vplIrradianceSum(std::span<const Vpl> lights, glm::vec3 p, glm::vec3 n,
+                               float clampDistance);
 
 }  // namespace bounce

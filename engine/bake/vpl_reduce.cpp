@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "image/luminance.h"
+
 namespace bounce {
 namespace {
 
 double weight(const Vpl& v) {
-  return 0.2126 * v.flux.r + 0.7152 * v.flux.g + 0.0722 * v.flux.b;
+  return luminance(glm::dvec3(v.flux));
 }
 
 // 0..5: the dominant axis of the normal and its sign.

@@ -1,4 +1,4 @@
-// Reduction of a VPL set to at most K runtime VPLs (the optional clustering), keeping
+// Reduction of a VPL set to at most K runtime VPLs (optional clustering), keeping
 // the total flux per channel: each cluster becomes one VPL whose flux is the sum of its members'
 // (in double, rounded once), at its members' flux-weighted centroid (luminance weights, so the
 // first-order term of the far field, the "dipole", vanishes), with the normalised flux-weighted

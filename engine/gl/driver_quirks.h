@@ -1,6 +1,7 @@
 // Driver behaviour the GL layer works around, each a named, commented flag (the model is
 // Filament's OpenGLContext `bugs`). Private to the GL layer; the flags are facts measured on
-// Mesa 22.3 (see /work/shared/TOOLCHAIN.md), kept in one place so a new driver is one edit.
+// Mesa 22.3 (llvmpipe, the Debian 12 package; docs/dependencies.md), kept in one place so a new
+// driver is one edit.
 #pragma once
 
 namespace bounce::gl {

@@ -36,10 +36,10 @@ Box ClusterGrid::clusterBox(int x, int y, int s) const {
   Box box;
   for (float d : {d0, d1})
     for (float u : {x0, x1})
-      for (float v : {y0, y1}) box.add(glm::vec3(u * d, v * d, -d));
-  const glm::vec3 pad = 1e-4f * (box.hi - box.lo) + glm::vec3(1e-4f * d1);
-  box.lo -= pad;
-  box.hi += pad;
+      for (float v : {y0, y1}) box.grow(glm::vec3(u * d, v * d, -d));
+  const glm::vec3 pad = 1e-4f * (box.upper - box.lower) + glm::vec3(1e-4f * d1);
+  box.lower -= pad;
+  box.upper += pad;
   return box;
 }
 
@@ -66,8 +66,8 @@ ClusterGrid makeClusterGrid(const Camera& camera, int width, int height, float n
 glm::vec2 viewDepthRange(const Camera& camera, const Box& box) {
   if (box.empty()) return {camera.znear, camera.zfar};
   const Box view = transformBox(box, glm::inverse(camera.cameraToWorld));
-  return {std::clamp(-view.hi.z, camera.znear, camera.zfar),
-          std::clamp(-view.lo.z, camera.znear, camera.zfar)};
+  return {std::clamp(-view.upper.z, camera.znear, camera.zfar),
+          std::clamp(-view.lower.z, camera.znear, camera.zfar)};
 }
 
 }  // namespace bounce

@@ -26,7 +26,7 @@ ShadowDrawCount DirectionalShadowMaps::render(const GpuScene& scene, const Camer
   ShadowDrawCount count;
   if (!light_) return count;
   const Box box = scene.bounds();
-  const Bounds bounds{box.lo, box.hi, box.empty()};
+  const Bounds bounds{box.lower, box.upper, box.empty()};
   camera_ = camera;
   cascades_ = fitCascades(camera, aspect, light_->direction, bounds, cascadeSettings_);
   target.bind(*atlas_);

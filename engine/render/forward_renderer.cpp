@@ -164,8 +164,8 @@ void ForwardRenderer::setBake(const Bake& bake) {
     Box statics;
     for (const GpuInstance& instance : p.scene.instances())
       if (instance.mobility == Mobility::Static && !instance.worldBox.empty()) {
-        statics.add(instance.worldBox.lo);
-        statics.add(instance.worldBox.hi);
+        statics.grow(instance.worldBox.lower);
+        statics.grow(instance.worldBox.upper);
       }
     vplClampDistance_ = r;
     vplBounds_ = statics.empty() ? p.scene.bounds() : statics;

@@ -2,24 +2,6 @@
 
 namespace bounce {
 
-Box transformBox(const Box& box, const glm::mat4& transform) {
-  Box out;
-  if (box.empty()) return out;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 corner((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y,
-                           (i & 4) ? box.hi.z : box.lo.z);
-    out.add(glm::vec3(transform * glm::vec4(corner, 1.0f)));
-  }
-  return out;
-}
-
-Box intersect(const Box& a, const Box& b) {
-  Box out;
-  out.lo = glm::max(a.lo, b.lo);
-  out.hi = glm::min(a.hi, b.hi);
-  return out;
-}
-
 Frustum::Frustum(const glm::mat4& m) {
   const glm::vec4 row0(m[0][0], m[1][0], m[2][0], m[3][0]);
   const glm::vec4 row1(m[0][1], m[1][1], m[2][1], m[3][1]);
@@ -32,8 +14,9 @@ bool Frustum::overlaps(const Box& box) const {
   if (box.empty()) return false;
   for (const glm::vec4& plane : planes) {
     // The box corner furthest along the plane's normal.
-    const glm::vec3 p(plane.x >= 0 ? box.hi.x : box.lo.x, plane.y >= 0 ? box.hi.y : box.lo.y,
-                      plane.z >= 0 ? box.hi.z : box.lo.z);
+    const glm::vec3 p(plane.x >= 0 ? box.upper.x : box.lower.x,
+                      plane.y >= 0 ? box.upper.y : box.lower.y,
+                      plane.z >= 0 ? box.upper.z : box.lower.z);
     if (glm::dot(glm::vec3(plane), p) + plane.w < 0.0f) return false;
   }
   return true;
@@ -46,7 +29,7 @@ Box frustumBox(const glm::mat4& viewProjection) {
     const glm::vec4 clip((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f,
                          1.0f);
     const glm::vec4 world = inverse * clip;
-    box.add(glm::vec3(world) / world.w);
+    box.grow(glm::vec3(world) / world.w);
   }
   return box;
 }

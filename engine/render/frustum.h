@@ -6,20 +6,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/box.h"
+
 namespace bounce {
-
-struct Box {
-  glm::vec3 lo{1e30f}, hi{-1e30f};  // metres, world; lo > hi means empty
-  bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
-  void add(glm::vec3 p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-};
-
-// `box` (object space) under `transform`: the box around its eight transformed corners.
-Box transformBox(const Box& box, const glm::mat4& transform);
-Box intersect(const Box& a, const Box& b);
 
 // The six planes of a clip-space frustum (OpenGL, −w ≤ x,y,z ≤ w) of `viewProjection`, as
 // (n, d) with n·p + d ≥ 0 inside.

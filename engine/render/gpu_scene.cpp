@@ -34,7 +34,7 @@ std::vector<gl::Vertex> meshCorners(const Mesh& mesh) {
 
 Box meshBox(const Mesh& mesh) {
   Box box;
-  for (const glm::vec3& p : mesh.positions) box.add(p);
+  for (const glm::vec3& p : mesh.positions) box.grow(p);
   return box;
 }
 
@@ -178,8 +178,8 @@ Box GpuScene::bounds() const {
   Box box;
   for (const GpuInstance& instance : instances_) {
     if (instance.worldBox.empty()) continue;
-    box.add(instance.worldBox.lo);
-    box.add(instance.worldBox.hi);
+    box.grow(instance.worldBox.lower);
+    box.grow(instance.worldBox.upper);
   }
   return box;
 }

@@ -7,7 +7,7 @@ namespace bounce {
 namespace {
 
 float squaredDistance(const Box& a, const Box& b) {
-  const glm::vec3 gap = glm::max(glm::vec3(0.0f), glm::max(a.lo - b.hi, b.lo - a.hi));
+  const glm::vec3 gap = glm::max(glm::vec3(0.0f), glm::max(a.lower - b.upper, b.lower - a.upper));
   return glm::dot(gap, gap);
 }
 
@@ -32,7 +32,7 @@ struct TileRange {
 // The clusters the view-space box `b` may overlap: its depth range's slices, and the tiles its
 // corners project to (all tiles when it reaches the camera's plane).
 TileRange clusterRange(const ClusterGrid& grid, const Box& b) {
-  const float dMin = -b.hi.z, dMax = -b.lo.z;
+  const float dMin = -b.upper.z, dMax = -b.lower.z;
   if (dMax < grid.nearDepth * (1.0f - 1e-4f) || dMin > grid.farDepth * (1.0f + 1e-4f))
     return {0, -1, 0, -1, 0, -1};
   TileRange range{0,
@@ -47,8 +47,8 @@ TileRange clusterRange(const ClusterGrid& grid, const Box& b) {
   if (dMin <= 1e-6f) return range;
   glm::vec2 lo(1e30f), hi(-1e30f);
   for (int k = 0; k < 8; ++k) {
-    const glm::vec3 p((k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y,
-                      (k & 4) ? b.hi.z : b.lo.z);
+    const glm::vec3 p((k & 1) ? b.upper.x : b.lower.x, (k & 2) ? b.upper.y : b.lower.y,
+                      (k & 4) ? b.upper.z : b.lower.z);
     const glm::vec2 slope = glm::vec2(p.x, p.y) / (-p.z);
     lo = glm::min(lo, slope);
     hi = glm::max(hi, slope);
@@ -68,7 +68,7 @@ TileRange clusterRange(const ClusterGrid& grid, const Box& b) {
 
 Box reachBox(const LightReach& reach) {
   if (reach.shape == LightReach::Shape::Box)
-    return {reach.box.lo - glm::vec3(reach.radius), reach.box.hi + glm::vec3(reach.radius)};
+    return {reach.box.lower - glm::vec3(reach.radius), reach.box.upper + glm::vec3(reach.radius)};
   return {reach.centre - glm::vec3(reach.radius), reach.centre + glm::vec3(reach.radius)};
 }
 
@@ -105,8 +105,8 @@ bool reachTouches(const LightReach& reach, const Box& cluster) {
       if (squaredDistance(point, cluster) > reach.radius * reach.radius) return false;
       if (reach.shape == LightReach::Shape::Sphere) return true;
       // The cluster's bounding sphere against the cone.
-      const glm::vec3 c = 0.5f * (cluster.lo + cluster.hi);
-      return !coneMissesSphere(reach, c, 0.5f * glm::length(cluster.hi - cluster.lo));
+      const glm::vec3 c = 0.5f * (cluster.lower + cluster.upper);
+      return !coneMissesSphere(reach, c, 0.5f * glm::length(cluster.upper - cluster.lower));
     }
   }
   return true;

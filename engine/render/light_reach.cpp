@@ -39,7 +39,7 @@ std::vector<LightReach> areaReaches(const AreaLightSet& set, float floor) {
     float intensity = 0.0f;  // Σ L·A, W/sr: the inverse-square bound's numerator
     for (uint32_t t = light.first; t < light.first + light.count; ++t) {
       const EmitterTriangle& e = set.triangles[t];
-      for (const glm::vec3& v : {e.v0, e.v1, e.v2}) reach.box.add(v);
+      for (const glm::vec3& v : {e.v0, e.v1, e.v2}) reach.box.grow(v);
       intensity += brightest(e.radiance) * 0.5f * glm::length(glm::cross(e.v1 - e.v0, e.v2 - e.v0));
     }
     reach.radius = cutoffDistance(intensity, floor);

@@ -17,15 +17,15 @@ float spotMapHalfAngle(const Light& spot, int resolution, float marginTexels) {
 float farDistance(glm::vec3 position, const Box& sceneBox) {
   if (sceneBox.empty()) return 1e-3f;
   const glm::vec3 far =
-      glm::max(glm::abs(sceneBox.lo - position), glm::abs(sceneBox.hi - position));
+      glm::max(glm::abs(sceneBox.lower - position), glm::abs(sceneBox.upper - position));
   return std::max(glm::length(far) * 1.01f, 1e-3f);
 }
 
 int defaultShadowResolution(glm::vec3 position, const Box& sceneBox, float span, int lo, int hi) {
   if (sceneBox.empty()) return lo;
-  const float diagonal = glm::length(sceneBox.hi - sceneBox.lo);
+  const float diagonal = glm::length(sceneBox.upper - sceneBox.lower);
   const float distance =
-      std::max(glm::length(0.5f * (sceneBox.lo + sceneBox.hi) - position), 0.25f * diagonal);
+      std::max(glm::length(0.5f * (sceneBox.lower + sceneBox.upper) - position), 0.25f * diagonal);
   const float texel = diagonal / 2048.0f;
   int resolution = lo;
   while (resolution < hi && span * distance / static_cast<float>(resolution) > texel)
@@ -45,9 +45,9 @@ glm::vec3 anyUp(glm::vec3 direction) {
 float farPlane(glm::vec3 position, glm::vec3 axis, const Box& sceneBox, float far) {
   float deepest = 0.0f;
   for (int i = 0; i < 8 && !sceneBox.empty(); ++i) {
-    const glm::vec3 corner((i & 1) ? sceneBox.hi.x : sceneBox.lo.x,
-                           (i & 2) ? sceneBox.hi.y : sceneBox.lo.y,
-                           (i & 4) ? sceneBox.hi.z : sceneBox.lo.z);
+    const glm::vec3 corner((i & 1) ? sceneBox.upper.x : sceneBox.lower.x,
+                           (i & 2) ? sceneBox.upper.y : sceneBox.lower.y,
+                           (i & 4) ? sceneBox.upper.z : sceneBox.lower.z);
     deepest = std::max(deepest, glm::dot(corner - position, axis));
   }
   return std::clamp(deepest * 1.01f, far * 2e-4f, far);

@@ -84,8 +84,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   VplLightCutSettings cutSettings;
   cutSettings.kappa = settings.culling ? settings.kappa : std::numeric_limits<float>::infinity();
   cutSettings.maxCellsPerAxis = settings.culling ? settings.maxCellsPerAxis : 1;
-  const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lo;
-  const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.hi;
+  const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lower;
+  const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.upper;
   cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
   // The cut table must fit one texture buffer (GL 3.3 promises only 65536 texels): coarser grids
   // until it does (fewer cells, the same κ: fewer texels, more lights per cell).
@@ -98,7 +98,8 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   }
   if (settings.culling && !vpls.empty()) {
     // A cut that keeps more than half the VPLs costs more than it saves (its per-cell lists
-    // are read through the texture cache; docs/vpl.md, "Frame time"): one cell, every VPL.
+    // are read through the texture cache; docs/vpl_measurements.md, "Frame time"): one cell, every
+    // VPL.
     double evaluated = 0.0;
     for (std::size_t c = 0; c < cuts_.cellEntries.size(); ++c)
       evaluated += static_cast<double>(cuts_.lightsEvaluated(c));

@@ -177,9 +177,10 @@ ShadowDrawCount VplShadowMaps::render(const GpuScene& scene) {
   const Box sceneBox = scene.bounds();
   const int groups = groupCount();
   if (maps_->layers() < 6 * groups) maps_.emplace(settings_.resolution, 6 * groups);
-  originOffset_ = settings_.originOffset > 0.0f
-                      ? settings_.originOffset
-                      : (sceneBox.empty() ? 1e-3f : 1e-3f * glm::length(sceneBox.hi - sceneBox.lo));
+  originOffset_ =
+      settings_.originOffset > 0.0f
+          ? settings_.originOffset
+          : (sceneBox.empty() ? 1e-3f : 1e-3f * glm::length(sceneBox.upper - sceneBox.lower));
   // One reach for every cube (the depth is distance / far_ in all of them).
   far_ = 1e-3f;
   origins_.clear();

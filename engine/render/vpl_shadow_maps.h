@@ -1,4 +1,4 @@
-// Visibility of virtual point lights (issue 8): low-resolution depth cubes at chosen VPLs, so
+// Visibility of virtual point lights: low-resolution depth cubes at chosen VPLs, so
 // the VPL term can tell whether a VPL's light reaches a point. Each of the K ≤ 64 groups
 // (bake/vpl_groups.h) is split into up to kVplShadowCubesPerGroup parts along its members'
 // principal axes, and each part gets one cube, at its member nearest the part's centroid

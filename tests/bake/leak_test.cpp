@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "bake_scenes.h"
 #include "trace/path_tracer.h"
@@ -60,7 +61,8 @@ TEST(Leaks, NoLightThroughAWallThinnerThanATexel) {
 // the floor with its sides in the middle of 10 cm texels. Floor texels under the block are
 // invalid and filled from the floor around; a texel straddling the block's foot holds the
 // irradiance of its part outside the block, which an independent estimate (the tracer at
-// uniformly random points of that part) gives.
+// uniformly random points of that part) gives. The lamp is a static area light: its baked
+// visibility is filled under the block as the irradiance is.
 TEST(Leaks, BlockOnTheFloorDoesNotDarkenTheFloorAroundIt) {
   test::World world;
   const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.7f));
@@ -102,6 +104,20 @@ TEST(Leaks, BlockOnTheFloorDoesNotDarkenTheFloorAroundIt) {
       if (allUnder) {
         EXPECT_TRUE(bake.invalid[t]) << c.x << "," << c.z;
         EXPECT_GT(luminance(bake.irradiance.pixels[t]), 0.0f);  // filled from the floor around
+        // Its baked visibility is filled the same way (the leak guard's verdict reaches the
+        // visibility stage): it names the lamp, as every floor texel around it does, and holds a
+        // 4-neighbour's record; an empty record would read as V = 1 (unshadowed) at the block's
+        // foot, where bilinear filtering blends it in.
+        ASSERT_TRUE(bake.visibility.has_value());
+        const BakedVisibility& v = *bake.visibility;
+        EXPECT_EQ(v.texels[t].light[0], 0u) << c.x << "," << c.z;
+        bool fromNeighbour = false;
+        for (const auto& [dx, dy] :
+             {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+          const TexelVisibility& n = v.texels[bake.irradiance.index(x + dx, y + dy)];
+          fromNeighbour |= n.light == v.texels[t].light && n.visible == v.texels[t].visible;
+        }
+        EXPECT_TRUE(fromNeighbour) << c.x << "," << c.z;
         ++inside;
         continue;
       }

@@ -160,8 +160,8 @@ TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
         p = room.lo + glm::vec3(0.1f) + glm::vec3(u(rng), u(rng), u(rng)) * (e - 0.2f);
         n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
       }
-      const VplIrradianceSum full = vplIrradianceSum(room.vpls, p, n, r);
-      const VplIrradianceSum cut = vplCutIrradiance(groups, cuts, p, n, r);
+      const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, r);
+      const VplIrradiance cut = vplCutIrradiance(groups, cuts, p, n, r);
       if (!(full.irradiance.r > 0.0 && full.irradiance.g > 0.0 && full.irradiance.b > 0.0))
         continue;
       worst = std::max(worst, relativeError(cut.irradiance, full.irradiance));
@@ -187,8 +187,8 @@ TEST(VplGroups, NoCullingIsTheFullSum) {
   const VplLightCuts cuts =
       buildVplLightCuts(groups, room.lo, room.hi, {std::numeric_limits<float>::infinity(), 4});
   const glm::vec3 p(2.0f, 0.0f, 2.5f), n(0.0f, 1.0f, 0.0f);
-  const VplIrradianceSum full = vplIrradianceSum(room.vpls, p, n, 0.05f);
-  const VplIrradianceSum cut = vplCutIrradiance(groups, cuts, p, n, 0.05f);
+  const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, 0.05f);
+  const VplIrradiance cut = vplCutIrradiance(groups, cuts, p, n, 0.05f);
   EXPECT_LT(relativeError(cut.irradiance, full.irradiance), 1e-12);
 }
 

@@ -1,4 +1,4 @@
-// The full-size measurement of the accuracy goal (docs/renderer.md, "Baked light"): bake a
+// The full-size measurement of the baked light's accuracy (docs/renderer.md, "Baked light"): bake a
 // scene in-process with bounce-bake's settings, draw the renderer's indirect-only frame, and
 // compare it with bounce-trace --indirect-only over the static, non-emissive, edge-free pixels
 // (tests/render/indirect_accuracy.h). The reference is cached as EXR (radiance + standard

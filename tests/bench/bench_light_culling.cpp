@@ -89,7 +89,7 @@ double gridMilliseconds(const Scene& scene, const Camera& camera, int width, int
   Box bounds;
   for (const Instance& instance : scene.instances)
     for (const glm::vec3& p : scene.meshes[instance.mesh].positions)
-      bounds.add(glm::vec3(instance.transform * glm::vec4(p, 1.0f)));
+      bounds.grow(glm::vec3(instance.transform * glm::vec4(p, 1.0f)));
   for (int run = 0; run < 5; ++run) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<LightReach> punctual;

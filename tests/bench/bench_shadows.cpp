@@ -107,8 +107,8 @@ int run(const Options& o) {
     const Image without = plain.renderImage(camera, o.width, o.height);
     const Bounds bounds = sceneBounds(scene);
     Box sceneBox;
-    sceneBox.add(bounds.lo);
-    sceneBox.add(bounds.hi);
+    sceneBox.grow(bounds.lo);
+    sceneBox.grow(bounds.hi);
     const Light& light = scene.lights[0];
     const int chosen = light.type == LightType::Spot
                            ? spotShadowViewFor(light, sceneBox, ShadowSettings{}).resolution

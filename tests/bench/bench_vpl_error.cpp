@@ -1,5 +1,5 @@
-// The VPL term's error against its frame time (docs/vpl.md, "Error against frame time"; issue 8,
-// measurement 4). Cornell box, one path-traced indirect-only reference (cached as EXR with its
+// The VPL term's error against its frame time (docs/vpl_measurements.md, "Error against frame time").
+// Cornell box, one path-traced indirect-only reference (cached as EXR with its
 // per-pixel standard error), compared as tests/render/indirect_accuracy.h does over the pixels
 // that see one flat piece of a static, non-emissive surface. For each VPL cap (the baker's
 // generator in-process, error target off so the cap is the count, one seed) and each of
@@ -32,6 +32,7 @@
 #include "gl/render_target.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "image/luminance.h"
 #include "indirect_accuracy.h"
 #include "indirect_reference.h"
 #include "scene/load.h"
@@ -55,7 +56,7 @@ SquaredError squaredError(const test::IndirectComparison& c, const Image& render
     const double yt = luminance(reference.radiance.pixels[i]);
     const double d = (luminance(rendered.pixels[i]) - yt) / yt;
     const glm::vec3 s = reference.stdError.pixels[i];
-    const double sigma = (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b) / yt;
+    const double sigma = luminance(glm::dvec3(s)) / yt;
     e.relMse += d * d;
     e.refRelVar += sigma * sigma;
   }

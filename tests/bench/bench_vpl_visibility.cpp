@@ -1,4 +1,4 @@
-// bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl.md "Visibility"). At
+// bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl_measurements.md "Visibility"). At
 // receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake/vpl.h,
 // clamped as baker/vpl/vpl_gather.h) with
 //   exact   V = a ray between the receiver and every VPL (vpl_gather.h with the ray kernel),

@@ -156,7 +156,7 @@ gltf_case("ok_at_radiometric_limit", with_light({"type": "point", "intensity": 6
 gltf_case("ok_unknown_optional_extension", setp(["extensionsUsed"], ["EXT_whatever"]),
           "ok", "triangles=1")
 
-# JSON types and values (issue 9: each was taken silently).
+# JSON types and values (each was once taken silently).
 types = [
     ("neg_byteoffset", setp(["accessors", 0, "byteOffset"], -4), "accessors[0].byteOffset must be in 0.."),
     ("emissive_strength_string", with_emission("abc"), "emissiveStrength must be a number"),

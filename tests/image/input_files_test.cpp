@@ -1,4 +1,4 @@
-// Image inputs and outputs at their edges (issue 9): UINT EXR channels, inputs that are not
+// Image inputs and outputs at their edges: UINT EXR channels, inputs that are not
 // regular files, a 250-byte output name, all-or-nothing writes of several outputs.
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,5 +1,5 @@
 // Direct light of many area lights over thin casters, the renderer against the path tracer
-// (issue measurement 3 at CI size; 5, a dynamic box under a static panel): the renderer's
+// (at CI size; also a dynamic box under a static panel): the renderer's
 // direct-only frame, 4× supersampled and box-filtered, against bounce-trace's --direct-only
 // image over the pixels that see a static surface (indirect_accuracy.h's comparison). Shadow
 // maps fail here (only 3 area lights get a cube, and 2 cm rails are thinner than their texels);

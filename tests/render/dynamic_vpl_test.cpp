@@ -1,6 +1,6 @@
-// Issue 8, measurement 1: the dynamic sphere of content/cornell_box_dynamic at three positions
-// in the box, its indirect radiance from the renderer's VPLs against the path tracer, both
-// through their command lines with the same --move, so the tools are shown to see one scene:
+// The VPL term on a dynamic object: the dynamic sphere of content/cornell_box_dynamic at three
+// positions in the box, its indirect radiance from the renderer's VPLs against the path tracer,
+// both through their command lines with the same --move, so the tools are shown to see one scene:
 //
 //   bounce-bake  cornell_box_dynamic.gltf -o B           (VPLs: bounce-bake's defaults)
 //   bounce-render W.json --bake B --mode indirect --move sphere X Y Z --out r.exr
@@ -53,6 +53,7 @@
 #include "bake/bake_folder.h"
 #include "bake/vpl_occlusion.h"
 #include "image/image_io.h"
+#include "image/luminance.h"
 #include "ray/ray_kernel.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
@@ -70,7 +71,7 @@ namespace fs = std::filesystem;
 constexpr int kSize = 24;  // pixels per side
 constexpr int kBlock = 4;  // pixels per side of a compared block
 // 4x bounce-bake's default: VPL noise on the sphere at the default N reaches 10.7% (mid-box,
-// "traced with the sphere" row of docs/vpl.md); it falls as 1/sqrt(N), so 4N halves it.
+// "traced with the sphere" row of docs/vpl_measurements.md); it falls as 1/sqrt(N), so 4N halves it.
 constexpr int kBakeVpls = 16384;
 constexpr int kSpp = 2560;       // tracer samples per pixel: its noise adds ≤ 3.5% (asserted)
 constexpr float kRadius = 0.1f;  // the sphere's, m (make_cornell_box_dynamic.py)
@@ -183,7 +184,7 @@ Comparison compare(const Image& rendered, const Image& traced, const Image& stdE
           yr += luminance(rendered.pixels[i]);
           // σ of the luminance ≤ Σ_c w_c σ_c (the channels' errors are correlated).
           const glm::vec3 s = stdError.pixels[i];
-          const double sigma = 0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b;
+          const double sigma = luminance(glm::dvec3(s));
           variance += sigma * sigma;
         }
       const double n = kBlock * kBlock;
@@ -350,7 +351,7 @@ std::vector<Vpl> shadowedByDynamics(const Scene& scene, const VplSet& set) {
 // +13..+39% here). The others show what the VPL estimate is worth once the VPLs know the
 // sphere: VPL noise and the clamp (N ≈ 4096 VPLs from ~1700 light paths: 3-11% on the sphere;
 // 4N: a few %). Asserted: the reference is quiet enough, and 4N VPLs traced with the sphere
-// meet the 10% (the comparison itself is sound); the rest is printed for docs/vpl.md.
+// meet the 10% (the comparison itself is sound); the rest is printed for docs/vpl_measurements.md.
 TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
   for (std::size_t p = 0; p < std::size(kPositions); ++p) {
     const Placement& m = placements_[p];
@@ -439,11 +440,11 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
   }
 }
 
-// Measurement 1 of issue 8 through the tools: bounce-render --mode indirect (the dynamic sphere
-// gets ρ/π·E_vpl from VPLs) against bounce-trace --indirect-only, both with --move. bounce-render
-// traces the VPLs again with the sphere at its --move position (--dynamic-vpls retrace, the
-// default; vpl/vpl_retrace.h) with the bake's count rule (4N VPLs, kBakeVpls, so that VPL noise
-// stays within the budget): they carry the sphere's shadow on the room and the light it
+// The dynamic sphere against the path tracer through the tools: bounce-render --mode indirect (the
+// dynamic sphere gets ρ/π·E_vpl from VPLs) against bounce-trace --indirect-only, both with --move.
+// bounce-render traces the VPLs again with the sphere at its --move position (--dynamic-vpls
+// retrace, the default; vpl/vpl_retrace.h) with the bake's count rule (4N VPLs, kBakeVpls, so that
+// VPL noise stays within the budget): they carry the sphere's shadow on the room and the light it
 // reflects into the room and back onto itself.
 // VPL shadow maps on (bounce-render's default: 4 cubes per part of each VPL group). Measured
 // 6.64 / 1.69 / 6.78% (bias +0.4 / −0.5 / −6.1%); without VPL shadows 8.58 / 8.85 / 6.71%.
@@ -471,7 +472,7 @@ TEST_F(DynamicSphere, RendererLightsTheSphereWithin10PercentOfThePathTracer) {
   }
 }
 
-// Issue 8, measurement 2: the singularity. content/vpl_corner is a concave box corner (floor and
+// The VPL clamp at its singularity: content/vpl_corner is a concave box corner (floor and
 // two walls meeting at the origin, a 1 W/sr point light): every face sees every other, so VPL
 // light there has no visibility error, only VPL noise and the clamp. bounce-render --mode vpl
 // draws every surface's indirect light from the bake's VPLs (count from bounce-bake's defaults);
@@ -563,7 +564,7 @@ TEST_F(VplCorner, NoPixelExceedsTheTruthByMoreThanOneClampedVpl) {
       const glm::vec3 rho = loaded.materials.at(geometry.triangleMaterial[hit.triangle]).albedo;
       const double c = luminance(rho * fluxMax) / (2.0 * kPi * kPi * r * r);
       const glm::vec3 s = sigma.pixels[i];
-      const double noise = 4.0 * (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b);
+      const double noise = 4.0 * luminance(glm::dvec3(s));
       const double excess = luminance(vpl.pixels[i]) - luminance(truth.pixels[i]) - noise;
       // Unclamped, approximately: the removed part (vpl-clamp's green: lum(E_removed)/π on a
       // white surface) times the surface's luminance albedo.

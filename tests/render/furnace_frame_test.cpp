@@ -1,5 +1,5 @@
-// The baked frame in a closed furnace (issue 15, "edges as right as the middle"): a room whose
-// every surface (walls, a block resting on the floor, a box against a wall) has albedo ρ and
+// The baked frame in a closed furnace (the edges of surfaces as right as their middle): a room
+// whose every surface (walls, a block resting on the floor, a box against a wall) has albedo ρ and
 // emits Le. Light in a closed furnace is the same at every point, L = Le/(1 − ρ); of the
 // irradiance E = π·L, π·Le comes straight from emitters, so the indirect irradiance is
 // E_ind = π·Le·ρ/(1 − ρ) and `--mode indirect` must draw ρ/π·E_ind = Le·ρ²/(1 − ρ) at every
@@ -77,7 +77,8 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
       baked.stats.meanRelativeError);
   // What is left is the bake's noise, the same everywhere: mean |rel| 0.5% and 13 of 65,536
   // pixels over 3% (worst 3.8%) at 256². A texel whose sample points lie in or behind the
-  // neighbouring surface is off by far more (the issue measured −17% at corners).
+  // neighbouring surface is off by far more (−17% at corners was reported against the bake
+  // before this test existed).
   EXPECT_LE(worst, 0.05) << "at (" << wx << ", " << wy << ")";
   EXPECT_LE(std::abs(bias) / (kSize * kSize), 0.01);
 }

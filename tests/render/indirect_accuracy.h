@@ -1,5 +1,6 @@
-// The renderer's baked indirect light against the reference path tracer, as the issue measures
-// it: bake a scene (atlas + bakeLightmap, in-process), draw `--mode indirect`, trace
+// The renderer's baked indirect light against the reference path tracer, as docs/renderer.md
+// ("Baked light") measures it: bake a scene (atlas + bakeLightmap, in-process), draw `--mode
+// indirect`, trace
 // `--indirect-only` with the same camera, and compare over the pixels that see one flat piece
 // of a static, non-emissive surface (pixel_surfaces.h). Used by the CI-sized test and the
 // full-size benchmark (tests/bench/bench_indirect_accuracy.cpp).
@@ -19,6 +20,7 @@
 #include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
 #include "gl/shader.h"
+#include "image/luminance.h"
 #include "pixel_surfaces.h"
 #include "ray/ray_kernel.h"
 #include "render/forward_renderer.h"
@@ -115,7 +117,7 @@ inline IndirectComparison compareIndirect(const Scene& scene, const Camera& came
     const glm::vec3 s = reference.stdError.pixels[i];
     sumError += std::abs(yr - yt) / yt;
     sumBias += (yr - yt) / yt;
-    sumSigma += (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b) / yt;
+    sumSigma += luminance(glm::dvec3(s)) / yt;
     ++c.pixels;
   }
   if (c.pixels > 0) {

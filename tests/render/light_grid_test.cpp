@@ -35,7 +35,8 @@ ClusterGrid tiltedGrid() {
 }
 
 bool contains(const Box& box, glm::vec3 p) {
-  return glm::all(glm::greaterThanEqual(p, box.lo)) && glm::all(glm::lessThanEqual(p, box.hi));
+  return glm::all(glm::greaterThanEqual(p, box.lower)) &&
+         glm::all(glm::lessThanEqual(p, box.upper));
 }
 
 // The cluster a fragment at view-space point v falls in, as shaders/light_grid.glsl picks it:
@@ -188,7 +189,7 @@ TEST(LightGrid, EveryLightReachingAPointIsInThatPointsCluster) {
       ASSERT_TRUE(listed(lists, c, static_cast<uint32_t>(l), false)) << "light " << l;
     }
     for (std::size_t l = 0; l < area.size(); ++l) {
-      const glm::vec3 nearest = glm::clamp(p, area[l].box.lo, area[l].box.hi);
+      const glm::vec3 nearest = glm::clamp(p, area[l].box.lower, area[l].box.upper);
       if (glm::length(p - nearest) > area[l].radius) continue;
       ++checked;
       ASSERT_TRUE(listed(lists, c, static_cast<uint32_t>(l), true)) << "area light " << l;

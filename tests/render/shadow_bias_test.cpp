@@ -77,8 +77,8 @@ TEST_P(ThinSlab, OneTexelSlabKeepsItsShadowAtNormalIncidence) {
   const Light light = point ? pointAt(position, 3.0f) : spotAt(position, edge, 0.3f, 0.4f, 3.0f);
   const ShadowSettings shadows = withFilter(GetParam().filter);
   Box box;  // the floor decides the map's resolution; the slab is thin
-  box.add({-1.0f, 0.0f, -1.0f});
-  box.add({1.0f, 0.01f, 1.0f});
+  box.grow({-1.0f, 0.0f, -1.0f});
+  box.grow({1.0f, 0.01f, 1.0f});
   const float texelAngle =
       point ? 2.0f / static_cast<float>(pointShadowResolutionFor(light.position, box, shadows))
             : spotShadowViewFor(light, box, shadows).texelAngle;

@@ -171,8 +171,8 @@ TEST_P(ShadowContact, ThinBoxShadowTouchesTheBox) {
                           : spotAt(position, edge, 0.3f, 0.4f, 3.0f);
   // The map's texel at the edge, for the scene's box (the floor decides it; the slab is thin).
   Box box;
-  box.add({-1.0f, 0.0f, -1.0f});
-  box.add({1.0f, 0.01f, 1.0f});
+  box.grow({-1.0f, 0.0f, -1.0f});
+  box.grow({1.0f, 0.01f, 1.0f});
   const int resolution = light.type == LightType::Point
                              ? pointShadowResolutionFor(light.position, box, ShadowSettings{})
                              : spotShadowViewFor(light, box, ShadowSettings{}).resolution;

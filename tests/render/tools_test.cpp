@@ -16,6 +16,7 @@
 #include "bake/bake_folder.h"
 #include "bake/vpl_clamp.h"
 #include "image/image_io.h"
+#include "image/luminance.h"
 #include "scene/load.h"
 #include "support/test_context.h"
 #include "support/tool_run.h"
@@ -553,7 +554,7 @@ TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
     }
     ASSERT_GE(e, 0.0f) << t;
     const glm::vec3 E = irradiance.pixels[t];
-    if (0.2126f * E.r + 0.7152f * E.g + 0.0722f * E.b > 0.0f) {
+    if (bounce::luminance(E) > 0.0f) {
       sum += e;
       ++lit;
     }

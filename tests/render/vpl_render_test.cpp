@@ -11,6 +11,7 @@
 #include <random>
 
 #include "bake/vpl_groups.h"
+#include "image/luminance.h"
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
 #include "vpl/vpl_gather.h"
@@ -102,8 +103,6 @@ glm::dvec3 subpixelSpread(const VplScene& s, int x, int y, F f) {
   return spread;
 }
 
-const glm::dvec3 kLuminance(0.2126, 0.7152, 0.0722);
-
 class VplRender : public testing::TestWithParam<float> {};
 
 TEST_P(VplRender, EveryPixelIsReflectanceOverPiTimesTheCpuGather) {
@@ -121,9 +120,7 @@ TEST_P(VplRender, EveryPixelIsReflectanceOverPiTimesTheCpuGather) {
       };
       const auto clampView = [&](glm::vec3 p) {
         const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
-        return glm::dvec3(glm::dot(kLuminance, e.irradiance), glm::dot(kLuminance, e.removed),
-                          0.0) /
-               kPi;
+        return glm::dvec3(luminance(e.irradiance), luminance(e.removed), 0.0) / kPi;
       };
       const glm::vec3 p = floorPoint(s.camera, kSize, kSize, x, y);
       const std::size_t i = static_cast<std::size_t>(y) * kSize + x;
@@ -160,7 +157,7 @@ TEST(VplRender, ClampReportSumsTheFrame) {
     for (int x = 0; x < kSize; ++x) {
       const auto sums = [&](glm::vec3 p) {
         const VplIrradiance e = gatherVplIrradiance(s.vpls, p, {0, 1, 0}, nullptr, r);
-        return glm::dvec3(glm::dot(kLuminance, e.irradiance), glm::dot(kLuminance, e.removed), 0.0);
+        return glm::dvec3(luminance(e.irradiance), luminance(e.removed), 0.0);
       };
       const glm::dvec3 e = sums(floorPoint(s.camera, kSize, kSize, x, y));
       const glm::dvec3 spread = subpixelSpread(s, x, y, sums);

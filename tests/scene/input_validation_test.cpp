@@ -1,4 +1,4 @@
-// One test per class of bad input that used to crash, hang or load as a wrong scene (issue 9):
+// One test per class of bad input that used to crash, hang or load as a wrong scene:
 // each now gives one LoadError naming the file and the limit or rule (docs/input_limits.md).
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>

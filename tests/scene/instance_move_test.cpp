@@ -83,7 +83,7 @@ TEST(InstanceMove, DynamicHeadsAreOnePerName) {
   EXPECT_EQ(dynamicInstanceHeads(s), (std::vector<std::size_t>{1, 3}));
 }
 
-// The content scene of issue 8: its sphere is the one dynamic instance and moves.
+// The dynamic-object content scene: its sphere is the one dynamic instance and moves.
 TEST(InstanceMove, CornellBoxDynamicSphereMoves) {
   Scene s = loadScene(BOUNCE_SOURCE_DIR "/content/cornell_box_dynamic/cornell_box_dynamic.gltf");
   const std::vector<std::size_t> heads = dynamicInstanceHeads(s);

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "image/luminance.h"
 #include "scene/light_falloff.h"
 #include "support/form_factors.h"
 #include "test_scenes.h"
@@ -66,7 +67,7 @@ glm::dvec3 vplIrradiance(const Vpl& v, glm::dvec3 x) {
 
 // Rec. 709 luminance, the weight the sampler's powers use.
 double rec709Luminance(glm::vec3 c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+  return luminance(glm::dvec3(c));
 }
 
 const glm::dvec3 kPoints[] = {{0.0, 0.0, 0.0}, {1.7, -0.6, 0.0}, {-3.0, 2.5, 0.0}};

@@ -1,4 +1,4 @@
-// Energy of the VPL set against closed forms (issue 8, measurement 3). In a closed box whose
+// Energy of the VPL set against closed forms. In a closed box whose
 // every surface has albedo ρ, all light a source emits (Φ₀) lands on the walls, so the flux
 // leaving them after exactly k reflections is Φ₀·ρ^k: the VPLs of bounce k must sum to it.
 // In an open scene the first bounce alone has a closed form: ρ × the flux that reaches the
