@@ -154,6 +154,10 @@ void checkTileJournalKey(const fs::path& file, const nlohmann::json& found,
     if (there == found.end())
       throw LoadError(file, "made by another version of bounce (its key has no \"" + field.key() +
                                 "\"): bake again without --resume");
+    if (*there != field.value() && field.key().ends_with("Format"))
+      throw LoadError(file, "made by another version of bounce (its " + field.key() + " is " +
+                                there->dump() + ", this build's is " + field.value().dump() +
+                                "): bake again without --resume");
     if (*there != field.value())
       throw LoadError(file, "made for another bake: its " + field.key() + " is " + there->dump() +
                                 ", this bake's is " + field.value().dump());
