@@ -1,4 +1,4 @@
-// Baked visibility of the static area lights (engine/bake/light_visibility.h): per lightmap
+// Baked visibility of the static area lights (engine/bake_folder/light_visibility.h): per lightmap
 // texel up to 4 (light, V) pairs, V the visible fraction of the light's unshadowed irradiance.
 // Read with the lightmap's bilinear weights at the fragment's atlas UV, each of the 4 texels
 // giving its own V for the light (its slot's, else its "every other light" slot's, else 1: the

@@ -8,7 +8,7 @@
 // those of p's grid cell (bake/vpl_groups.h): the cell's cut of each group's VPL tree, near
 // leaves VPL by VPL, far nodes as their representative (flux-weighted centroid, Σ flux); every
 // light carries the index of its shadow cube for the visibility. Must match vplCutIrradiance
-// (engine/bake/vpl_groups.cpp).
+// (engine/vpl_runtime/vpl_groups.cpp).
 //
 // The light table's VPL sections (light_table.glsl, engine/render/light_table.h):
 //   lights: 3 texels per light: (position m, cube), (unit normal, 0), (Φ W, 0); the N VPLs

@@ -10,7 +10,7 @@
 
 #include "atlas/atlas.h"
 #include "atlas/uv_geometry.h"
-#include "bake/lightmap_charts.h"
+#include "bake_folder/lightmap_charts.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/load.h"

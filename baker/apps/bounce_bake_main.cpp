@@ -1,5 +1,5 @@
 // bounce-bake: bakes a scene's lightmap (irradiance E in W/m² per texel of the atlas) and writes
-// the bake folder (engine/bake/bake_folder.h): lightmap.exr, layout.bin, bake.json, and the
+// the bake folder (engine/bake_folder/bake_folder.h): lightmap.exr, layout.bin, bake.json, and the
 // virtual point lights (vpls, baker/vpl) unless --vpls 0.
 #include <chrono>
 #include <cstdio>

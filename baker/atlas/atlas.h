@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "atlas/texel_density.h"
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "scene/scene.h"
 
 namespace bounce {

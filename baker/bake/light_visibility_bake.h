@@ -18,9 +18,9 @@
 #include <functional>
 #include <vector>
 
-#include "bake/light_visibility.h"
 #include "bake/texel_coverage.h"
 #include "bake/tile_work.h"
+#include "bake_folder/light_visibility.h"
 #include "ray/ray_kernel.h"
 #include "scene/area_lights.h"
 #include "trace/stage_progress.h"

@@ -13,10 +13,10 @@
 
 #include "bake/leak_guard.h"
 #include "bake/light_visibility_bake.h"
-#include "bake/lightmap_layout.h"
 #include "bake/texel_irradiance.h"
 #include "bake/tile_exchange.h"
 #include "bake/tile_payload.h"
+#include "bake_folder/lightmap_layout.h"
 #include "image/image.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"

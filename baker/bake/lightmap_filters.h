@@ -1,5 +1,5 @@
 // Image passes on a baked lightmap (texel values E in W/m²; texel space as in
-// engine/bake/lightmap_layout.h, texel (x, y) centred at (x + ½, y + ½)). Pure functions of
+// engine/bake_folder/lightmap_layout.h, texel (x, y) centred at (x + ½, y + ½)). Pure functions of
 // their inputs, easy to test on small images.
 #pragma once
 
@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "image/image.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"

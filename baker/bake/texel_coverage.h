@@ -1,8 +1,8 @@
 // Which surface each lightmap texel covers, as sample points on the world's triangles.
 //
 // A texel (x, y) covers [x, x+1] × [y, y+1] in texel space (atlas UV × (width, height), see
-// engine/bake/lightmap_layout.h). Its part of every triangle whose atlas image overlaps it is
-// found exactly by clipping the triangle against the texel square (atlas/uv_geometry.h
+// engine/bake_folder/lightmap_layout.h). Its part of every triangle whose atlas image overlaps it
+// is found exactly by clipping the triangle against the texel square (atlas/uv_geometry.h
 // clipTriangleToBox, Sutherland–Hodgman, the same rule the atlas reports coverage by), so a
 // texel touched by any sliver of a triangle is covered (conservative coverage: chart edges are
 // never missed) and a texel straddling several triangles gets each triangle's part. Candidate
@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
 

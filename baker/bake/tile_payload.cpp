@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "bake/byte_stream.h"
+#include "bake_folder/byte_stream.h"
 
 namespace bounce {
 namespace {

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "bake/light_visibility.h"
 #include "bake/texel_coverage.h"
-#include "bake/vpl.h"
+#include "bake_folder/light_visibility.h"
+#include "bake_folder/vpl.h"
 #include "scene/area_lights.h"
 
 namespace bounce {

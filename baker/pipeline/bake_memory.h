@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <string>
 
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "pipeline/scene_bake.h"
 #include "scene/scene.h"
 

@@ -7,8 +7,8 @@
 
 #include "atlas/atlas.h"
 #include "bake/lightmap_bake.h"
-#include "bake/visibility_file.h"
-#include "bake/vpl_file.h"
+#include "bake_folder/visibility_file.h"
+#include "bake_folder/vpl_file.h"
 #include "pipeline/bake_memory.h"
 #include "pipeline/tile_journal.h"
 #include "scene/area_lights.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "pipeline/scene_bake_settings.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "bake/byte_stream.h"
+#include "bake_folder/byte_stream.h"
 #include "image/atomic_file.h"
 
 namespace bounce {

@@ -21,7 +21,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
 #include "trace/emitters.h"

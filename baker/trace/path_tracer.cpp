@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 #include "scene/light_falloff.h"
 #include "trace/sampling.h"
 

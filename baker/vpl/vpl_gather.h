@@ -12,8 +12,8 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
-#include "bake/vpl_clamp.h"  // vplClampDistance, surfaceArea (moved to engine/bake)
+#include "bake_folder/vpl.h"
+#include "bake_folder/vpl_clamp.h"  // vplClampDistance, surfaceArea (moved to engine/bake_folder)
 #include "ray/ray_kernel.h"
 #include "scene/world_geometry.h"
 

@@ -31,7 +31,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"

@@ -18,8 +18,8 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/bake_folder.h"
-#include "bake/vpl.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/vpl.h"
 #include "scene/scene.h"
 #include "vpl/vpl_generate.h"
 

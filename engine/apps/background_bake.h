@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "pipeline/scene_bake.h"
 #include "scene/scene.h"
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
-#include "bake/bake_search.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "gl/context.h"
 #include "gl/shader.h"

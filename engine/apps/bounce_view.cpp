@@ -28,9 +28,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "background_bake.h"
-#include "bake/bake_facts.h"
-#include "bake/bake_folder.h"
-#include "bake/bake_search.h"
+#include "bake_folder/bake_facts.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "cli/viewer_script.h"
 #include "gl/gpu_timer.h"

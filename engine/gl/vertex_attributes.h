@@ -9,7 +9,7 @@
 //
 // Meshes are uploaded de-indexed: vertex k of a MeshBuffer is corner k of the mesh's `indices`
 // (corner 3t+c is corner c of triangle t), so a per-corner attribute such as
-// LightmapLayout::cornerUv (engine/bake/lightmap_layout.h) lines up with it one to one.
+// LightmapLayout::cornerUv (engine/bake_folder/lightmap_layout.h) lines up with it one to one.
 #pragma once
 
 #include <cstdint>

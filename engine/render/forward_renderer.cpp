@@ -4,14 +4,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "bake/vpl_clamp.h"
-#include "bake/vpl_occlusion.h"
+#include "bake_folder/vpl_clamp.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
 #include "render/punctual_lights.h"
 #include "render/shadow_pass.h"
 #include "render/view.h"
+#include "vpl_runtime/vpl_occlusion.h"
 
 namespace bounce {
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/light_culling.h"

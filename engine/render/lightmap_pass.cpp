@@ -1,7 +1,7 @@
 #include "render/lightmap_pass.h"
 
-#include "bake/lightmap_charts.h"
-#include "bake/texel_error.h"
+#include "bake_folder/lightmap_charts.h"
+#include "bake_folder/texel_error.h"
 #include "render/texture_units.h"
 
 namespace bounce {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
 #include "gl/texture.h"
 #include "render/gpu_scene.h"

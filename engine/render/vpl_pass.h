@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "bake/vpl_groups.h"
 #include "gl/shader.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
 #include "render/light_table.h"
 #include "render/vpl_shadow_maps.h"
+#include "vpl_runtime/vpl_groups.h"
 
 namespace bounce {
 

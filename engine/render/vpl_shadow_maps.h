@@ -28,12 +28,12 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
-#include "bake/vpl_groups.h"
+#include "bake_folder/vpl.h"
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/gpu_scene.h"
 #include "render/shadow_settings.h"
+#include "vpl_runtime/vpl_groups.h"
 
 namespace bounce {
 

@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/lightmap_bake.h"
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "test_scenes.h"
 
 namespace bounce::test {

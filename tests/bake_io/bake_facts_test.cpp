@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "bake/bake_facts.h"
+#include "bake_folder/bake_facts.h"
 
 namespace bounce {
 namespace {

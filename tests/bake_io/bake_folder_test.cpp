@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "image/image_io.h"
 #include "scene/load_error.h"
 

@@ -1,7 +1,7 @@
 // Charts recovered from corner UVs, and the chart image the renderer's chart view samples.
 #include <gtest/gtest.h>
 
-#include "bake/lightmap_charts.h"
+#include "bake_folder/lightmap_charts.h"
 
 using namespace bounce;
 

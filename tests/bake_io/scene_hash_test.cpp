@@ -1,7 +1,7 @@
-// The scene hash (engine/bake/scene_hash.h) against every field of the scene model: each field
-// that changes a bake, edited alone by the smallest step there is (the next float, one index),
-// changes the hash and only its part's hash; names, cameras, warnings, the source path and where
-// a dynamic instance stands keep it. Each struct's field list is checked against the struct's
+// The scene hash (engine/bake_folder/scene_hash.h) against every field of the scene model: each
+// field that changes a bake, edited alone by the smallest step there is (the next float, one
+// index), changes the hash and only its part's hash; names, cameras, warnings, the source path and
+// where a dynamic instance stands keep it. Each struct's field list is checked against the struct's
 // field count, so a field added to scene/scene.h fails here until it has its case (and the
 // static_asserts in scene_hash.cpp until the hash covers it).
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/scene_hash.h"
+#include "bake_folder/scene_hash.h"
 #include "scene/aggregate_fields.h"
 
 using namespace bounce;

@@ -1,8 +1,8 @@
 // The error and validity views' colours (bake/texel_error.h), texel by texel.
 #include <gtest/gtest.h>
 
-#include "bake/bake_folder.h"
-#include "bake/texel_error.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/texel_error.h"
 
 namespace bounce {
 namespace {

@@ -1,5 +1,5 @@
-// The `vpls` file (engine/bake/vpl_file.h): the documented byte layout, a bit-exact round trip,
-// a refusal naming the file and the reason for each kind of damage, and its place in the bake
+// The `vpls` file (engine/bake_folder/vpl_file.h): the documented byte layout, a bit-exact round
+// trip, a refusal naming the file and the reason for each kind of damage, and its place in the bake
 // folder (written and read with the rest when the Bake has VPLs, absent otherwise).
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
-#include "bake/vpl_file.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/vpl_file.h"
 #include "scene/load_error.h"
 
 namespace bounce {

@@ -1,7 +1,7 @@
 // The renderer's VPL groups and per-cell lightcuts (bake/vpl_groups.h), GL-free: every cell
 // accounts for every VPL exactly once, the representatives keep the flux, and the cut's sum at
 // receivers in a room stays within the far-field bound 1/κ² of the full sum.
-#include "bake/vpl_groups.h"
+#include "vpl_runtime/vpl_groups.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-#include "bake/vpl_clamp.h"
+#include "bake_folder/vpl_clamp.h"
 
 namespace bounce {
 namespace {

@@ -12,11 +12,11 @@
 
 #include <map>
 
-#include "bake/vpl_occlusion.h"
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "vpl/vpl_generate.h"
 #include "vpl/vpl_retrace.h"
+#include "vpl_runtime/vpl_occlusion.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
-// bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl_measurements.md "Visibility"). At
-// receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake/vpl.h,
-// clamped as baker/vpl/vpl_gather.h) with
+// bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl_measurements.md "Visibility").
+// At receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake/vpl.h, clamped
+// as baker/vpl/vpl_gather.h) with
 //   exact   V = a ray between the receiver and every VPL (vpl_gather.h with the ray kernel),
 //   none    V = 1 (what the renderer draws without VPL shadows),
 //   groups  V = the visibility of the VPL's group, exact rays from one point of the group: the
@@ -34,7 +34,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "bake/vpl_file.h"
+#include "bake_folder/vpl_file.h"
 #include "gl/context.h"
 #include "gl/draw_state.h"
 #include "render/gpu_scene.h"

@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "bake/bake_folder.h"
-#include "bake/vpl_clamp.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/vpl_clamp.h"
 #include "ray/ray_kernel.h"
 #include "scene/world_geometry.h"
 #include "vpl/vpl_generate.h"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "image/image_io.h"
 #include "scene/load.h"
 #include "support/scene_invariants.h"

@@ -468,7 +468,7 @@ write("exr/chunk_count_huge.exr", exr(2, 2, tamper=with_chunk_count(1 << 30)), "
 write("exr/window_pixels_over_limit.exr", exr(2, 2, window=(0, 0, 3, 1 << 28)), "error", "exceeds bounce's limit of 67108864 pixels")
 
 # ---------------------------------------------------------------- bake folders -------------
-# readBake (engine/bake/bake_folder.h) against tests/corpus/bake/scene.gltf: a floor, a wall and a
+# readBake (engine/bake_folder/bake_folder.h) against tests/corpus/bake/scene.gltf: a floor, a wall and a
 # 0.4 m x 0.4 m emissive panel facing down through the top of the wall (three static instances;
 # the panel is the one static area light, so bounce-bake writes visibility.bin) and a point light. bake/valid.bake is bounce-bake's own output,
 # committed; regenerate it (after a format or scene-hash change) with

@@ -1,18 +1,17 @@
-// libFuzzer target: the bake-folder reader (engine/bake/bake_folder.h). The input's first byte
-// picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls,
-// 4 visibility.bin, 5 error.exr; modulo 6), the rest of the input is that file's content; the
-// others are those of tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf
-// (one static area light, so it has a visibility.bin). bake.json records every file's size and
-// hash; for a fuzzed file other than bake.json, the second bit of the first byte says whether
-// bake.json records the fuzzed bytes (as a forger would, so the parsers and range checks behind
-// the hash are reached) or keeps valid.bake's record (the hash check). Allowed outcomes: a Bake
-// that the renderer can use blindly (lightmap size = layout size = bake.json's atlas size,
-// irradiance finite in [0, kMaxBakeIrradiance]; one region per static instance with 3 UVs per
-// triangle, UVs in [0, 1]; VPLs within ±kMaxBakeLength with unit normals and flux in
-// [0, kMaxVplFlux], as many as bake.json says, its clamp distance in [0, kMaxBakeLength]; a
-// visibility of the layout's size whose V are finite and in [0, 1] and whose lights are < the
-// scene's static area-light count or one of the two marks), or a LoadError naming a file of the
-// folder. Anything else aborts.
+// libFuzzer target: the bake-folder reader (engine/bake_folder/bake_folder.h). The input's first
+// byte picks one file of a bake folder (0 bake.json, 1 layout.bin, 2 lightmap.exr, 3 vpls, 4
+// visibility.bin, 5 error.exr; modulo 6), the rest of the input is that file's content; the others
+// are those of tests/corpus/bake/valid.bake, a real bake of tests/corpus/bake/scene.gltf (one
+// static area light, so it has a visibility.bin). bake.json records every file's size and hash; for
+// a fuzzed file other than bake.json, the second bit of the first byte says whether bake.json
+// records the fuzzed bytes (as a forger would, so the parsers and range checks behind the hash are
+// reached) or keeps valid.bake's record (the hash check). Allowed outcomes: a Bake that the
+// renderer can use blindly (lightmap size = layout size = bake.json's atlas size, irradiance finite
+// in [0, kMaxBakeIrradiance]; one region per static instance with 3 UVs per triangle, UVs in [0,
+// 1]; VPLs within ±kMaxBakeLength with unit normals and flux in [0, kMaxVplFlux], as many as
+// bake.json says, its clamp distance in [0, kMaxBakeLength]; a visibility of the layout's size
+// whose V are finite and in [0, 1] and whose lights are < the scene's static area-light count or
+// one of the two marks), or a LoadError naming a file of the folder. Anything else aborts.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -24,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "fuzz_input_file.h"
 #include "scene/area_lights.h"
 #include "scene/load.h"

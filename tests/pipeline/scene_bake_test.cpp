@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "image/image_io.h"
 #include "pipeline/scene_bake.h"
 #include "scene/load.h"

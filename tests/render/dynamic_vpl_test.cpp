@@ -50,8 +50,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "bake/bake_folder.h"
-#include "bake/vpl_occlusion.h"
+#include "bake_folder/bake_folder.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
 #include "ray/ray_kernel.h"
@@ -62,6 +61,7 @@
 #include "trace/sampling.h"
 #include "vpl/vpl_gather.h"
 #include "vpl/vpl_generate.h"
+#include "vpl_runtime/vpl_occlusion.h"
 
 namespace bounce {
 namespace {
@@ -71,7 +71,8 @@ namespace fs = std::filesystem;
 constexpr int kSize = 24;  // pixels per side
 constexpr int kBlock = 4;  // pixels per side of a compared block
 // 4x bounce-bake's default: VPL noise on the sphere at the default N reaches 10.7% (mid-box,
-// "traced with the sphere" row of docs/vpl_measurements.md); it falls as 1/sqrt(N), so 4N halves it.
+// "traced with the sphere" row of docs/vpl_measurements.md); it falls as 1/sqrt(N), so 4N halves
+// it.
 constexpr int kBakeVpls = 16384;
 constexpr int kSpp = 2560;       // tracer samples per pixel: its noise adds ≤ 3.5% (asserted)
 constexpr float kRadius = 0.1f;  // the sphere's, m (make_cornell_box_dynamic.py)

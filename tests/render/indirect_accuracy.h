@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "atlas/atlas.h"
-#include "bake/bake_folder.h"
 #include "bake/lightmap_bake.h"
+#include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
 #include "image/luminance.h"
 #include "pixel_surfaces.h"

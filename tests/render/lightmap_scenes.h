@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "scene/scene.h"
 #include "test_scenes.h"
 

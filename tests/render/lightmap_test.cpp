@@ -8,7 +8,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "bake/texel_error.h"
+#include "bake_folder/texel_error.h"
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bake/lightmap_charts.h"
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_charts.h"
+#include "bake_folder/lightmap_layout.h"
 #include "image/image_compare.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"

@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bake/bake_folder.h"
-#include "bake/vpl_clamp.h"
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/vpl_clamp.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
 #include "scene/load.h"

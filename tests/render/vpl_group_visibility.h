@@ -13,10 +13,10 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
-#include "bake/vpl_groups.h"
+#include "bake_folder/vpl.h"
 #include "ray/ray_kernel.h"
 #include "render/vpl_shadow_maps.h"
+#include "vpl_runtime/vpl_groups.h"
 
 namespace bounce::test {
 

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <random>
 
-#include "bake/vpl_groups.h"
 #include "image/luminance.h"
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
 #include "vpl/vpl_gather.h"
+#include "vpl_runtime/vpl_groups.h"
 
 namespace bounce::test {
 namespace {

@@ -17,7 +17,6 @@
 #include "render/vpl_shadow_maps.h"
 #include "render/vpl_visibility_probe.h"
 
-#include "bake/vpl_groups.h"
 #include "lightmap_scenes.h"
 #include "scene/load.h"
 #include "shadow_scenes.h"
@@ -25,6 +24,7 @@
 #include "vpl/vpl_gather.h"
 #include "vpl/vpl_generate.h"
 #include "vpl_group_visibility.h"
+#include "vpl_runtime/vpl_groups.h"
 
 namespace bounce::test {
 namespace {

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "scene/load.h"
 
 namespace bounce {

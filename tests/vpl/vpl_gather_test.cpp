@@ -12,10 +12,10 @@
 #include <numbers>
 #include <vector>
 
-#include "bake/vpl_reduce.h"
 #include "trace/test_scenes.h"
 #include "vpl/vpl_gather.h"
 #include "vpl/vpl_generate.h"
+#include "vpl_runtime/vpl_reduce.h"
 
 namespace bounce {
 namespace {

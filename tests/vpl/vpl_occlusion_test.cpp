@@ -12,9 +12,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "bake/vpl_occlusion.h"
 #include "trace/test_scenes.h"
 #include "vpl/vpl_generate.h"
+#include "vpl_runtime/vpl_occlusion.h"
 
 namespace bounce {
 namespace {

@@ -15,7 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 #include "scene/load.h"
 #include "trace/sampling.h"
 #include "trace/test_scenes.h"

@@ -1,4 +1,4 @@
-#include "bake/bake_search.h"
+#include "bake_folder/bake_search.h"
 
 #include <exception>
 #include <system_error>

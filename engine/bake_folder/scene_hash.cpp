@@ -1,4 +1,4 @@
-#include "bake/scene_hash.h"
+#include "bake_folder/scene_hash.h"
 
 #include <bit>
 #include <cmath>

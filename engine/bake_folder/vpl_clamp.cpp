@@ -1,4 +1,4 @@
-#include "bake/vpl_clamp.h"
+#include "bake_folder/vpl_clamp.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,8 +1,8 @@
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 
-#include <fcntl.h>  // AT_FDCWD
-#include <stdio.h>  // renameat2, RENAME_EXCHANGE (glibc ≥ 2.28)
+#include <fcntl.h>   // AT_FDCWD
 #include <signal.h>  // kill(pid, 0): is the process alive
+#include <stdio.h>   // renameat2, RENAME_EXCHANGE (glibc ≥ 2.28)
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
-#include "bake/bake_input_file.h"
-#include "bake/byte_stream.h"
-#include "bake/visibility_file.h"
-#include "bake/vpl_file.h"
+#include "bake_folder/bake_input_file.h"
+#include "bake_folder/byte_stream.h"
+#include "bake_folder/visibility_file.h"
+#include "bake_folder/vpl_file.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/area_lights.h"

@@ -1,4 +1,4 @@
-#include "bake/vpl_file.h"
+#include "bake_folder/vpl_file.h"
 
 #include <bit>
 #include <cerrno>
@@ -6,8 +6,8 @@
 #include <cstring>
 #include <string>
 
-#include "bake/bake_input_file.h"
-#include "bake/bake_manifest.h"  // the ranges
+#include "bake_folder/bake_input_file.h"
+#include "bake_folder/bake_manifest.h"  // the ranges
 #include "image/atomic_file.h"
 #include "scene/load_error.h"
 

@@ -1,4 +1,4 @@
-#include "bake/bake_input_file.h"
+#include "bake_folder/bake_input_file.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "bake/lightmap_charts.h"
+#include "bake_folder/lightmap_charts.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "bake/vpl_reduce.h"
+#include "vpl_runtime/vpl_reduce.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "bake/vpl_groups.h"
+#include "vpl_runtime/vpl_groups.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bake/vpl_reduce.h"
+#include "vpl_runtime/vpl_reduce.h"
 
 namespace bounce {
 

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 #include "image/image.h"
 
 namespace bounce {

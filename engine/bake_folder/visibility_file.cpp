@@ -1,11 +1,11 @@
-#include "bake/visibility_file.h"
+#include "bake_folder/visibility_file.h"
 
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
 
-#include "bake/bake_input_file.h"
+#include "bake_folder/bake_input_file.h"
 #include "image/atomic_file.h"
 #include "scene/load_error.h"
 

@@ -19,7 +19,7 @@
 #include <span>
 #include <vector>
 
-#include "bake/light_visibility.h"
+#include "bake_folder/light_visibility.h"
 
 namespace bounce {
 

@@ -1,4 +1,4 @@
-#include "bake/bake_facts.h"
+#include "bake_folder/bake_facts.h"
 
 #include <chrono>
 #include <cstdio>

@@ -18,7 +18,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 #include "scene/scene.h"
 
 namespace bounce {

@@ -8,9 +8,9 @@
 //   <dir>/lightmap.exr    irradiance E in W/m² per linear-RGB channel, one texel per atlas texel,
 //                         rows top first (see lightmap_layout.h)
 //   <dir>/layout.bin      the LightmapLayout (versioned binary)
-//   <dir>/vpls            the virtual point lights (optional; engine/bake/vpl_file.h)
+//   <dir>/vpls            the virtual point lights (optional; engine/bake_folder/vpl_file.h)
 //   <dir>/visibility.bin  the static area lights' visibility per texel (optional;
-//                         engine/bake/visibility_file.h, bake/light_visibility.h)
+//                         engine/bake_folder/visibility_file.h, bake/light_visibility.h)
 //   <dir>/error.exr       per texel, the estimated relative standard error of its irradiance
 //                         (dimensionless, the same in R, G and B; -1 where the texel has no
 //                         estimate of its own: uncovered, or filled from its neighbours)
@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "bake/bake_manifest.h"
-#include "bake/light_visibility.h"
-#include "bake/lightmap_layout.h"
-#include "bake/scene_hash.h"
-#include "bake/vpl.h"
+#include "bake_folder/bake_manifest.h"
+#include "bake_folder/light_visibility.h"
+#include "bake_folder/lightmap_layout.h"
+#include "bake_folder/scene_hash.h"
+#include "bake_folder/vpl.h"
 #include "image/image.h"
 #include "scene/scene.h"
 

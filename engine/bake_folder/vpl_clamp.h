@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "bake/bake_manifest.h"
+#include "bake_folder/bake_manifest.h"
 #include "scene/world_geometry.h"
 
 namespace bounce {

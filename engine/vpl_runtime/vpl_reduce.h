@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 
 namespace bounce {
 

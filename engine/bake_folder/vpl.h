@@ -1,7 +1,7 @@
 // A virtual point light (instant radiosity, Keller 1997): a point on a diffuse surface that
 // re-emits, as a cosine (Lambertian) emitter on the side of `normal`, the light a light path
 // brought there. Header only and GL-free: the baker makes them (baker/vpl), the bake folder
-// stores them (engine/bake/vpl_file.h), the path tracer can sample them for checks
+// stores them (engine/bake_folder/vpl_file.h), the path tracer can sample them for checks
 // (baker/trace/light_sampler.h) and the renderer draws them.
 //
 // Convention (derived in docs/vpl.md): `flux` Φ is the flux the VPL re-emits, W per linear-RGB

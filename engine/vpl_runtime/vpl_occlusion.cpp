@@ -1,4 +1,4 @@
-#include "bake/vpl_occlusion.h"
+#include "vpl_runtime/vpl_occlusion.h"
 
 #include <algorithm>
 #include <cmath>

@@ -35,7 +35,7 @@
 
 #include <glm/glm.hpp>
 
-#include "bake/vpl.h"
+#include "bake_folder/vpl.h"
 
 namespace bounce {
 

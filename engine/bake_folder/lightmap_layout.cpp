@@ -1,4 +1,4 @@
-#include "bake/lightmap_layout.h"
+#include "bake_folder/lightmap_layout.h"
 
 #include <algorithm>
 

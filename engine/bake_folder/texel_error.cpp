@@ -1,9 +1,9 @@
-#include "bake/texel_error.h"
+#include "bake_folder/texel_error.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "bake/bake_folder.h"
+#include "bake_folder/bake_folder.h"
 
 namespace bounce {
 

@@ -1,6 +1,6 @@
-#include "bake/bake_manifest.h"
+#include "bake_folder/bake_manifest.h"
 
-#include "bake/byte_stream.h"
+#include "bake_folder/byte_stream.h"
 
 #include <cinttypes>
 #include <cmath>

@@ -11,7 +11,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "bake/bake_manifest.h"
+#include "bake_folder/bake_manifest.h"
 #include "image/image.h"
 
 namespace bounce {
