@@ -15,7 +15,7 @@
 //   vpl       ρ/π · E_vpl on every surface        (the VPLs instead of the lightmap)
 //   vpl-clamp (lum(E_vpl), lum(E_removed), 0) / π: what the VPLs give and what their clamp
 //             removed, for a white surface (luminance; the clamp report sums these)
-//   error     each texel's estimated relative error as a false colour (bake/texel_error.h,
+//   error     each texel's estimated relative error as a false colour (bake_folder/texel_error.h,
 //             computed on the CPU and bound where the chart colours are; nearest texel)
 //   validity  each texel sampled, filled from its neighbours or padding (the same way; the
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)

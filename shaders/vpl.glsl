@@ -5,7 +5,7 @@
 // VPL between its normal and p, θ_x the angle at p between n and the VPL, d the distance (m),
 // r the clamp distance (m) and V_i the visibility of the light's shadow cube (vplVisibility,
 // defined in vpl_shadows.glsl; one cube per part of a group, render/vpl_shadow_maps.h). A Lambertian surface of albedo ρ reflects ρ/π · E. The lights summed are
-// those of p's grid cell (bake/vpl_groups.h): the cell's cut of each group's VPL tree, near
+// those of p's grid cell (vpl_runtime/vpl_groups.h): the cell's cut of each group's VPL tree, near
 // leaves VPL by VPL, far nodes as their representative (flux-weighted centroid, Σ flux); every
 // light carries the index of its shadow cube for the visibility. Must match vplCutIrradiance
 // (engine/vpl_runtime/vpl_groups.cpp).

@@ -1,4 +1,4 @@
-// Bakes the static area lights' visibility per lightmap texel (bake/light_visibility.h): for
+// Bakes the static area lights' visibility per lightmap texel (bake_folder/light_visibility.h): for
 // every covered texel and every static light l of scene/area_lights.h,
 //   V_l = Σ_k w_k·vis(x_k, y_k) / Σ_k w_k,   w_k = max(n·(y_k − x_k), 0)·cosθ_y / r⁴,
 // a ratio estimator of E_shadowed / E_unshadowed over `samplesPerLight` pairs (x_k, y_k): x_k

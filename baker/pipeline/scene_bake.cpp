@@ -24,7 +24,7 @@ constexpr char kStageAtlas[] = "atlas";
 constexpr char kStageRayKernel[] = "ray kernel";
 constexpr char kStageVpls[] = "VPLs";
 
-// bake.json's "vpls": what the vpls file holds (baker/vpl/vpl_generate.h, bake/vpl.h).
+// bake.json's "vpls": what the vpls file holds (baker/vpl/vpl_generate.h, bake_folder/vpl.h).
 // `area`: the static surface area the VPLs lie on, m².
 BakeManifest::Vpls vplManifest(const VplSet& set, double area, const SceneBakeSettings& o) {
   BakeManifest::Vpls m;
@@ -211,7 +211,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     stage.reset();
   }
   const double vplSeconds = lap.lap();
-  // bake.json (bake/bake_manifest.h): what was baked and how; run-dependent figures under
+  // bake.json (bake_folder/bake_manifest.h): what was baked and how; run-dependent figures under
   // `measured` only.
   BakeManifest& manifest = result.folder.manifest;
   // What the map holds: every light's indirect light; direct light only of baked-only lights.

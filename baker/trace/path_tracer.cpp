@@ -146,7 +146,7 @@ glm::vec3 PathTracer::deltaLight(const SurfacePoint& point, const Light& light) 
   return point.albedo * kInvPi * incident * glm::dot(point.shadingNormal, wi);
 }
 
-// L = ρ_x/π · E with E the VPL's irradiance (bake/vpl.h vplIrradiance, unclamped), a cosine
+// L = ρ_x/π · E with E the VPL's irradiance (bake_folder/vpl.h vplIrradiance, unclamped), a cosine
 // emitter of intensity Φ/π·cosθ; the VPL must also lie in front of the geometric surface.
 glm::vec3 PathTracer::virtualLight(const SurfacePoint& point, const Vpl& vpl) const {
   const std::optional<VplIrradiance> e =

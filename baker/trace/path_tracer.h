@@ -25,7 +25,7 @@ class PathTracer {
  public:
   // scene, geometry and kernel must outlive the tracer; geometry = flatten(scene) and kernel
   // is built over it. `vpls` (kept by the tracer) are sampled as extra cosine emitters, for
-  // checks of the VPL convention (bake/vpl.h); the renderer, not the tracer, draws them.
+  // checks of the VPL convention (bake_folder/vpl.h); the renderer, not the tracer, draws them.
   PathTracer(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
              const TraceSettings& settings, std::vector<Vpl> vpls = {});
   // lights_ refers to emitters_ and vpls_: not copyable.

@@ -1,5 +1,5 @@
 // The light of a VPL set at a point, GL-free: the estimate the renderer's VPL term is checked
-// against (bake/vpl.h, docs/vpl.md). Irradiance at x with unit normal n:
+// against (bake_folder/vpl.h, docs/vpl.md). Irradiance at x with unit normal n:
 //   E(x) = Σ_i Φ_i/π · cosθ_i · cosθ_x / max(d_i², r²) · V(x, y_i)        [W/m²]
 // with r the clamp distance: the geometry term 1/d² is capped at 1/r² near a VPL, which
 // removes the spikes (d → 0 at concave corners) at the cost of energy that is reported.

@@ -154,7 +154,7 @@ PathVpls tracePath(const Scene& scene, const WorldGeometry& geometry, const RayK
     if (!hit.valid()) break;
     SurfacePoint point;
     if (!makeSurfacePoint(scene, geometry, ray, hit, point)) break;
-    // The VPL re-emits what the surface reflects: Φ = β·ρ (bake/vpl.h).
+    // The VPL re-emits what the surface reflects: Φ = β·ρ (bake_folder/vpl.h).
     const glm::vec3 reflected = beta * point.albedo;
     if (!(maxComponent(reflected) > 0.0f) || !isFinite(reflected)) break;
     out.vpls.push_back({point.position, point.shadingNormal, reflected, from, index});

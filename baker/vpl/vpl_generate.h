@@ -9,7 +9,7 @@
 // order) and where its incoming segment started (the sampled light point, else the previous
 // VPL), so that a path can be cut later where a dynamic object blocks it.
 //
-// Flux (bake/vpl.h convention, derived in docs/vpl.md): a path leaves its light carrying
+// Flux (bake_folder/vpl.h convention, derived in docs/vpl.md): a path leaves its light carrying
 // β₀ = Le·cosθ / p(x, ω) (W, per channel), p the density of the sampled origin and direction
 // including the light's pick pmf; at its k-th hit y_k it arrives with β_k and leaves a VPL
 // of flux Φ = β_k · ρ(y_k) / N (N the number of paths traced); it continues with
@@ -75,7 +75,7 @@ VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const Ray
 // carry the static scene's indirect light, which dynamic objects receive wherever they are
 // moved; a dynamic object neither holds VPLs (they would stay behind when it moves) nor
 // shadows the paths here: each VPL records its path and the start of its incoming segment, and
-// the renderer cuts the paths the placed objects block (bake/vpl_occlusion.h). The light the
+// the renderer cuts the paths the placed objects block (vpl_runtime/vpl_occlusion.h). The light the
 // dynamic objects reflect is left out. Meshes, materials and lights are kept as they are.
 Scene staticScene(const Scene& scene);
 

@@ -1,8 +1,8 @@
 // VPLs re-traced at run time with the dynamic instances where they are now: instant radiosity
 // as Keller ran it, once per placement. The bake's VPLs (vpl_generate.h, staticScene) leave the
 // dynamic objects out, so they neither shadow the room nor reflect light into it; cutting the
-// bake's paths where a dynamic object blocks them (bake/vpl_occlusion.h) restores its shadow but
-// not the light it reflects, which is 7–19 % of the dynamic sphere's own indirect light in
+// bake's paths where a dynamic object blocks them (vpl_runtime/vpl_occlusion.h) restores its shadow
+// but not the light it reflects, which is 7–19 % of the dynamic sphere's own indirect light in
 // content/cornell_box_dynamic (docs/vpl.md, "Dynamic objects"). Tracing the light paths again
 // over the whole scene, with the bake's count rule (cap, error target, seed), gives VPLs that
 // carry both, VPLs on the dynamic objects included. Deterministic: the same placement gives the
@@ -37,7 +37,7 @@ class PlacedVplTracer {
   // Keeps its own copy of `scene` (meshes included); only instance transforms change later.
   PlacedVplTracer(const Scene& scene, const VplSettings& settings);
 
-  // VPLs (W per channel, bake/vpl.h) of light paths through the scene with instance i at
+  // VPLs (W per channel, bake_folder/vpl.h) of light paths through the scene with instance i at
   // object → world transforms[i] (one per scene instance; fewer leave the rest where they are).
   // Cost: the scene flattened and a ray kernel built over it, then the paths (~1 + 8 ms on one
   // core for 16384 VPLs in the Cornell box, bench_vpl_occlusion).

@@ -2,7 +2,7 @@
 //   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
 //   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
-//   one found for the scene as bounce-render finds it, bake/bake_search.h): M cycles the
+//   one found for the scene as bounce-render finds it, bake_folder/bake_search.h): M cycles the
 //   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
 //   its error.exr error), C toggles the chart/texel-density view. H shows or hides the panel
 //   (viewer_panel.h: the bake's facts, modes, exposure, cameras, objects, lights, CPU and GPU

@@ -23,7 +23,7 @@ struct FrameTimes {
 
 struct ViewerPanelView {
   std::string scene;
-  std::vector<std::string> bakeLines;  // bake/bake_facts.h; empty without a bake
+  std::vector<std::string> bakeLines;  // bake_folder/bake_facts.h; empty without a bake
   std::vector<std::string> bakeNotes;  // which bake was found, or why one was passed over
   bool rebaking = false;               // a background re-bake is running
   std::string rebakeStatus;            // its progress, or how it ended

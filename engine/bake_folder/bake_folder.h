@@ -10,7 +10,7 @@
 //   <dir>/layout.bin      the LightmapLayout (versioned binary)
 //   <dir>/vpls            the virtual point lights (optional; engine/bake_folder/vpl_file.h)
 //   <dir>/visibility.bin  the static area lights' visibility per texel (optional;
-//                         engine/bake_folder/visibility_file.h, bake/light_visibility.h)
+//                         engine/bake_folder/visibility_file.h, bake_folder/light_visibility.h)
 //   <dir>/error.exr       per texel, the estimated relative standard error of its irradiance
 //                         (dimensionless, the same in R, G and B; -1 where the texel has no
 //                         estimate of its own: uncovered, or filled from its neighbours)

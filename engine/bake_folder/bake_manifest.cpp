@@ -307,7 +307,8 @@ std::string manifestText(const BakeManifest& m) {
         {"file", "visibility.bin"},
         {"what",
          "per texel, the visible fraction V of each static area light's unshadowed irradiance "
-         "(bake/light_visibility.h); the renderer multiplies its exact polygon irradiance by it"},
+         "(bake_folder/light_visibility.h); the renderer multiplies its exact polygon irradiance "
+         "by it"},
         {"lights", v.lights},
         {"slotsPerTexel", v.slotsPerTexel},
         {"samplesPerLight", v.samplesPerLight},

@@ -31,7 +31,7 @@ Image errorFalseColourImage(const Image& relativeError, float target);
 // estimate), orange (1, 0.5, 0) where a chart covers it but its value was filled from its
 // neighbours (the leak guard dropped every sample point: inside geometry or across a wall),
 // dark blue (0, 0, 0.35) in the padding between charts (dilated). `charts`: the chart image of
-// the layout (bake/lightmap_charts.h, black where no chart covers a texel).
+// the layout (bake_folder/lightmap_charts.h, black where no chart covers a texel).
 inline constexpr glm::vec3 kValidTexel{0.0f, 0.8f, 0.0f};
 inline constexpr glm::vec3 kFilledTexel{1.0f, 0.5f, 0.0f};
 inline constexpr glm::vec3 kPaddingTexel{0.0f, 0.0f, 0.35f};

@@ -1,4 +1,4 @@
-// The bake folder's `visibility.bin` (bake/light_visibility.h), little-endian, no padding:
+// The bake folder's `visibility.bin` (bake_folder/light_visibility.h), little-endian, no padding:
 //
 //   offset  size        field
 //   0       char[8]     magic "BNCVISIB"

@@ -32,7 +32,8 @@ struct Vpl {
   // incoming segment started (world, metres: the light's sample point for a bounce-1 VPL, the
   // previous VPL of the path otherwise) and `path` the path's index. The VPLs of one path are
   // consecutive and in path order; an object placed across from → position blocks this VPL and
-  // every later one of its path (bake/vpl_occlusion.h). Merged VPLs (representatives) have none.
+  // every later one of its path (vpl_runtime/vpl_occlusion.h). Merged VPLs (representatives) have
+  // none.
   glm::vec3 from{0.0f};
   uint32_t path = 0;
 };
@@ -54,7 +55,7 @@ struct VplIrradiance {
 // nullopt when nothing arrives: x behind the VPL, the VPL behind x, the two at one point or
 // a distance or cosine that is not finite (the caller need not test visibility then). The one CPU
 // statement of the formula: the baker's gather (baker/vpl/vpl_gather.h), the renderer's CPU sums
-// (bake/vpl_groups.h) and the path tracer's VPL light (trace/path_tracer.h) use it;
+// (vpl_runtime/vpl_groups.h) and the path tracer's VPL light (trace/path_tracer.h) use it;
 // shaders/vpl.glsl is its GLSL twin.
 inline std::optional<VplIrradiance> vplIrradiance(const Vpl& vpl, glm::dvec3 x, glm::dvec3 n,
                                                   double r2) {

@@ -1,5 +1,5 @@
-// The bake folder's `vpls` file: the virtual point lights of a bake (bake/vpl.h), a versioned
-// little-endian binary, with its reader and writer here. GL-free.
+// The bake folder's `vpls` file: the virtual point lights of a bake (bake_folder/vpl.h), a
+// versioned little-endian binary, with its reader and writer here. GL-free.
 //
 //   offset  size        field
 //   0       char[8]     magic "BNCVPLS\0"
@@ -11,11 +11,11 @@
 //                       path index (u32; a path's VPLs are consecutive, in bounce order)
 //   16+52N  —           end of file (nothing may follow)
 //
-// Version 2 added `from` and the path index (bake/vpl.h); version 1 files are refused ("rebake").
-// The reader refuses (LoadError naming the file and the reason) a wrong magic or version, a
-// size that disagrees with N, a position or `from` not finite or beyond ±kMaxBakeLength m in a
-// coordinate, a normal not of unit length (±1e-3), a flux that is negative, not finite or over
-// kMaxVplFlux W (bake_manifest.h), and a path index smaller than the previous VPL's.
+// Version 2 added `from` and the path index (bake_folder/vpl.h); version 1 files are refused
+// ("rebake"). The reader refuses (LoadError naming the file and the reason) a wrong magic or
+// version, a size that disagrees with N, a position or `from` not finite or beyond ±kMaxBakeLength
+// m in a coordinate, a normal not of unit length (±1e-3), a flux that is negative, not finite or
+// over kMaxVplFlux W (bake_manifest.h), and a path index smaller than the previous VPL's.
 #pragma once
 
 #include <filesystem>

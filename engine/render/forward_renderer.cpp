@@ -111,7 +111,7 @@ void ForwardRenderer::updateVplOcclusion() {
   Passes& p = *passes_;
   if (!p.vpls.attached() || vpls_.empty()) return;
   // The dynamic instances at their current places block the bake's light paths
-  // (bake/vpl_occlusion.h): the VPLs past a blocked segment go dark.
+  // (vpl_runtime/vpl_occlusion.h): the VPLs past a blocked segment go dark.
   std::vector<VplOccluder> occluders;
   const std::span<const GpuInstance> instances = p.scene.instances();
   for (std::size_t i = 0; i < instances.size() && i < scene_.instances.size(); ++i)

@@ -42,7 +42,7 @@ struct VplClampReport {
 };
 
 // VPLs of light paths traced with instance i at object → world transforms[i] (W per channel,
-// bake/vpl.h), e.g. baker/vpl/vpl_retrace.h's PlacedVplTracer, which the apps wire in (the
+// bake_folder/vpl.h), e.g. baker/vpl/vpl_retrace.h's PlacedVplTracer, which the apps wire in (the
 // renderer does not depend on the baker).
 using VplTracer = std::function<std::vector<Vpl>(std::span<const glm::mat4> transforms)>;
 
@@ -56,7 +56,7 @@ struct RendererSettings {
   // Given, the VPLs are traced again with the dynamic instances where they are (on setBake and
   // whenever one moves): they shadow the room and reflect light into it. Empty: the bake's VPLs
   // (traced without them), their paths cut where the dynamic instances block them
-  // (bake/vpl_occlusion.h), which misses the light those instances reflect.
+  // (vpl_runtime/vpl_occlusion.h), which misses the light those instances reflect.
   VplTracer vplTracer;
 };
 
@@ -81,7 +81,7 @@ class ForwardRenderer {
 
   // Moves instance `index` (object → world) without re-uploading its mesh. After moving dynamic
   // instances, the next frame re-traces the VPLs once (RendererSettings::vplTracer), else
-  // recomputes which VPLs their triangles cut off (bake/vpl_occlusion.h): moving several
+  // recomputes which VPLs their triangles cut off (vpl_runtime/vpl_occlusion.h): moving several
   // instances (bounce-view moves every instance of a name) costs one re-trace.
   void setInstanceTransform(std::size_t index, const glm::mat4& transform);
   // Punctual light `index` (Scene::lights) moved, turned or changed intensity or colour: drawn

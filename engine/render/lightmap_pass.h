@@ -50,10 +50,11 @@ class LightmapPass {
 
   std::optional<gl::Texture2D> irradiance_;
   std::optional<gl::Texture2D> charts_;
-  std::optional<gl::Texture2D> errorColours_;     // bake/texel_error.h per texel, with error.exr
+  std::optional<gl::Texture2D>
+      errorColours_;  // bake_folder/texel_error.h per texel, with error.exr
   std::optional<gl::Texture2D> validityColours_;  // the same, sampled / filled / padding
-  std::optional<gl::Texture2D> visibility_;       // bake/light_visibility.h as 2·W × H RGBA32F
-  int bakedLights_ = 0;                           // static area lights the visibility names
+  std::optional<gl::Texture2D> visibility_;  // bake_folder/light_visibility.h as 2·W × H RGBA32F
+  int bakedLights_ = 0;                      // static area lights the visibility names
   glm::vec2 size_{1.0f};
   std::vector<uint8_t> lightmapped_;  // per instance
   bool attached_ = false;

@@ -19,9 +19,9 @@ enum class RenderMode {
   Vpl,       // indirect light of every surface from the VPLs, ρ/π·E_vpl (needs a bake with VPLs)
   VplClamp,  // (lum E_vpl, lum E_removed, 0)/π: the VPLs and what their clamp removed, white
              // surfaces (needs VPLs; bounce-render's clamp report reads it)
-  Error,     // each texel's estimated relative error as a false colour (bake/texel_error.h;
+  Error,     // each texel's estimated relative error as a false colour (bake_folder/texel_error.h;
              // needs a bake with error.exr)
-  Validity,  // each texel sampled, filled from neighbours or padding (bake/texel_error.h;
+  Validity,  // each texel sampled, filled from neighbours or padding (bake_folder/texel_error.h;
              // needs a bake with error.exr)
 };
 

@@ -1,7 +1,7 @@
 // The VPL stage of the lit pass (shaders/vpl.glsl): groups a bake's virtual point lights
-// (bake/vpl_groups.h: K ≤ 64 groups, each with a representative and a tree), builds the per-cell
-// lightcuts over the static scene's bounds, gives the lights and the cuts as the light table's
-// VPL sections (render/light_table.h: no fixed cap on the VPL count) and tells the forward
+// (vpl_runtime/vpl_groups.h: K ≤ 64 groups, each with a representative and a tree), builds the
+// per-cell lightcuts over the static scene's bounds, gives the lights and the cuts as the light
+// table's VPL sections (render/light_table.h: no fixed cap on the VPL count) and tells the forward
 // shader, per draw, whether the instance takes its indirect light from the VPLs (dynamic
 // instances; every surface in the vpl modes). Without VPLs its cut section is one empty cell.
 // GL calls only through engine/gl.
@@ -42,13 +42,13 @@ class VplPass {
   VplPass(const std::filesystem::path& shaderDir, const VplShadowSettings& shadows,
           std::vector<std::string>& warnings);
 
-  // Groups and uploads `vpls` (W per channel, bake/vpl.h) with clamp distance r (m) over
+  // Groups and uploads `vpls` (W per channel, bake_folder/vpl.h) with clamp distance r (m) over
   // `bounds` (the static scene, metres).
   void attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
               const VplRenderSettings& settings);
   bool attached() const { return attached_; }
   // Recomputes the light section's flux with only the VPLs with alive[i] ≠ 0 (input order of
-  // attach; bake/vpl_occlusion.h) shining; groups, cuts and positions are kept. The caller
+  // attach; vpl_runtime/vpl_occlusion.h) shining; groups, cuts and positions are kept. The caller
   // hands lightTexels() to the light table again.
   void setAlive(std::span<const uint8_t> alive);
 

@@ -1,6 +1,6 @@
 // Visibility of virtual point lights: low-resolution depth cubes at chosen VPLs, so
 // the VPL term can tell whether a VPL's light reaches a point. Each of the K ≤ 64 groups
-// (bake/vpl_groups.h) is split into up to kVplShadowCubesPerGroup parts along its members'
+// (vpl_runtime/vpl_groups.h) is split into up to kVplShadowCubesPerGroup parts along its members'
 // principal axes, and each part gets one cube, at its member nearest the part's centroid
 // (vplShadowCubes). Every light of the VPL term takes the visibility of one cube:
 // shaders/vpl_shadows.glsl's vplVisibility(cube, p, ng), 1 = the cube's origin sees p, 0 =

@@ -1,8 +1,8 @@
 // The renderer's VPL set, GL-free so that it is tested without GL (tests/bake_io):
 //
-// VplGroups: the VPLs split into K ≤ 64 coarse groups (groupVpls, bake/vpl_reduce.h), reordered
-// so that each group's members are contiguous, and one representative per group: Σ flux (W per
-// channel), the luminance-weighted centroid, the normalised flux-weighted mean normal
+// VplGroups: the VPLs split into K ≤ 64 coarse groups (groupVpls, vpl_runtime/vpl_reduce.h),
+// reordered so that each group's members are contiguous, and one representative per group: Σ flux
+// (W per channel), the luminance-weighted centroid, the normalised flux-weighted mean normal
 // (mergeVpls). The representatives are what per-group visibility (one shadow map per group) and
 // the far field use.
 //
@@ -80,7 +80,7 @@ class VplGroups {
   // vpls()[i] is input VPL vplOrder()[i].
   std::span<const uint32_t> vplOrder() const { return order_; }
   // The flux (W per channel) of every light-table entry when only the input VPLs with
-  // alive[i] ≠ 0 (in input order, bake/vpl_occlusion.h) shine: a VPL's own flux or 0, a
+  // alive[i] ≠ 0 (in input order, vpl_runtime/vpl_occlusion.h) shine: a VPL's own flux or 0, a
   // representative's the sum over its alive members. Positions and normals stay as built.
   std::vector<glm::vec3> lightFluxes(std::span<const uint8_t> alive) const;
 
@@ -119,7 +119,7 @@ VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 
                                const VplLightCutSettings& settings);
 
 // What shaders/vpl.glsl computes at receiver p (unit normal n) with visibility 1, on the CPU:
-// Σ vplIrradiance (bake/vpl.h) over the lights of p's cell, clamp distance r (m; 0: none).
+// Σ vplIrradiance (bake_folder/vpl.h) over the lights of p's cell, clamp distance r (m; 0: none).
 VplIrradiance vplCutIrradiance(const VplGroups& groups, const VplLightCuts& cuts, glm::vec3 p,
                                glm::vec3 n, float clampDistance);
 // The same sum over `lights` (every one evaluated).

@@ -1,6 +1,6 @@
 // Which VPLs of a bake survive when dynamic objects are placed in the scene (GL-free).
 //
-// A VPL set is a set of light-path prefixes (bake/vpl.h: each VPL knows where its incoming
+// A VPL set is a set of light-path prefixes (bake_folder/vpl.h: each VPL knows where its incoming
 // segment started and which path it ends; a path's VPLs are consecutive, in bounce order). The
 // bake traced the paths in the static scene. An object placed later blocks a path where one of
 // its segments (from → position) crosses the object's triangles: that VPL and every later VPL

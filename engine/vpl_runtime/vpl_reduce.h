@@ -6,7 +6,7 @@
 // wall VPL at a corner stay apart), then the cluster with the largest luminance(Φ)·extent² is
 // split at the flux-weighted median of its longest axis, until there are K clusters or none can
 // be split. Deterministic (no threads; ties broken by index). GL-free; the baker and the
-// renderer's VPL groups (bake/vpl_groups.h) share it.
+// renderer's VPL groups (vpl_runtime/vpl_groups.h) share it.
 #pragma once
 
 #include <cstddef>

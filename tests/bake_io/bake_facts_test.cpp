@@ -1,4 +1,4 @@
-// The panel's lines about a bake (bake/bake_facts.h): figures from the layout and bake.json,
+// The panel's lines about a bake (bake_folder/bake_facts.h): figures from the layout and bake.json,
 // its age from bake.json's time; figures bake.json lacks are left out, not shown as zero.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The error and validity views' colours (bake/texel_error.h), texel by texel.
+// The error and validity views' colours (bake_folder/texel_error.h), texel by texel.
 #include <gtest/gtest.h>
 
 #include "bake_folder/bake_folder.h"

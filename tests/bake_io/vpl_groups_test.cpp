@@ -1,4 +1,4 @@
-// The renderer's VPL groups and per-cell lightcuts (bake/vpl_groups.h), GL-free: every cell
+// The renderer's VPL groups and per-cell lightcuts (vpl_runtime/vpl_groups.h), GL-free: every cell
 // accounts for every VPL exactly once, the representatives keep the flux, and the cut's sum at
 // receivers in a room stays within the far-field bound 1/κ² of the full sum.
 #include "vpl_runtime/vpl_groups.h"

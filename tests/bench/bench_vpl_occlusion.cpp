@@ -2,7 +2,7 @@
 // content/cornell_box_dynamic with the sphere at its glTF place (cap 4096 and 16384 VPLs, error
 // target off):
 //   vplAliveMask  cutting the bake's light paths (VPLs of its static scene) at the sphere
-//                 (bake/vpl_occlusion.h, --dynamic-vpls cut);
+//                 (vpl_runtime/vpl_occlusion.h, --dynamic-vpls cut);
 //   vplRetrace    tracing the light paths again with the sphere in place: the scene flattened,
 //                 an Embree kernel built, the paths traced (vpl/vpl_retrace.h, --dynamic-vpls
 //                 retrace, the default), on one thread and on all.

@@ -1,11 +1,11 @@
 // bench_vpl_visibility: what VPL visibility buys, GL-free (docs/vpl_measurements.md "Visibility").
-// At receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake/vpl.h, clamped
-// as baker/vpl/vpl_gather.h) with
+// At receivers on a scene's floor, the indirect irradiance of a baked VPL set (bake_folder/vpl.h,
+// clamped as baker/vpl/vpl_gather.h) with
 //   exact   V = a ray between the receiver and every VPL (vpl_gather.h with the ray kernel),
 //   none    V = 1 (what the renderer draws without VPL shadows),
 //   groups  V = the visibility of the VPL's group, exact rays from one point of the group: the
-//           renderer's K groups (bake/vpl_groups.h), seen from the centroid or from the member
-//           nearest it (what K shadow cubes give at best; the maps' own error is tested in
+//           renderer's K groups (vpl_runtime/vpl_groups.h), seen from the centroid or from the
+//           member nearest it (what K shadow cubes give at best; the maps' own error is tested in
 //           tests/render/vpl_shadow_test.cpp),
 //   parts   V = the visibility of the VPL's part of its group, exact rays from the part's cube
 //           origin (the renderer's cubes: vplShadowCubes, render/vpl_shadow_maps.h),

@@ -381,8 +381,8 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
         compare(gather(m, shadowedByDynamics(m.scene, set), kernel.get(), rDefault), m.traced,
                 m.stdError, m.pixels.keep);
     report("default N, sphere's shadow", at, dimmed);
-    // The bake's light paths cut where the sphere blocks them (bake/vpl_occlusion.h, what the
-    // renderer does), gathered without visibility (the renderer's VPL shadows are off by
+    // The bake's light paths cut where the sphere blocks them (vpl_runtime/vpl_occlusion.h, what
+    // the renderer does), gathered without visibility (the renderer's VPL shadows are off by
     // default): at N and at the bake's 4N (the same seed and settings as bounce-bake).
     const std::vector<VplOccluder> sphere = dynamicVplOccluders(m.scene);
     const auto cut = [&](const VplSet& from) {

@@ -1,5 +1,5 @@
 // Per-group VPL visibility on the CPU, for the VPL shadow-map test and bench_vpl_visibility:
-// the renderer's K groups (bake/vpl_groups.h), each seen either from its representative (the
+// the renderer's K groups (vpl_runtime/vpl_groups.h), each seen either from its representative (the
 // centroid) or from its member nearest the centroid (nearestVpl, where the renderer put the
 // group's one shadow cube before the groups were split), or split into parts as the renderer
 // places its cubes (vplShadowCubes, render/vpl_shadow_maps.h), and the clamped gather of

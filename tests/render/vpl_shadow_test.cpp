@@ -454,7 +454,7 @@ BoxUnderVpls boxUnderVpls(glm::vec3 (*from)(glm::vec3 position)) {
 TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
   testContext();
   // Each VPL its own path, arriving from above the ceiling patch: the box cuts none of them
-  // (bake/vpl_occlusion.h), so only the VPL shadow maps darken the floor.
+  // (vpl_runtime/vpl_occlusion.h), so only the VPL shadow maps darken the floor.
   const BoxUnderVpls s =
       boxUnderVpls([](glm::vec3 position) { return position + glm::vec3(0.0f, 0.5f, 0.0f); });
   const Scene& scene = s.scene;
@@ -498,8 +498,8 @@ TEST(VplShadow, RendererRedrawsTheCubesWhenADynamicOccluderMoves) {
       ASSERT_EQ(back.pixels[i][c], shadowed.pixels[i][c]) << "pixel " << i;
 }
 
-// The light paths the dynamic box cuts (bake/vpl_occlusion.h), through the renderer: VPLs on a
-// ceiling patch whose incoming segments start at the origin, under the box, so that the box
+// The light paths the dynamic box cuts (vpl_runtime/vpl_occlusion.h), through the renderer: VPLs on
+// a ceiling patch whose incoming segments start at the origin, under the box, so that the box
 // blocks them. Without VPL shadows the frame is darker with the box in place; moved away
 // (setInstanceTransform), it equals the frame of a renderer built with the box already away;
 // moved back, the first frame returns exactly.

@@ -55,7 +55,7 @@ glm::dvec3 punctualIrradiance(const Light& l, glm::dvec3 x) {
   return glm::dvec3(l.intensity) * falloff * cosX / d2;
 }
 
-// E = Φ/π · cosθ_vpl · cosθ_x / d² (bake/vpl.h) on the +z plane at x.
+// E = Φ/π · cosθ_vpl · cosθ_x / d² (bake_folder/vpl.h) on the +z plane at x.
 glm::dvec3 vplIrradiance(const Vpl& v, glm::dvec3 x) {
   const glm::dvec3 d = glm::dvec3(v.position) - x;
   const double d2 = glm::dot(d, d);
@@ -129,7 +129,7 @@ TEST(LightSampler, TwentyUnequalPointLightsOverAPlane) {
 }
 
 // Every kind at once: the 20 point lights, a tilted spot, a directional light and three VPLs
-// (for checks: the tracer samples them as cosine emitters, bake/vpl.h).
+// (for checks: the tracer samples them as cosine emitters, bake_folder/vpl.h).
 TEST(LightSampler, EveryPunctualKindAndVirtualPointLights) {
   test::World world = planeWorld(glm::vec3(0.5f));  // albedo irrelevant: E is measured
   world.scene.lights = twentyPointLights();

@@ -130,8 +130,8 @@ namespace {
 // The two evaluators of one VPL set agree: the path tracer sampling the VPLs as lights (one
 // per vertex, by power; PathSet::DirectOnly and no scene light, so only the VPLs' light after
 // one reflection counts) against the exact unclamped sum of the gather, at receivers in the
-// corner scene. Ties the convention the tracer checks (bake/vpl.h) to the one the renderer will
-// be measured against.
+// corner scene. Ties the convention the tracer checks (bake_folder/vpl.h) to the one the renderer
+// will be measured against.
 TEST(VplGather, PathTracerSamplingTheVplsAgreesWithTheSum) {
   test::World world = cornerWorld();
   VplSettings settings;

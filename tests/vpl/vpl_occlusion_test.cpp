@@ -1,5 +1,5 @@
-// The bake's VPLs with a placed object cutting their light paths (bake/vpl_occlusion.h) against
-// the generator run with that object in the scene. The object is black (albedo 0) in the
+// The bake's VPLs with a placed object cutting their light paths (vpl_runtime/vpl_occlusion.h)
+// against the generator run with that object in the scene. The object is black (albedo 0) in the
 // reference run, so that paths reaching it end there, as they do when the mask cuts them: the
 // two sets then estimate the same flux per bounce (the masked set lacks only the light the object
 // reflects, here none). Tolerance: 4 standard errors of the difference of the two estimates,
