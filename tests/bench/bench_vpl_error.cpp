@@ -1,10 +1,10 @@
-// The VPL term's error against its frame time (docs/vpl_measurements.md, "Error against frame time").
-// Cornell box, one path-traced indirect-only reference (cached as EXR with its
-// per-pixel standard error), compared as tests/render/indirect_accuracy.h does over the pixels
-// that see one flat piece of a static, non-emissive surface. For each VPL cap (the baker's
-// generator in-process, error target off so the cap is the count, one seed) and each of
-// {per-cell lightcut culling on/off} × {VPL shadow maps on/off}, `--mode vpl` is drawn and timed;
-// then the lightmap's point: a fresh bake with bounce-bake's defaults drawn in `--mode indirect`.
+// The VPL term's error against its frame time (docs/vpl_measurements.md, "Error against frame
+// time"). Cornell box, one path-traced indirect-only reference (cached as EXR with its per-pixel
+// standard error), compared as tests/render/indirect_accuracy.h does over the pixels that see one
+// flat piece of a static, non-emissive surface. For each VPL cap (the baker's generator in-process,
+// error target off so the cap is the count, one seed) and each of {per-cell lightcut culling
+// on/off} × {VPL shadow maps on/off}, `--mode vpl` is drawn and timed; then the lightmap's point: a
+// fresh bake with bounce-bake's defaults drawn in `--mode indirect`.
 //
 // Error (luminance Y, over the mask): mean |Y_r − Y_t|/Y_t (the reference's noise adds at most
 // `ref_noise_allowance` to it) and the relative MSE mean((Y_r − Y_t)/Y_t)², whose expected
