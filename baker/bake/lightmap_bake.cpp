@@ -67,6 +67,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   const std::vector<uint32_t> mine =
       tiling.shards > 1 ? shardTiles(byCost, tiling.shard, tiling.shards) : byCost;
   bake.tiles = static_cast<uint32_t>(byCost.size());
+  bake.tilesShare = static_cast<uint32_t>(mine.size());
   TileExchange* exchange = tiling.exchange;
   bake.partial = tiling.shards > 1 || (exchange && !exchange->keeper());
   std::vector<uint8_t> hasWork(grid.count(), 0);

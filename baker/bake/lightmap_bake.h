@@ -95,10 +95,11 @@ struct LightmapBake {
   // static area lights and settings.visibility.enabled.
   std::optional<BakedVisibility> visibility;
   VisibilityBakeReport visibilityReport;
-  // The tiles with work (covered texels), how many were restored rather than computed, and
-  // whether this is one shard's part only (then only the tile stages ran: the filters did not,
-  // and the texels of other shards' tiles are zero).
-  uint32_t tiles = 0, tilesRestored = 0;
+  // The tiles with work (covered texels), this bake's share of them (all but for a shard), how
+  // many of the share were restored rather than computed, and whether this is one shard's part
+  // only (then only the tile stages ran: the filters did not, and the texels of other shards'
+  // tiles are zero).
+  uint32_t tiles = 0, tilesShare = 0, tilesRestored = 0;
   bool partial = false;
 };
 

@@ -183,10 +183,8 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   result.tilesRestored = bake.tilesRestored;
   if (o.resume && bake.tilesRestored > 0)
     result.notes.push_back("resumed: " + std::to_string(bake.tilesRestored) + " of " +
-                           std::to_string(o.shards > 1
-                                              ? (bake.tiles + o.shards - 1 - o.shard) / o.shards
-                                              : bake.tiles) +
-                           " tiles were in " + o.journal.string());
+                           std::to_string(bake.tilesShare) + " tiles were in " +
+                           o.journal.string());
   if (bake.partial) {
     result.partial = true;
     result.measuredPeakBytes = peakResidentBytes();
