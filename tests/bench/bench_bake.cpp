@@ -21,8 +21,8 @@
 
 #include "atlas/atlas.h"
 #include "bake/leak_guard.h"
-#include "bake/lightmap_bake.h"
 #include "bake/texel_coverage.h"
+#include "pipeline/scene_bake.h"
 #include "scene/load.h"
 #include "test_geometry.h"
 #include "trace/denormals_flushed.h"
@@ -145,15 +145,23 @@ Accuracy accuracy(const Image& lightmap, const Reference& ref) {
   return a;
 }
 
+// bakeScene's lightmap (bounce-bake's entry point, from the atlas to the filters; no VPLs), with
+// its wall and CPU time.
 struct Timed {
-  LightmapBake bake;
+  Bake bake;
   double wall = 0, cpu = 0;
+  const BakeManifest& manifest() const { return bake.manifest; }
+  double meanSpp() const {
+    const BakeManifest::Atlas& a = bake.manifest.atlas;
+    return static_cast<double>(bake.manifest.samples.total) /
+           static_cast<double>(a.coveredTexels - a.invalidTexels);
+  }
 };
 
-Timed timedBake(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-                const LightmapLayout& layout, const LightmapBakeSettings& settings) {
+Timed timedBake(const Scene& scene, SceneBakeSettings settings) {
+  settings.vpls = 0;
   const double w0 = wallSeconds(), c0 = cpuSeconds();
-  Timed t{bakeLightmap(scene, geometry, kernel, layout, settings), 0, 0};
+  Timed t{bakeScene(scene, settings).folder, 0, 0};
   t.wall = wallSeconds() - w0;
   t.cpu = cpuSeconds() - c0;
   return t;
@@ -189,36 +197,32 @@ int main(int argc, char** argv) {
   const Rate closest = embreeRate(geometry, *kernel, false);
   const Rate occluded = embreeRate(geometry, *kernel, true);
 
-  // The default bake, timed from the atlas on (as bounce-bake runs it, minus loading and writing).
-  const double w0 = wallSeconds(), c0 = cpuSeconds();
-  AtlasSettings atlasSettings;
-  atlasSettings.texelBudget = kSmallSceneTexels;
-  const Atlas atlas = buildAtlas(scene, atlasSettings);
-  const LightmapBakeSettings defaults = defaultBakeSettings();
-  const LightmapBake bake = bakeLightmap(scene, geometry, *kernel, atlas.layout, defaults);
-  const double wall = wallSeconds() - w0, cpu = cpuSeconds() - c0;
-  const double traceCpu = cpu * (bake.seconds.leakGuard + bake.seconds.irradiance) / wall;
-  std::printf("scene %s: atlas %dx%d, texel %.4f m, %llu texels\n", scenePath.c_str(),
-              atlas.layout.width, atlas.layout.height, static_cast<double>(atlas.layout.texelSize),
-              static_cast<unsigned long long>(bake.coveredTexels));
+  // The default bake, timed from the atlas on (as bounce-bake runs it, minus loading, writing and
+  // the VPLs).
+  const SceneBakeSettings defaults;
+  const Timed bake = timedBake(scene, defaults);
+  const BakeManifest& m = bake.manifest();
+  const LightmapLayout& layout = bake.bake.layout;
+  const double tracing = m.measured.seconds.leakGuard + m.measured.seconds.irradiance;
+  const double traceCpu = bake.cpu * tracing / bake.wall;
+  std::printf("scene %s: atlas %dx%d, texel %.4f m (%s), %llu texels\n", scenePath.c_str(),
+              layout.width, layout.height, static_cast<double>(layout.texelSize),
+              m.atlas.texelRule.c_str(), static_cast<unsigned long long>(m.atlas.coveredTexels));
   std::printf(
       "default bake: %.2f s wall, %.2f s CPU (irradiance %.2f s wall), %.0f spp mean, "
       "estimated error mean %.2f%% p95 %.2f%%\n",
-      wall, cpu, bake.seconds.irradiance,
-      static_cast<double>(bake.totalSamples) /
-          static_cast<double>(bake.coveredTexels - bake.invalidTexels),
-      100.0 * bake.meanRelativeError, 100.0 * bake.p95RelativeError);
-  const double bakeRays = static_cast<double>(bake.rays);
+      bake.wall, bake.cpu, m.measured.seconds.irradiance, bake.meanSpp(),
+      100.0 * m.estimatedError.mean, 100.0 * m.estimatedError.p95);
+  const double bakeRays = static_cast<double>(m.rays.traced);
   std::printf(
       "rays: bake %.2f Mrays/s wall, %.2f Mrays per CPU-second; Embree raw incoherent "
       "closest %.2f / %.2f, occlusion %.2f / %.2f (wall / CPU-second); bake/Embree "
       "closest per CPU-second %.2f\n",
-      1e-6 * bakeRays / (bake.seconds.leakGuard + bake.seconds.irradiance),
-      1e-6 * bakeRays / traceCpu, 1e-6 * closest.perWallSecond, 1e-6 * closest.perCpuSecond,
-      1e-6 * occluded.perWallSecond, 1e-6 * occluded.perCpuSecond,
+      1e-6 * bakeRays / tracing, 1e-6 * bakeRays / traceCpu, 1e-6 * closest.perWallSecond,
+      1e-6 * closest.perCpuSecond, 1e-6 * occluded.perWallSecond, 1e-6 * occluded.perCpuSecond,
       bakeRays / traceCpu / closest.perCpuSecond);
-  const Reference ref = reference(scene, geometry, *kernel, atlas.layout, texels, referenceSpp);
-  const Accuracy acc = accuracy(bake.irradiance, ref);
+  const Reference ref = reference(scene, geometry, *kernel, layout, texels, referenceSpp);
+  const Accuracy acc = accuracy(bake.bake.irradiance, ref);
   std::printf(
       "accuracy over %d texels against %d-spp path-traced irradiance: mean |rel| %.2f%%, "
       "rms %.2f%% (reference's own standard error %.2f%%)\n",
@@ -237,6 +241,7 @@ int main(int argc, char** argv) {
                  "estimated_error,mean_abs_rel_error,rms_rel_error,reference_error\n");
     for (const int budget : {kSmallSceneTexels, kSmallSceneTexels / 4}) {
       if (coarseOnly && budget == kSmallSceneTexels) continue;
+      // The atlas is a function of the scene and the budget: the reference's is the bakes'.
       AtlasSettings s;
       s.texelBudget = budget;
       const Atlas a = buildAtlas(scene, s);
@@ -244,18 +249,21 @@ int main(int argc, char** argv) {
       for (const bool denoise : {false, true}) {
         if (coarseOnly && !denoise) continue;
         for (const float target : {0.4f, 0.2f, 0.1f, 0.05f, 0.03f}) {
-          LightmapBakeSettings settings = defaults;
+          SceneBakeSettings settings = defaults;
+          settings.texelBudget = budget;
           settings.denoise = denoise;
-          settings.irradiance.targetError = target;
-          const Timed t = timedBake(scene, geometry, *kernel, a.layout, settings);
+          settings.targetError = target;
+          const Timed t = timedBake(scene, settings);
+          if (t.bake.layout.width != a.layout.width || t.bake.layout.height != a.layout.height) {
+            std::fprintf(stderr, "bench_bake: the bake's atlas is not the reference's\n");
+            return 1;
+          }
           const Accuracy e = accuracy(t.bake.irradiance, r);
           std::fprintf(csv, "%d,%.5f,%d,%.3f,%.3f,%.3f,%.1f,%.4f,%.4f,%.4f,%.4f\n", budget,
                        static_cast<double>(a.layout.texelSize), denoise ? 1 : 0,
-                       static_cast<double>(target), t.wall, t.cpu,
-                       static_cast<double>(t.bake.totalSamples) /
-                           static_cast<double>(t.bake.coveredTexels - t.bake.invalidTexels),
-                       static_cast<double>(t.bake.meanRelativeError), e.meanAbsRelative,
-                       e.rmsRelative, e.referenceRelative);
+                       static_cast<double>(target), t.wall, t.cpu, t.meanSpp(),
+                       t.manifest().estimatedError.mean, e.meanAbsRelative, e.rmsRelative,
+                       e.referenceRelative);
           std::fflush(csv);
           std::printf(
               "budget %d denoise %d target %.3f: %.2f s wall %.2f s CPU, mean |rel| %.2f%%\n",

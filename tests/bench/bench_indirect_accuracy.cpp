@@ -22,21 +22,18 @@ using namespace bounce;
 
 int main(int argc, char** argv) {
   std::string scenePath = std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box/cornell_box.gltf";
-  AtlasSettings atlas;
-  atlas.texelBudget = 16384;
-  LightmapBakeSettings bake;
-  bake.irradiance.maxSpp = 4096;
-  bake.irradiance.targetError = 0.1f;
+  SceneBakeSettings bake = test::lightmapOnlySettings();
+  bake.texelBudget = 16384;
   std::string denoise = "on";
   int size = 128, refSpp = 4096;
   std::string refFile, outDir;
   bool header = false;
   CLI::App app{"Renderer's indirect frame (with a fresh bake) against the path tracer."};
   app.add_option("scene", scenePath, "scene (default: the Cornell box)");
-  app.add_option("--texel-budget", atlas.texelBudget, "atlas texel budget (bounce-bake default)");
-  app.add_option("--texel-size", atlas.texelSize, "texel edge in metres (overrides the budget)");
-  app.add_option("--spp", bake.irradiance.maxSpp, "most samples per texel");
-  app.add_option("--target-error", bake.irradiance.targetError, "per-texel relative error target");
+  app.add_option("--texel-budget", bake.texelBudget, "atlas texel budget (bounce-bake default)");
+  app.add_option("--texel-size", bake.texelSize, "texel edge in metres (overrides the budget)");
+  app.add_option("--spp", bake.spp, "most samples per texel");
+  app.add_option("--target-error", bake.targetError, "per-texel relative error target");
   app.add_option("--denoise", denoise, "on|off")->check(CLI::IsMember({"on", "off"}));
   app.add_option("--size", size, "frame width = height, pixels");
   app.add_option("--ref-spp", refSpp, "reference samples per pixel");
@@ -51,9 +48,9 @@ int main(int argc, char** argv) {
     const Camera& camera = scene.cameras.at(0);
     const test::Reference reference = test::cachedIndirectReference(
         scene, camera, size, refSpp, refFile, "bench_indirect_accuracy");
-    const test::BakeRun baked = test::bakeScene(scene, atlas, bake);
+    const Bake baked = bakeScene(scene, bake).folder;
     const auto context = gl::createOSMesaContext();
-    const Image rendered = test::renderIndirect(scene, baked.bake, camera, size, size);
+    const Image rendered = test::renderIndirect(scene, baked, camera, size, size);
     const test::IndirectComparison c = test::compareIndirect(scene, camera, rendered, reference);
     if (!outDir.empty()) {
       writeExr(fs::path(outDir) / "indirect.exr", rendered);
@@ -69,10 +66,10 @@ int main(int argc, char** argv) {
           "texel_budget,texel_size_m,atlas_w,atlas_h,spp_cap,target_error,denoise,bake_s,"
           "est_error_mean,mean_abs_rel_error,bias,ref_rel_std_error,ref_noise_allowance,"
           "pixels\n");
-    std::printf("%d,%.5f,%d,%d,%d,%.3f,%s,%.3f,%.4f,%.4f,%+.4f,%.4f,%.4f,%zu\n", atlas.texelBudget,
-                baked.bake.layout.texelSize, baked.bake.layout.width, baked.bake.layout.height,
-                bake.irradiance.maxSpp, bake.irradiance.targetError, denoise.c_str(), baked.seconds,
-                baked.stats.meanRelativeError, c.meanAbsRelError, c.bias, c.meanRelStdError,
+    std::printf("%d,%.5f,%d,%d,%d,%.3f,%s,%.3f,%.4f,%.4f,%+.4f,%.4f,%.4f,%zu\n", bake.texelBudget,
+                baked.layout.texelSize, baked.layout.width, baked.layout.height, bake.spp,
+                bake.targetError, denoise.c_str(), baked.manifest.measured.seconds.total,
+                baked.manifest.estimatedError.mean, c.meanAbsRelError, c.bias, c.meanRelStdError,
                 c.referenceNoise, c.pixels);
     return 0;
   } catch (const std::exception& e) {

@@ -74,12 +74,8 @@ int main(int argc, char** argv) {
   std::vector<int> caps = {64, 256, 1024, 4096, 16384};
   int size = 128, refSpp = 2048, frames = 5;
   uint32_t seed = 0;
-  AtlasSettings atlas;
-  atlas.texelBudget = 16384;
-  LightmapBakeSettings lightmap;  // bounce-bake's defaults
-  lightmap.irradiance.maxSpp = 4096;
-  lightmap.irradiance.targetError = 0.1f;
-  lightmap.denoise = true;
+  SceneBakeSettings lightmap = test::lightmapOnlySettings();  // bounce-bake's defaults
+  lightmap.texelBudget = 16384;
   bool noLightmap = false;
   std::string refFile, outFile, imageDir;
   CLI::App app{
@@ -93,8 +89,8 @@ int main(int argc, char** argv) {
                  "reference EXR: read if present (with <name>.se.exr), else traced and written");
   app.add_option("--frames", frames, "timed frames per configuration (median)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--texel-budget", atlas.texelBudget, "lightmap atlas texel budget");
-  app.add_option("--spp", lightmap.irradiance.maxSpp, "lightmap: most samples per texel");
+  app.add_option("--texel-budget", lightmap.texelBudget, "lightmap atlas texel budget");
+  app.add_option("--spp", lightmap.spp, "lightmap: most samples per texel");
   app.add_flag("--no-lightmap", noLightmap, "skip the lightmap's point");
   app.add_option("--out", outFile, "CSV file (default: stdout)");
   app.add_option("--image-dir", imageDir, "write each frame as EXR here");
@@ -143,11 +139,11 @@ int main(int argc, char** argv) {
     }
     if (!noLightmap) {
       std::fprintf(stderr, "bench_vpl_error: baking the lightmap (%d texels, <= %d spp)\n",
-                   atlas.texelBudget, lightmap.irradiance.maxSpp);
-      const test::BakeRun baked = test::bakeScene(scene, atlas, lightmap);
+                   lightmap.texelBudget, lightmap.spp);
+      const Bake baked = bakeScene(scene, lightmap).folder;
       RendererSettings settings;
       settings.mode = RenderMode::Indirect;
-      ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &baked.bake);
+      ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &baked);
       measure("lightmap", 0, 0, 0, renderer);
     }
     if (outFile.empty())

@@ -66,14 +66,13 @@ Camera overTheRoom() {
   return lookingAt({0.3f, 1.0f, 1.6f}, {0.0f, 0.0f, -0.1f}, 1.0f);
 }
 
-BakeRun bakeVisibility(const Scene& scene) {
-  AtlasSettings atlas;
-  atlas.texelSize = 0.025f;
-  LightmapBakeSettings settings = defaultBakeSettings();
-  settings.irradiance.maxSpp = 16;  // the direct frame does not read the irradiance
-  settings.irradiance.targetError = 0.0f;
+SceneBake bakeVisibility(const Scene& scene) {
+  SceneBakeSettings settings = lightmapOnlySettings();
+  settings.texelSize = 0.025f;
+  settings.spp = 16;  // the direct frame does not read the irradiance
+  settings.targetError = 0.0f;
   settings.denoise = false;
-  return bakeScene(scene, atlas, settings);
+  return bakeScene(scene, settings);
 }
 
 Image renderDirect(const Scene& scene, const Bake* bake, const Camera& camera) {
@@ -89,20 +88,20 @@ Image renderDirect(const Scene& scene, const Bake* bake, const Camera& camera) {
 TEST(BakedDirect, SixteenPanelsOverRailsAndPostsWithinFivePercentOfThePathTracer) {
   const Scene scene = railsUnderSixteenPanels();
   const Camera camera = overTheRoom();
-  const BakeRun run = bakeVisibility(scene);
-  ASSERT_TRUE(run.bake.visibility.has_value());
-  EXPECT_EQ(run.bake.visibility->lightCount, 16u);  // one mesh, sixteen lights
+  const SceneBake run = bakeVisibility(scene);
+  ASSERT_TRUE(run.folder.visibility.has_value());
+  EXPECT_EQ(run.folder.visibility->lightCount, 16u);  // one mesh, sixteen lights
   const Reference reference =
       traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
   const IndirectComparison baked =
-      compareIndirect(scene, camera, renderDirect(scene, &run.bake, camera), reference);
+      compareIndirect(scene, camera, renderDirect(scene, &run.folder, camera), reference);
   const IndirectComparison maps =
       compareIndirect(scene, camera, renderDirect(scene, nullptr, camera), reference);
   std::printf(
       "16 panels over rails: baked visibility %.2f%% (bias %+.2f%%), shadow maps only "
       "%.2f%% (bias %+.2f%%), reference noise %.2f%%, %zu pixels; bake %.2f s\n",
       100 * baked.meanAbsRelError, 100 * baked.bias, 100 * maps.meanAbsRelError, 100 * maps.bias,
-      100 * baked.referenceNoise, baked.pixels, run.seconds);
+      100 * baked.referenceNoise, baked.pixels, run.folder.manifest.measured.seconds.total);
   ASSERT_GT(baked.pixels, static_cast<std::size_t>(kWidth * kHeight / 3));
   EXPECT_LT(baked.meanAbsRelError, 0.05 + baked.referenceNoise);
   // Shadow maps alone cannot (13 lights unshadowed, thin rails): the test scene matters.
@@ -123,12 +122,9 @@ TEST(BakedDirect, ADynamicBoxCastsAndReceivesShadowsUnderABakedPanel) {
   addBox(scene, {0.0f, 0.0f, 0.0f}, {0.25f, 0.25f, 0.25f}, matte("box", glm::vec3(0.8f)));
   scene.instances.back().mobility = Mobility::Dynamic;
   const Camera camera = overTheRoom();
-  // The lightmap and visibility of the static scene, as bounce-bake makes them.
-  Scene statics = scene;
-  statics.instances.pop_back();
-  const BakeRun run = bakeVisibility(statics);
-  Bake bake = run.bake;
-  bake.manifest = minimalManifest(scene);
+  // The lightmap and visibility of the static scene, as bounce-bake makes them (the dynamic box
+  // left out of the bake).
+  const Bake bake = bakeVisibility(scene).folder;
   const Reference reference =
       traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
   const Image rendered = renderDirect(scene, &bake, camera);

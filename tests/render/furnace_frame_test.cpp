@@ -45,15 +45,14 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
 
   // bounce-bake's defaults but a 2.5% target error per texel (at the default 10% the noise alone
   // reaches 12% at some pixels after denoising) and 4096 texels (7.6 cm) to keep it CI-sized.
-  LightmapBakeSettings settings = defaultBakeSettings();
-  settings.irradiance.targetError = 0.025f;
-  settings.irradiance.maxSpp = 16384;
-  AtlasSettings atlas;
-  atlas.texelBudget = 4096;
-  const BakeRun baked = bakeScene(scene, atlas, settings);
+  SceneBakeSettings settings = lightmapOnlySettings();
+  settings.targetError = 0.025f;
+  settings.spp = 16384;
+  settings.texelBudget = 4096;
+  const Bake baked = bakeScene(scene, settings).folder;
   testContext();
   constexpr int kSize = 64;
-  const Image frame = renderIndirect(scene, baked.bake, camera, kSize, kSize);
+  const Image frame = renderIndirect(scene, baked, camera, kSize, kSize);
   const double exact = kLe * kRho * kRho / (1.0 - kRho);
   int over3 = 0, over1 = 0;
   double worst = 0.0, sum = 0.0, bias = 0.0;
@@ -71,10 +70,10 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
   std::printf(
       "furnace %dx%d atlas, texel %.4f m: bias %+.4f, mean |rel| %.4f, worst %.4f at (%d, %d) "
       "(L = %.4f, exact %.4f), pixels over 1%%: %d, over 3%%: %d of %d; texel error mean %.4f\n",
-      baked.bake.layout.width, baked.bake.layout.height, baked.bake.layout.texelSize,
-      bias / (kSize * kSize), sum / (kSize * kSize), worst, wx, wy,
+      baked.layout.width, baked.layout.height, baked.layout.texelSize, bias / (kSize * kSize),
+      sum / (kSize * kSize), worst, wx, wy,
       frame.pixels[static_cast<std::size_t>(wy) * kSize + wx].g, exact, over1, over3, kSize * kSize,
-      baked.stats.meanRelativeError);
+      baked.manifest.estimatedError.mean);
   // What is left is the bake's noise, the same everywhere: mean |rel| 0.5% and 13 of 65,536
   // pixels over 3% (worst 3.8%) at 256². A texel whose sample points lie in or behind the
   // neighbouring surface is off by far more (−17% at corners was reported against the bake

@@ -1,7 +1,6 @@
 // The renderer's baked indirect light against the reference path tracer, as docs/renderer.md
-// ("Baked light") measures it: bake a scene (atlas + bakeLightmap, in-process), draw `--mode
-// indirect`, trace
-// `--indirect-only` with the same camera, and compare over the pixels that see one flat piece
+// ("Baked light") measures it: bake a scene in-process with bakeScene, draw `--mode indirect`,
+// trace `--indirect-only` with the same camera, and compare over the pixels that see one flat piece
 // of a static, non-emissive surface (pixel_surfaces.h). Used by the CI-sized test and the
 // full-size benchmark (tests/bench/bench_indirect_accuracy.cpp).
 //
@@ -12,15 +11,13 @@
 // is reported as `referenceNoise`.
 #pragma once
 
-#include <chrono>
 #include <cmath>
 #include <vector>
 
-#include "atlas/atlas.h"
-#include "bake/lightmap_bake.h"
 #include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
 #include "image/luminance.h"
+#include "pipeline/scene_bake.h"
 #include "pixel_surfaces.h"
 #include "ray/ray_kernel.h"
 #include "render/forward_renderer.h"
@@ -30,27 +27,12 @@
 
 namespace bounce::test {
 
-struct BakeRun {
-  Bake bake;
-  LightmapBake stats;
-  double seconds = 0.0;  // atlas + bake, wall
-};
-
-// Bakes in-process as bounce-bake does (atlas from the texel budget, then bakeLightmap).
-inline BakeRun bakeScene(const Scene& scene, const AtlasSettings& atlasSettings,
-                         const LightmapBakeSettings& bakeSettings) {
-  const auto start = std::chrono::steady_clock::now();
-  BakeRun run;
-  const Atlas atlas = buildAtlas(scene, atlasSettings);
-  const WorldGeometry geometry = flatten(scene);
-  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
-  run.stats = bakeLightmap(scene, geometry, *kernel, atlas.layout, bakeSettings);
-  run.bake.layout = atlas.layout;
-  run.bake.irradiance = run.stats.irradiance;
-  run.bake.visibility = run.stats.visibility;
-  run.bake.manifest.sceneHash = sceneContentHash(scene);
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return run;
+// bounce-bake's defaults without VPLs: what the comparisons below bake with bakeScene
+// (pipeline/scene_bake.h), the entry point bounce-bake calls, static-scene step included.
+inline SceneBakeSettings lightmapOnlySettings() {
+  SceneBakeSettings settings;
+  settings.vpls = 0;
+  return settings;
 }
 
 struct IndirectComparison {

@@ -27,24 +27,24 @@ namespace {
 TEST(LightmapAccuracy, CornellIndirectFrameMatchesThePathTracer) {
   const Scene scene =
       loadScene(std::filesystem::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf");
-  AtlasSettings atlas;
-  atlas.texelBudget = 4096;
-  LightmapBakeSettings settings;
-  settings.irradiance.maxSpp = 1024;
-  settings.irradiance.targetError = 0.1f;
+  SceneBakeSettings settings = lightmapOnlySettings();
+  settings.texelBudget = 4096;
+  settings.spp = 1024;
+  settings.targetError = 0.1f;
   settings.denoise = false;
-  const BakeRun baked = bakeScene(scene, atlas, settings);
+  const Bake baked = bakeScene(scene, settings).folder;
   testContext();
   const Camera& camera = scene.cameras.at(0);
-  const Image rendered = renderIndirect(scene, baked.bake, camera, 32, 32);
+  const Image rendered = renderIndirect(scene, baked, camera, 32, 32);
   const IndirectComparison c =
       compareIndirect(scene, camera, rendered, traceIndirectReference(scene, camera, 32, 32, 4096));
   std::printf(
       "Cornell indirect, %dx%d lightmap: mean |dY|/Y = %.4f over %zu pixels (bias %+.4f); "
       "reference mean relative standard error %.4f, noise allowance %.4f; bake %.2f s, "
       "estimated texel error mean %.4f\n",
-      baked.bake.layout.width, baked.bake.layout.height, c.meanAbsRelError, c.pixels, c.bias,
-      c.meanRelStdError, c.referenceNoise, baked.seconds, baked.stats.meanRelativeError);
+      baked.layout.width, baked.layout.height, c.meanAbsRelError, c.pixels, c.bias,
+      c.meanRelStdError, c.referenceNoise, baked.manifest.measured.seconds.total,
+      baked.manifest.estimatedError.mean);
   EXPECT_GT(c.pixels, 500u);  // most of the 1024 pixels see walls and blocks
   EXPECT_LT(c.meanRelStdError, 0.04);
   EXPECT_LE(c.meanAbsRelError, 0.05 + c.referenceNoise);
@@ -82,27 +82,25 @@ TEST(LightmapAccuracy, NoSeamJumpsLargerThanInsideAChart) {
       glm::inverse(glm::lookAt(glm::vec3(0.0f, 0.2f, 0.7f), glm::vec3(0, 0.33f, 0), {0, 1, 0}));
   scene.cameras = {camera};
 
-  AtlasSettings atlas;
-  atlas.texelBudget = 4096;
-  LightmapBakeSettings settings;
-  settings.irradiance.maxSpp = 512;
-  settings.irradiance.targetError = 0.1f;
-  const BakeRun baked = bakeScene(scene, atlas, settings);
-  const LightmapCharts charts = findCharts(baked.bake.layout);
+  SceneBakeSettings settings = lightmapOnlySettings();
+  settings.texelBudget = 4096;
+  settings.spp = 512;
+  settings.targetError = 0.1f;
+  const Bake baked = bakeScene(scene, settings).folder;
+  const LightmapCharts charts = findCharts(baked.layout);
 
   constexpr int kSize = 160;
   testContext();
   RendererSettings indirect;
   indirect.mode = RenderMode::Indirect;
-  ForwardRenderer renderer(scene, gl::shaderDirectory(), indirect, &baked.bake);
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), indirect, &baked);
   const Image image = renderer.renderImage(camera, kSize, kSize);
 
   const WorldGeometry geometry = flatten(scene);
   const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
   const PixelSurfaces surfaces = findPixelSurfaces(geometry, *kernel, camera, kSize, kSize);
-  const std::vector<uint32_t> chart =
-      pixelCharts(scene, geometry, baked.bake.layout, charts, surfaces);
-  const LightmapLayout& layout = baked.bake.layout;
+  const std::vector<uint32_t> chart = pixelCharts(scene, geometry, baked.layout, charts, surfaces);
+  const LightmapLayout& layout = baked.layout;
   const std::vector<int32_t> texelChart = chartIdImage(layout, charts);
   const InstanceLightmapUv& region = *layout.find(sphere);
   uint32_t firstTriangle = 0;
@@ -174,8 +172,7 @@ TEST(LightmapAccuracy, NoSeamJumpsLargerThanInsideAChart) {
   std::printf(
       "sphere: %zu charts in view, texel %.4f m; largest neighbour jump in luminance: %.5f across "
       "a seam (%zu pairs), %.5f inside a chart, away from its border (%zu pairs), W/(sr·m²)\n",
-      sphereCharts.size(), baked.bake.layout.texelSize, seamJump, seamPairs, insideJump,
-      insidePairs);
+      sphereCharts.size(), baked.layout.texelSize, seamJump, seamPairs, insideJump, insidePairs);
   EXPECT_GE(sphereCharts.size(), 3u);
   EXPECT_GT(seamPairs, 50u);
   EXPECT_GT(insideJump, 0.0f);
