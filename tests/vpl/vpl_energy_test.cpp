@@ -72,6 +72,40 @@ TEST(VplEnergy, ClosedBoxPointLightFluxPerBounceIsPhi0RhoK) {
   EXPECT_EQ(set.bounce.size(), set.vpls.size());
 }
 
+// The point light's closed box with base-colour textured walls: 256 × 256 texels in stripes,
+// every 4th column b and the others a, over each 2 m face (a period of 3.1 cm, against the
+// irradiance that varies on the scale of the light's distance to the walls, ≥ 0.7 m). What the
+// walls re-emit is then that of the stripes' area mean ρ̄ = (3a + b)/4: Φ₀·ρ̄ after one
+// reflection and Φ₀·ρ̄² after two, up to a bias second order in period/distance (< 0.1%).
+// Per-path flux now varies with the texel hit, so the tolerance is the estimator's.
+TEST(VplEnergy, TexturedClosedBoxReflectsTheTexturesMeanColour) {
+  const glm::vec3 a(0.9f, 0.1f, 0.6f), b(0.1f, 0.5f, 0.2f);
+  test::World world;
+  Texture stripes;
+  stripes.name = "stripes";
+  stripes.width = stripes.height = 256;
+  for (int y = 0; y < stripes.height; ++y)
+    for (int x = 0; x < stripes.width; ++x) stripes.texels.push_back(x % 4 == 0 ? b : a);
+  world.scene.textures.push_back(stripes);
+  const uint32_t wall = addMaterial(world.scene, glm::vec3(1.0f));
+  world.scene.materials[wall].albedoTexture = 0;
+  addInwardBox(world.scene, glm::vec3(-1.0f), glm::vec3(1.0f), wall);
+  for (Mesh& mesh : world.scene.meshes) mesh.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  Light light;
+  light.position = {0.2f, -0.1f, 0.3f};
+  light.intensity = {1, 2, 3};
+  world.scene.lights.push_back(light);
+  world.build();
+  const VplSet set = generateVpls(world.scene, world.geometry, *world.kernel, fixedPaths(16384));
+  const glm::dvec3 phi0 = 4.0 * kPiD * glm::dvec3(light.intensity);
+  const glm::dvec3 rho = glm::dvec3(3.0f * a + b) * 0.25;
+  std::printf("textured: bounce 1 %.4f ± %.4f vs %.4f, bounce 2 %.4f ± %.4f vs %.4f W (red)\n",
+              set.fluxPerBounce[0].r, set.fluxPerBounceError[0].r, (phi0 * rho).r,
+              set.fluxPerBounce[1].r, set.fluxPerBounceError[1].r, (phi0 * rho * rho).r);
+  expectClose(set.fluxPerBounce[0], set.fluxPerBounceError[0], phi0 * rho, 1e-3, "bounce 1");
+  expectClose(set.fluxPerBounce[1], set.fluxPerBounceError[1], phi0 * rho * rho, 1e-3, "bounce 2");
+}
+
 // A tilted, double-sided square emitter and a point light in the same box (all surfaces,
 // the emitter too, of albedo ρ): Φ₀ = 2π·Le·A + 4πI; bounce 1 = Φ₀ρ in expectation (the light
 // pick by power and the face pick add noise per channel), bounce 2 = Φ₀ρ².
