@@ -7,6 +7,7 @@ import base64
 import json
 import math
 import struct
+import zlib
 
 
 def sub(a, b):
@@ -55,19 +56,40 @@ class GltfWriter:
 
     def _accessor(self, values, kind, with_bounds):
         flat = [x for v in values for x in v]
+        dims = len(values[0])
         view = self._view(struct.pack("<%df" % len(flat), *flat), 34962)
         acc = {"bufferView": view, "componentType": 5126, "count": len(values), "type": kind}
         if with_bounds:
-            acc["min"] = [min(v[i] for v in values) for i in range(3)]
-            acc["max"] = [max(v[i] for v in values) for i in range(3)]
+            acc["min"] = [min(v[i] for v in values) for i in range(dims)]
+            acc["max"] = [max(v[i] for v in values) for i in range(dims)]
         self.doc["accessors"].append(acc)
         return len(self.doc["accessors"]) - 1
 
+    def png_texture(self, name, width, height, srgb_rows):
+        """An 8-bit RGB PNG (rows top first, each a list of (r, g, b) bytes) embedded as a data
+        URI image with its texture; returns the texture index."""
+        raw = b"".join(b"\x00" + bytes(c for px in row for c in px) for row in srgb_rows)
+
+        def chunk(kind, data):
+            return (struct.pack(">I", len(data)) + kind + data +
+                    struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
+        png = (b"\x89PNG\r\n\x1a\n" +
+               chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+               chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+        self.doc.setdefault("images", []).append(
+            {"name": name, "uri": "data:image/png;base64," + base64.b64encode(png).decode()})
+        self.doc.setdefault("samplers", [{"magFilter": 9729, "minFilter": 9987}])
+        self.doc.setdefault("textures", []).append(
+            {"source": len(self.doc["images"]) - 1, "sampler": 0})
+        return len(self.doc["textures"]) - 1
+
     def material(self, name, base_color, emissive_factor=None, emissive_strength=None,
-                 double_sided=False):
+                 double_sided=False, base_color_texture=None):
         m = {"name": name,
              "pbrMetallicRoughness": {"baseColorFactor": list(base_color) + [1.0],
                                       "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+        if base_color_texture is not None:
+            m["pbrMetallicRoughness"]["baseColorTexture"] = {"index": base_color_texture}
         if emissive_factor is not None:
             m["emissiveFactor"] = list(emissive_factor)
         if emissive_strength is not None:
@@ -79,10 +101,11 @@ class GltfWriter:
         self.doc["materials"].append(m)
         return len(self.doc["materials"]) - 1
 
-    def mesh(self, name, triangles, material, corner_normals=None):
+    def mesh(self, name, triangles, material, corner_normals=None, corner_uvs=None):
         """triangles: list of 3 points each, counter-clockwise seen from the front.
         corner_normals: optional unit shading normals, 3 per triangle (smooth surfaces);
-        without them each corner gets its triangle's flat normal."""
+        without them each corner gets its triangle's flat normal. corner_uvs: optional
+        TEXCOORD_0, 3 per triangle."""
         positions, normals = [], []
         for i, tri in enumerate(triangles):
             n = triangle_normal(tri)
@@ -91,8 +114,12 @@ class GltfWriter:
                 normals.append(corner_normals[i][k] if corner_normals else n)
         pos = self._accessor(positions, "VEC3", True)
         nor = self._accessor(normals, "VEC3", False)
+        attributes = {"POSITION": pos, "NORMAL": nor}
+        if corner_uvs:
+            attributes["TEXCOORD_0"] = self._accessor(
+                [uv for tri in corner_uvs for uv in tri], "VEC2", False)
         self.doc["meshes"].append({"name": name, "primitives": [
-            {"attributes": {"POSITION": pos, "NORMAL": nor}, "material": material, "mode": 4}]})
+            {"attributes": attributes, "material": material, "mode": 4}]})
         return len(self.doc["meshes"]) - 1
 
     def node(self, node):
