@@ -12,10 +12,12 @@ Exterior walls are 10 cm boxes. The rug's base colour is a 64 x 64 PNG (stripes 
 colours and a border) embedded in the file. Sun: a directional light of 12 W/m^2 per channel
 at (1, 0.92, 0.8) times that, i.e. 8196 lux (683 lux = 1 W/m^2, engine/scene/units.h), coming
 down at about 33 degrees through the window. Cameras: "room" (room A from its north-west
-corner, the door on the left) and "next_room" (room B through the door).
+corner, the door on the left) and "next_room" (room B from its south-east corner, looking at the
+partition and the door).
 
-Run from anywhere (optional argument: another output path):
-    /usr/bin/python3 content/sunlit_room/make_sunlit_room.py
+Run from anywhere (optional arguments: another output path, and --subdivide N to cut every
+quad but the rug's into N x N, the same scene in N^2 times the triangles, for benchmarks):
+    /usr/bin/python3 content/sunlit_room/make_sunlit_room.py [OUT.gltf] [--subdivide N]
 """
 import math
 import os
@@ -37,8 +39,23 @@ SUN_W_PER_M2 = 12.0
 SUN_COLOR = [1.0, 0.92, 0.8]
 
 
+SUBDIVIDE = 1  # quads cut into SUBDIVIDE x SUBDIVIDE (--subdivide)
+
+
 def quad(a, b, c, d):
-    return [[a, b, c], [a, c, d]]
+    """Triangles of the quad a b c d (a parallelogram), cut into SUBDIVIDE x SUBDIVIDE."""
+    n = SUBDIVIDE
+    if n == 1:
+        return [[a, b, c], [a, c, d]]
+
+    def at(i, j):
+        return [a[k] + (b[k] - a[k]) * i / n + (d[k] - a[k]) * j / n for k in range(3)]
+    triangles = []
+    for i in range(n):
+        for j in range(n):
+            p, q, r, s = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
+            triangles += [[p, q, r], [p, r, s]]
+    return triangles
 
 
 def facing(triangles, outward):
@@ -98,7 +115,14 @@ def rug_rows():
 
 
 def main():
-    out_dir = os.path.dirname(os.path.abspath(__file__))
+    global SUBDIVIDE
+    args = sys.argv[1:]
+    if "--subdivide" in args:
+        k = args.index("--subdivide")
+        SUBDIVIDE = int(args[k + 1])
+        del args[k:k + 2]
+    out = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                            "sunlit_room.gltf")
     gltf = GltfWriter("bounce content/sunlit_room/make_sunlit_room.py")
     wall = gltf.material("wall", (0.75, 0.73, 0.70))
     slab = gltf.material("ceiling", (0.80, 0.80, 0.80))
@@ -144,7 +168,8 @@ def main():
     add("book", box([2.8, ty + 0.04, 0.45], [3.1, ty + 0.08, 0.66]), book)
     # The rug: one textured quad 5 mm over the floor, facing up, its stripes along x.
     rx0, rx1, rz0, rz1, ry = 1.2, 3.0, 1.0, 2.2, 0.005
-    add("rug", quad([rx0, ry, rz0], [rx0, ry, rz1], [rx1, ry, rz1], [rx1, ry, rz0]), rug,
+    a, b, c, d = [rx0, ry, rz0], [rx0, ry, rz1], [rx1, ry, rz1], [rx1, ry, rz0]
+    add("rug", [[a, b, c], [a, c, d]], rug,
         uvs=[[[0, 0], [0, 1], [1, 1]], [[0, 0], [1, 1], [1, 0]]])
     # Room B's cabinet against its east wall.
     add("cabinet", box([ROOM_B[1] - 0.45, 0, 0.3], [ROOM_B[1], 1.8, 1.4]), cabinet)
@@ -160,11 +185,11 @@ def main():
             "yfov": math.radians(70.0), "aspectRatio": 1.5, "znear": 0.01, "zfar": 50.0}}
         for name in ("room", "next_room")]
     for index, eye, target in ((0, [0.35, 1.55, 0.35], [3.5, 0.7, 2.3]),
-                               (1, [2.6, 1.5, 1.65], [6.0, 0.9, 1.0])):
+                               (1, [5.75, 1.5, 2.75], [4.0, 0.5, 1.0])):
         gltf.node({"name": gltf.doc["cameras"][index]["name"], "camera": index,
                    "rotation": rotation_looking_along(normalize(sub(target, eye))),
                    "translation": eye})
-    gltf.write(sys.argv[1] if len(sys.argv) > 1 else os.path.join(out_dir, "sunlit_room.gltf"))
+    gltf.write(out)
 
 
 if __name__ == "__main__":
