@@ -93,6 +93,10 @@ int main(int argc, char** argv) {
     const bounce::Atlas atlas = bounce::buildAtlas(scene, settings);
     const bounce::LightmapLayout& layout = atlas.layout;
     const auto& kinds = atlas.chartKinds;
+    std::size_t staticTriangles = 0;  // what the bake's ray kernel holds
+    for (const bounce::Instance& instance : scene.instances)
+      if (instance.mobility != bounce::Mobility::Dynamic)
+        staticTriangles += scene.meshes[instance.mesh].triangleCount();
     const nlohmann::json report = {{"scene", scenePath},
                                    {"width", layout.width},
                                    {"height", layout.height},
@@ -102,6 +106,7 @@ int main(int argc, char** argv) {
                                    {"paddingTexels", layout.padding},
                                    {"staticAreaSquareMetres", atlas.staticArea},
                                    {"staticInstances", layout.instances.size()},
+                                   {"staticTriangles", staticTriangles},
                                    {"charts", layout.chartCount},
                                    {"chartKinds",
                                     {{"planar", kinds.planar},
@@ -117,8 +122,8 @@ int main(int argc, char** argv) {
       std::printf("atlas %d x %d texels, %.4g m per texel (%s), %d texels padding\n", layout.width,
                   layout.height, static_cast<double>(layout.texelSize), atlas.texelRule.c_str(),
                   layout.padding);
-      std::printf("static surface %.4g m^2 in %zu instances\n", atlas.staticArea,
-                  layout.instances.size());
+      std::printf("static surface %.4g m^2 in %zu instances, %zu triangles\n", atlas.staticArea,
+                  layout.instances.size(), staticTriangles);
       std::printf(
           "charts %d (planar %d, conformal %d, mesh TEXCOORD_1 %d, degenerate %d, bundles %d)\n",
           layout.chartCount, kinds.planar, kinds.conformal, kinds.meshUv1, kinds.degenerate,
