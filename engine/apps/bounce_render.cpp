@@ -232,7 +232,10 @@ int main(int argc, char** argv) {
                  "green: what their clamp removed), error (each texel's estimated relative error: "
                  "blue 0, green at the bake's target, red at twice it or more), validity (green: "
                  "texels with samples of their own, orange: filled from their neighbours, dark "
-                 "blue: padding)")
+                 "blue: padding), texel-density (lightmap texels per metre against the bake's "
+                 "texel size: blue half or less, green equal, red twice or more, over a checker of "
+                 "texels), cascades (the directional light's shadow cascade: red, green, blue, "
+                 "yellow from near to far, cross-faded where they blend; needs no bake)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")

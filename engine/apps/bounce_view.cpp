@@ -4,7 +4,8 @@
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
 //   one found for the scene as bounce-render finds it, bake_folder/bake_search.h): M cycles the
 //   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
-//   its error.exr error), C toggles the chart/texel-density view. H shows or hides the panel
+//   its error.exr error and validity, texel-density, cascades; without a bake direct and
+//   cascades), C toggles the chart view. H shows or hides the panel
 //   (viewer_panel.h: the bake's facts, modes, exposure, cameras, objects, lights, CPU and GPU
 //   frame times; --no-panel starts hidden); keys go to the panel only while it edits a field.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
@@ -16,6 +17,7 @@
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -200,21 +202,13 @@ class Viewer {
     fly_.emplace(cameras_[index]);
   }
 
-  // The modes in the order M steps through them; without a bake only direct; the VPL modes
-  // (vpl, vpl-clamp) only when the bake has VPLs, error only when it has error.exr.
+  // The next of availableModes() (the order M steps through them): without a bake direct and
+  // cascades; the VPL modes only when the bake has VPLs, error and validity only with error.exr.
   void nextMode() {
-    if (!renderer_.hasBake()) return;
-    const std::vector<std::string> names = bounce::renderModeNames();
-    const std::string current(bounce::renderModeName(renderer_.settings().mode));
-    std::size_t i = 0;
-    while (i < names.size() && names[i] != current) ++i;
-    for (std::size_t step = 1; step <= names.size(); ++step) {
-      const bounce::RenderMode next = *bounce::parseRenderMode(names[(i + step) % names.size()]);
-      if (bounce::renderModeNeedsVpls(next) && !renderer_.hasVpls()) continue;
-      if (bounce::renderModeNeedsErrorMap(next) && !renderer_.hasErrorMap()) continue;
-      setMode(next);
-      return;
-    }
+    const std::vector<bounce::RenderMode> modes = availableModes();
+    const auto at = std::find(modes.begin(), modes.end(), renderer_.settings().mode);
+    if (modes.empty()) return;
+    setMode(at == modes.end() || at + 1 == modes.end() ? modes.front() : *(at + 1));
   }
 
   void toggleCharts() {
@@ -238,6 +232,12 @@ class Viewer {
                  : mode == bounce::RenderMode::Error
                      ? " (each texel's estimated relative error: blue 0, green at the bake's "
                        "target, red at twice it or more, dark grey none)"
+                 : mode == bounce::RenderMode::TexelDensity
+                     ? " (lightmap texels per metre against the bake's texel size: blue half or "
+                       "less, green equal, red twice or more; checker: one square per texel)"
+                 : mode == bounce::RenderMode::Cascades
+                     ? " (the directional light's shadow cascade: red, green, blue, yellow from "
+                       "near to far; grey: no shadowed directional light)"
                      : "");
   }
 
@@ -557,7 +557,8 @@ int main(int argc, char** argv) {
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits. With a bake: M cycles the modes, C toggles the chart view. Dynamic "
+      "exposure, Esc quits. M cycles the modes (without a bake direct and cascades), C toggles the "
+      "chart view. Dynamic "
       "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
       "H shows or hides the panel.",
       "bounce-view"};
@@ -606,7 +607,9 @@ int main(int argc, char** argv) {
                  "start in this mode: full (direct + baked indirect; the default with a bake), "
                  "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
                  "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
-                 "error (each texel's estimated relative error in false colour)")
+                 "error (each texel's estimated relative error in false colour), validity, "
+                 "texel-density (lightmap texels per metre against the bake's texel size), "
+                 "cascades (the directional light's shadow cascade index)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--dynamic-vpls", options.dynamicVpls,
                  "VPLs when a dynamic instance moves: retrace (default: the light paths traced "

@@ -294,8 +294,9 @@ TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
   const fs::path built =
       fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
   if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
-  const std::vector<std::string> modes = {"full", "direct",    "indirect", "lightmap", "charts",
-                                          "vpl",  "vpl-clamp", "error",    "validity"};
+  const std::vector<std::string> modes = {"full",     "direct",        "indirect",  "lightmap",
+                                          "charts",   "vpl",           "vpl-clamp", "error",
+                                          "validity", "texel-density", "cascades"};
   std::string script = "camera cornell\npanel off\n";
   for (const std::string& mode : modes)
     script += "mode " + mode + "\ncapture " + (dir_ / (mode + ".exr")).string() + "\n";
