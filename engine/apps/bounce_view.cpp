@@ -88,6 +88,7 @@ struct LoadedBake {
   std::optional<bounce::Bake> bake;
   std::filesystem::path dir;
   std::vector<std::string> notes;
+  bool stale = false;  // the scene's bake was found but no longer matches it (BakeSearch::stale)
 };
 
 // With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
@@ -139,8 +140,11 @@ class Viewer {
       std::fprintf(stderr, "bounce-view: warning: no panel (%s); the keys still work\n", e.what());
     }
     if (bake_) bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    bakeStale_ = std::any_of(bakeNotes_.begin(), bakeNotes_.end(),
-                             [](const std::string& n) { return n.starts_with("not using"); });
+    bakeStale_ = loaded.stale;
+    if (bakeStale_)
+      std::fprintf(stderr,
+                   "bounce-view: lighting needs to be rebuilt: the scene's bake is stale (the "
+                   "panel's 'bake now' or the script's rebake re-bakes it)\n");
     select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
   }
 
@@ -644,6 +648,7 @@ int main(int argc, char** argv) {
       bake = std::move(found.bake);
       loaded.dir = found.dir;
       loaded.notes = found.notes;
+      loaded.stale = found.stale();
     }
     const bounce::RenderMode mode =
         options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)

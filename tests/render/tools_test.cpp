@@ -519,6 +519,41 @@ TEST_F(ToolsTest, FindsTheBakeBesideTheSceneAndSaysWhich) {
   EXPECT_TRUE(bounce::readExr(dir_ / "stale.exr").pixels == b.pixels);
 }
 
+// The viewer says "lighting needs to be rebuilt" for the bake of an edited scene (stale:
+// BakeSearch::stale), not for a damaged one (passed over too, but no re-bake of this scene's
+// edits is what it needs), nor for a matching one.
+TEST_F(ToolsTest, ViewerCallsTheBakeOfAnEditedSceneStaleAndADamagedOneNot) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile = dir_ / "plane.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf",
+                sceneFile);
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  const std::string view = "xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                           " --width 16 --height 16 --frames 1";
+  const std::string rebuild = "lighting needs to be rebuilt";
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const ToolRun matching = run(view);
+  ASSERT_EQ(matching.exitCode, 0) << matching.output;
+  EXPECT_EQ(matching.output.find(rebuild), std::string::npos) << matching.output;
+
+  bounce::Scene edited = scene;
+  edited.materials.at(0).albedo *= 0.5f;
+  fs::remove_all(dir_ / "plane.bake");
+  writeConstantBake(dir_ / "plane.bake", scene, edited);  // baked for another albedo
+  const ToolRun stale = run(view);
+  ASSERT_EQ(stale.exitCode, 0) << stale.output;
+  EXPECT_NE(stale.output.find(rebuild), std::string::npos) << stale.output;
+
+  fs::remove_all(dir_ / "plane.bake");
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  fs::remove(dir_ / "plane.bake" / "lightmap.exr");  // damaged
+  const ToolRun damaged = run(view);
+  ASSERT_EQ(damaged.exitCode, 0) << damaged.output;
+  EXPECT_NE(damaged.output.find("not using the bake"), std::string::npos) << damaged.output;
+  EXPECT_EQ(damaged.output.find(rebuild), std::string::npos) << damaged.output;
+}
+
 // A content scene finds the bake the build made for it (build/<preset>/content/...), next to the
 // tools; skipped where the build baked no content (BOUNCE_BAKE_CONTENT=OFF).
 TEST_F(ToolsTest, FindsTheBuildStepsBakeOfAContentScene) {
