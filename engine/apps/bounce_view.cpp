@@ -5,9 +5,11 @@
 //   one found for the scene as bounce-render finds it, bake_folder/bake_search.h): M cycles the
 //   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
 //   its error.exr error and validity, texel-density, cascades; without a bake direct and
-//   cascades), C toggles the chart view. H shows or hides the panel
-//   (viewer_panel.h: the bake's facts, modes, exposure, cameras, objects, lights, CPU and GPU
-//   frame times; --no-panel starts hidden); keys go to the panel only while it edits a field.
+//   cascades), C toggles the chart view. F1–F4 return to a camera bookmark, Shift+F1–F4 save
+//   the camera there (for the session). H shows or hides the panel (viewer_panel.h: the bake's
+//   facts, modes, exposure, cameras and bookmarks, the VPLs' light paths and clamp, objects,
+//   lights, CPU and GPU frame times; --no-panel starts hidden); keys go to the panel only while
+//   it edits a field.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
 //   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
 //   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
@@ -18,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -291,6 +294,14 @@ class Viewer {
           editLight(index, light);
         }
         if (c.kind == Kind::CancelBake && rebake_) rebake_->cancel();
+        const auto slot = static_cast<std::size_t>(c.count - 1);
+        if (c.kind == Kind::BookmarkSave) saveBookmark(slot);
+        if (c.kind == Kind::BookmarkGo) goToBookmark(slot);
+        if ((c.kind == Kind::VplPaths || c.kind == Kind::VplClamp) && !renderer_.hasVpls())
+          throw std::runtime_error("no VPLs to choose from: the bake has none");
+        if (c.kind == Kind::VplPaths)
+          selectVpls(static_cast<uint64_t>(c.count), renderer_.vplSelection().clampDistance);
+        if (c.kind == Kind::VplClamp) selectVpls(renderer_.vplSelection().paths, c.number);
       } catch (const std::exception& e) {
         throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
                                  e.what());
@@ -338,6 +349,13 @@ class Viewer {
     view.msaa = options_.msaa;
     for (const bounce::Camera& camera : cameras_) view.cameras.push_back(camera.name);
     view.camera = cameraIndex_;
+    for (const std::optional<bounce::FlyCamera>& bookmark : bookmarks_)
+      view.bookmarks.push_back(bookmark.has_value());
+    if (renderer_.hasVpls()) {
+      const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
+      view.vpls = bounce::PanelVpls{s.paths, s.totalPaths, s.vplCount, s.clampDistance,
+                                    s.bakeClampDistance};
+    }
     view.object = selection_.empty() ? "" : selection_.name(scene_);
     view.objectCount = selection_.count();
     view.lights = &scene_.lights;
@@ -352,6 +370,14 @@ class Viewer {
     if (requests.mode) setMode(*requests.mode);
     if (requests.exposure) exposure_ = *requests.exposure;
     if (requests.camera) select(*requests.camera);
+    if (requests.saveBookmark) saveBookmark(*requests.saveBookmark);
+    if (requests.goToBookmark && bookmarks_.at(*requests.goToBookmark))
+      goToBookmark(*requests.goToBookmark);
+    if (requests.vplSelection) try {
+        selectVpls(requests.vplSelection->first, requests.vplSelection->second);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "bounce-view: %s\n", e.what());  // keep the VPLs drawn
+      }
     if (requests.nextObject) selectNextObject();
     if (requests.screenshot) saveRequested_ = true;
     for (const auto& [index, light] : requests.lightEdits) editLight(index, light);
@@ -452,6 +478,17 @@ class Viewer {
       if (key == Key::M) nextMode();
       if (key == Key::C) toggleCharts();
       if (key == Key::G) selectNextObject();
+      if (key >= Key::F1 && key <= Key::F4) {
+        const auto slot =
+            static_cast<std::size_t>(static_cast<int>(key) - static_cast<int>(Key::F1));
+        if (window_.isDown(Key::LeftShift))
+          saveBookmark(slot);
+        else if (bookmarks_[slot])
+          goToBookmark(slot);
+        else
+          std::fprintf(stderr, "bounce-view: bookmark %zu is empty (Shift+F%zu saves it)\n",
+                       slot + 1, slot + 1);
+      }
     }
     speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
     const auto axis = [&](Key plus, Key minus) {
@@ -472,6 +509,32 @@ class Viewer {
                  -static_cast<float>(delta.y) * kRadiansPerPixel);
     }
     cursor_ = cursor;
+  }
+
+  // Camera bookmarks (F1..F4 go, Shift+F1..F4 save; the panel; the script's bookmark): the fly
+  // camera as it stands (position, heading, lens), for this session; going back restores that
+  // state itself, so the frame is the one drawn when it was saved.
+  void saveBookmark(std::size_t slot) {
+    bookmarks_.at(slot) = *fly_;
+    const glm::vec3 at = bookmarks_[slot]->position();
+    std::fprintf(stderr, "bounce-view: bookmark %zu saved at (%.3f, %.3f, %.3f) m\n", slot + 1,
+                 at.x, at.y, at.z);
+  }
+
+  void goToBookmark(std::size_t slot) {
+    if (!bookmarks_.at(slot))
+      throw std::runtime_error("bookmark " + std::to_string(slot + 1) + " is empty");
+    fly_ = *bookmarks_[slot];
+  }
+
+  // The VPLs of the bake's first `paths` light paths at clamp distance r (panel, script).
+  void selectVpls(uint64_t paths, float clampDistance) {
+    renderer_.setVplSelection(paths, clampDistance);
+    const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
+    std::fprintf(
+        stderr, "bounce-view: VPLs of %llu of %llu light paths (%zu VPLs), clamp r = %.4g m\n",
+        static_cast<unsigned long long>(s.paths), static_cast<unsigned long long>(s.totalPaths),
+        s.vplCount, static_cast<double>(s.clampDistance));
   }
 
   void selectNextObject() {
@@ -549,8 +612,9 @@ class Viewer {
   bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
   bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written
   std::unique_ptr<bounce::BackgroundBake> rebake_;  // before the script state, after bake_
-  std::size_t scriptAt_ = 0;                        // the next command of options_.script
-  int scriptFrames_ = 0;                            // frames drawn of the current `frames N`
+  std::array<std::optional<bounce::FlyCamera>, bounce::kScriptBookmarks> bookmarks_;
+  std::size_t scriptAt_ = 0;  // the next command of options_.script
+  int scriptFrames_ = 0;      // frames drawn of the current `frames N`
 };
 
 }  // namespace
@@ -564,7 +628,7 @@ int main(int argc, char** argv) {
       "exposure, Esc quits. M cycles the modes (without a bake direct and cascades), C toggles the "
       "chart view. Dynamic "
       "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
-      "H shows or hides the panel.",
+      "F1-F4 go to a camera bookmark, Shift+F1-F4 save one. H shows or hides the panel.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
       ->required();
@@ -592,9 +656,9 @@ int main(int argc, char** argv) {
       ->needs("--frames")
       ->check(kImageFile);
   app.add_option("--script", options.scriptFile,
-                 "replay a session: camera, view, mode, exposure, panel, frames, capture and "
-                 "window commands, one per line (engine/cli/viewer_script.h); exits after the "
-                 "last")
+                 "replay a session: camera, view, mode, exposure, panel, frames, capture, window, "
+                 "light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths and vpl-clamp "
+                 "commands, one per line (engine/cli/viewer_script.h); exits after the last")
       ->check(CLI::ExistingFile);
   app.add_option("--bake", options.bake,
                  "bake folder (bounce-bake's output) for this scene: adds its baked light "

@@ -110,6 +110,46 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
       if (ImGui::Selectable(view.cameras[i].c_str(), i == view.camera)) requests.camera = i;
   }
 
+  if (ImGui::CollapsingHeader("Camera bookmarks")) {
+    for (std::size_t i = 0; i < view.bookmarks.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      const std::string slot = std::to_string(i + 1);
+      std::string go = "go F", save = "save (Shift+F";
+      go += slot;
+      save += slot;
+      save += ")";
+      ImGui::BeginDisabled(!view.bookmarks[i]);
+      if (ImGui::Button(go.c_str())) requests.goToBookmark = i;
+      ImGui::EndDisabled();
+      ImGui::SameLine();
+      if (ImGui::Button(save.c_str())) requests.saveBookmark = i;
+      ImGui::PopID();
+    }
+  }
+
+  if (view.vpls && ImGui::CollapsingHeader("VPLs")) {
+    const PanelVpls& v = *view.vpls;
+    int paths = static_cast<int>(v.paths);
+    float clamp = v.clampDistance;
+    // The first N light paths, their flux x total/N: the same estimate from fewer VPLs.
+    bool changed = ImGui::SliderInt("light paths", &paths, 1, static_cast<int>(v.totalPaths), "%d",
+                                    ImGuiSliderFlags_Logarithmic);
+    ImGui::Text(
+        "%zu VPLs of %llu paths (flux x %.3g)", v.vplCount,
+        static_cast<unsigned long long>(v.totalPaths),
+        static_cast<double>(v.totalPaths) / static_cast<double>(std::max<uint64_t>(v.paths, 1)));
+    const float top = std::max(4.0f * v.bakeClampDistance, 0.1f);
+    changed |= ImGui::SliderFloat("clamp r (m)", &clamp, 0.0f, top, "%.4f");
+    if (ImGui::Button("the bake's")) {
+      paths = static_cast<int>(v.totalPaths);
+      clamp = v.bakeClampDistance;
+      changed = true;
+    }
+    ImGui::SameLine();
+    ImGui::Text("r = %.4f m", static_cast<double>(v.bakeClampDistance));
+    if (changed) requests.vplSelection = {static_cast<uint64_t>(std::max(paths, 1)), clamp};
+  }
+
   if (view.objectCount > 0 && ImGui::CollapsingHeader("Dynamic objects")) {
     ImGui::TextWrapped(
         "%s", view.object.empty() ? "none selected" : ("moving '" + view.object + "'").c_str());

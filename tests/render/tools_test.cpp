@@ -328,6 +328,50 @@ TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
   EXPECT_EQ(bounce::readExr(dir_ / "window.exr").width, 96);
 }
 
+// Camera bookmarks and the VPL controls through a script on the Cornell box with the build's
+// bake: a bookmark saved at one view and gone back to after another gives that view's frame bit
+// for bit (and the other view's frame differs); `vpl-paths 200` and `vpl-clamp 0.03` give
+// bounce-render's frame with --vpl-paths 200 --vpl-clamp 0.03 (within 1e-3 + 1e-4 W/(sr·m²), as
+// the modes above), which differs from the bake's whole VPL set.
+TEST_F(ToolsTest, ViewerBookmarksReturnToTheirViewAndVplControlsMatchBounceRender) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path built =
+      fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
+  if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
+  const auto shot = [&](const std::string& name) { return (dir_ / (name + ".exr")).string(); };
+  std::ofstream(dir_ / "session.txt")
+      << "panel off\nmode vpl\nview 0.28 0.27 -0.6 0.28 0.27 0.3\ncapture " << shot("a")
+      << "\nbookmark save 2\nview 0.1 0.45 -0.4 0.35 0.15 0.4\ncapture " << shot("b")
+      << "\nbookmark go 2\ncapture " << shot("a_again") << "\ncamera cornell\ncapture "
+      << shot("whole") << "\nvpl-paths 200\nvpl-clamp 0.03\ncapture " << shot("selected") << "\n";
+  const ToolRun r =
+      run("xvfb-run -a " + tool("bounce-view") + " " + content("cornell_box/cornell_box.gltf") +
+          " --width 64 --height 64 --script " + quote(dir_ / "session.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image a = bounce::readExr(shot("a"));
+  EXPECT_TRUE(bounce::readExr(shot("a_again")).pixels == a.pixels);
+  EXPECT_FALSE(bounce::readExr(shot("b")).pixels == a.pixels);
+
+  const ToolRun rendered =
+      run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+          " --mode vpl --vpl-paths 200 --vpl-clamp 0.03 --width 64 --height 64 --out " +
+          quote(dir_ / "render.exr"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  EXPECT_NE(rendered.output.find("VPLs of 200 of the bake's"), std::string::npos)
+      << rendered.output;
+  const bounce::Image expected = bounce::readExr(dir_ / "render.exr");
+  const bounce::Image selected = bounce::readExr(shot("selected"));
+  ASSERT_EQ(selected.pixels.size(), expected.pixels.size());
+  int off = 0;
+  for (std::size_t i = 0; i < expected.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      off += std::abs(selected.pixels[i][c] - expected.pixels[i][c]) >
+             1e-3f * std::abs(expected.pixels[i][c]) + 1e-4f;
+  EXPECT_EQ(off, 0);
+  EXPECT_FALSE(bounce::readExr(shot("whole")).pixels == selected.pixels);
+}
+
 // The viewer's background re-bake (--script rebake / wait-bake, the panel's button): a copy of
 // the Cornell box with no bake anywhere starts in direct light; the re-bake (preview, then
 // bounce-bake's defaults) is written to <scene>.bake, which matches the scene, and the viewer's
