@@ -46,6 +46,7 @@
 #include "image/image_io.h"
 #include "render/fly_camera.h"
 #include "render/forward_renderer.h"
+#include "render/reference_compare_pass.h"
 #include "render/tonemap_pass.h"
 #include "render/view.h"
 #include "scene/dynamic_selection.h"
@@ -78,6 +79,8 @@ struct Options {
   bool noPanel = false;            // start with the panel hidden
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::string dynamicVpls = "retrace";
+  std::string reference;          // a reference EXR (bounce-trace) to compare the frame with
+  std::string compare = "split";  // how, with --reference (render/reference_view.h)
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -118,6 +121,7 @@ class Viewer {
         renderer_(scene_, bounce::gl::shaderDirectory(),
                   rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
+        compare_(bounce::gl::shaderDirectory()),
         selection_(scene_),
         objectSpeed_(bounce::objectSpeed(scene_)),
         exposure_(options.exposure) {
@@ -149,6 +153,10 @@ class Viewer {
                    "bounce-view: lighting needs to be rebuilt: the scene's bake is stale (the "
                    "panel's 'bake now' or the script's rebake re-bakes it)\n");
     select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
+    if (!options.reference.empty()) {
+      referenceView_ = *bounce::parseReferenceView(options.compare);  // CLI11 checked
+      loadReference(options.reference);
+    }
   }
 
   int run() {
@@ -173,7 +181,7 @@ class Viewer {
       if (panel_ && panelShown_) drawPanel();
       const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
       if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
-        if (!options_.screenshot.empty()) save(target_->read(), options_.screenshot, exposure_);
+        if (!options_.screenshot.empty()) save(shown().read(), options_.screenshot, exposure_);
         if (!options_.windowShot.empty()) saveWindow(options_.windowShot);
         std::fprintf(stderr,
                      "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
@@ -302,6 +310,8 @@ class Viewer {
         if (c.kind == Kind::VplPaths)
           selectVpls(static_cast<uint64_t>(c.count), renderer_.vplSelection().clampDistance);
         if (c.kind == Kind::VplClamp) selectVpls(renderer_.vplSelection().paths, c.number);
+        if (c.kind == Kind::Reference) loadReference(c.text);
+        if (c.kind == Kind::Compare) setReferenceView(*bounce::parseReferenceView(c.text));
       } catch (const std::exception& e) {
         throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
                                  e.what());
@@ -329,7 +339,7 @@ class Viewer {
         ++scriptAt_;
         return scriptAt_ == script.size();
       }
-      if (c.kind == Kind::Capture) save(target_->read(), c.text, exposure_);
+      if (c.kind == Kind::Capture) save(shown().read(), c.text, exposure_);
       if (c.kind == Kind::Window) saveWindow(c.text);
       ++scriptAt_;
     }
@@ -351,6 +361,8 @@ class Viewer {
     view.camera = cameraIndex_;
     for (const std::optional<bounce::FlyCamera>& bookmark : bookmarks_)
       view.bookmarks.push_back(bookmark.has_value());
+    view.referenceFile = referenceFile_;
+    view.referenceView = referenceView_;
     if (renderer_.hasVpls()) {
       const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
       view.vpls = bounce::PanelVpls{s.paths, s.totalPaths, s.vplCount, s.clampDistance,
@@ -373,6 +385,12 @@ class Viewer {
     if (requests.saveBookmark) saveBookmark(*requests.saveBookmark);
     if (requests.goToBookmark && bookmarks_.at(*requests.goToBookmark))
       goToBookmark(*requests.goToBookmark);
+    if (requests.loadReference) try {
+        loadReference(*requests.loadReference);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "bounce-view: error: %s\n", e.what());  // keep viewing
+      }
+    if (requests.referenceView && compare_.hasReference()) referenceView_ = *requests.referenceView;
     if (requests.vplSelection) try {
         selectVpls(requests.vplSelection->first, requests.vplSelection->second);
       } catch (const std::exception& e) {
@@ -568,13 +586,51 @@ class Viewer {
       renderer_.setLightCulling(culling);
     }
     renderer_.render(fly_->camera(), *target_);
+    if (comparing()) {
+      if (!compared_ || compared_->width() != size.x || compared_->height() != size.y)
+        compared_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
+      compare_.draw(target_->color(), *compared_, referenceView_);
+    }
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
-    tonemap_.draw(target_->color(), exposure_);
+    tonemap_.draw(shown().color(), exposure_);
+  }
+
+  bool comparing() const {
+    return referenceView_ != bounce::ReferenceView::Off && compare_.hasReference();
+  }
+  // What the window shows and the captures hold: the frame, or the frame beside the reference
+  // (both radiance, tone-mapped alike).
+  const bounce::gl::RenderTarget& shown() const { return comparing() ? *compared_ : *target_; }
+
+  // A reference EXR (bounce-trace's, of the same camera and size) to compare the frame with;
+  // the split view unless another comparison is on.
+  void loadReference(const std::string& file) {
+    const bounce::Image reference = bounce::readExr(file);
+    compare_.setReference(reference);
+    referenceFile_ = file;
+    if (referenceView_ == bounce::ReferenceView::Off) referenceView_ = bounce::ReferenceView::Split;
+    const glm::ivec2 size = window_.framebufferSize();
+    std::fprintf(stderr, "bounce-view: reference %s, %dx%d (%s)\n", file.c_str(), reference.width,
+                 reference.height, std::string(bounce::referenceViewName(referenceView_)).c_str());
+    if (reference.width != size.x || reference.height != size.y)
+      std::fprintf(stderr,
+                   "bounce-view: warning: the reference is %dx%d, the frame %dx%d: it is "
+                   "stretched (open the viewer with --width %d --height %d to compare pixels)\n",
+                   reference.width, reference.height, size.x, size.y, reference.width,
+                   reference.height);
+  }
+
+  void setReferenceView(bounce::ReferenceView view) {
+    if (view != bounce::ReferenceView::Off && !compare_.hasReference())
+      throw std::runtime_error(
+          "no reference to compare with (--reference FILE, the panel, or "
+          "the script's reference FILE)");
+    referenceView_ = view;
   }
 
   void saveScreenshot() {
     saveRequested_ = false;
-    const bounce::Image radiance = target_->read();
+    const bounce::Image radiance = shown().read();
     const std::string stem = "bounce-view-" + std::to_string(++screenshots_);
     try {
       save(radiance, stem + ".png", exposure_);
@@ -592,9 +648,13 @@ class Viewer {
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;
+  bounce::ReferenceComparePass compare_;
   bounce::DynamicSelection selection_;
   float objectSpeed_ = 1.0f;  // m/s
   std::unique_ptr<bounce::gl::RenderTarget> target_;
+  std::unique_ptr<bounce::gl::RenderTarget> compared_;  // the frame beside the reference
+  bounce::ReferenceView referenceView_ = bounce::ReferenceView::Off;
+  std::string referenceFile_;
   std::vector<bounce::Camera> cameras_;
   std::size_t cameraIndex_ = 0;
   std::optional<bounce::FlyCamera> fly_;
@@ -669,6 +729,16 @@ int main(int argc, char** argv) {
                  "before tone mapping); 1 turns it off (default 4)")
       ->check(CLI::Range(1, 64));
   app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
+  app.add_option("--reference", options.reference,
+                 "a reference EXR of the same camera (bounce-trace --out FILE.exr at the window's "
+                 "size) shown beside the frame, both through the same exposure and tone mapper")
+      ->check(CLI::ExistingFile);
+  app.add_option("--compare", options.compare,
+                 "with --reference: split (left the frame, right the reference; default) or "
+                 "difference (the luminance relative difference: red brighter, blue darker, full "
+                 "at 50%)")
+      ->check(CLI::IsMember({"split", "difference"}))
+      ->needs("--reference");
   app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
       ->excludes("--bake");
   app.add_option("--mode", options.mode,

@@ -1,6 +1,7 @@
 #include "viewer_panel.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <optional>
 
@@ -148,6 +149,25 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     ImGui::SameLine();
     ImGui::Text("r = %.4f m", static_cast<double>(v.bakeClampDistance));
     if (changed) requests.vplSelection = {static_cast<uint64_t>(std::max(paths, 1)), clamp};
+  }
+
+  if (ImGui::CollapsingHeader("Reference")) {
+    // The path being typed lives across frames (the panel itself keeps no other state).
+    static std::array<char, 1024> path{};
+    ImGui::InputText("EXR", path.data(), path.size());
+    if (ImGui::Button("load") && path[0] != '\0') requests.loadReference = std::string(path.data());
+    if (!view.referenceFile.empty()) {
+      ImGui::TextWrapped("%s", view.referenceFile.c_str());
+      for (const ReferenceView v :
+           {ReferenceView::Off, ReferenceView::Split, ReferenceView::Difference}) {
+        if (v != ReferenceView::Off) ImGui::SameLine();
+        const std::string name(referenceViewName(v));
+        if (ImGui::RadioButton(name.c_str(), view.referenceView == v)) requests.referenceView = v;
+      }
+      ImGui::TextWrapped(
+          "split: left the frame, right the reference; difference: red brighter, "
+          "blue darker than the reference (full at 50%%)");
+    }
   }
 
   if (view.objectCount > 0 && ImGui::CollapsingHeader("Dynamic objects")) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -119,6 +120,18 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
       c.kind = ScriptCommand::Kind::VplClamp;
       c.number = parseNumber(w[1], "clamp distance", fail);
       if (c.number < 0.0f) fail("a clamp distance is not negative");
+    } else if (w[0] == "reference") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Reference;
+      if (std::filesystem::path(w[1]).extension() != ".exr")
+        fail(w[1] + ": a reference is an EXR file (.exr)");
+      c.text = w[1];
+    } else if (w[0] == "compare") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Compare;
+      if (w[1] != "off" && w[1] != "split" && w[1] != "difference")
+        fail("'compare' takes off, split or difference, not '" + w[1] + "'");
+      c.text = w[1];
     } else if (w[0] == "rebake" || w[0] == "wait-bake" || w[0] == "cancel-bake") {
       arguments(0);
       c.kind = w[0] == "rebake"      ? ScriptCommand::Kind::Rebake
@@ -127,7 +140,7 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
     } else {
       fail("unknown command '" + w[0] +
            "' (camera, view, mode, exposure, panel, frames, capture, window, light, rebake, "
-           "wait-bake, cancel-bake, bookmark, vpl-paths, vpl-clamp)");
+           "wait-bake, cancel-bake, bookmark, vpl-paths, vpl-clamp, reference, compare)");
     }
     commands.push_back(c);
   }

@@ -18,6 +18,8 @@
 //   vpl-paths N          draw the VPLs of the bake's first N light paths (N >= 1; the panel's
 //                        "light paths")
 //   vpl-clamp R          VPL clamp distance R m (>= 0; 0 unclamped)
+//   reference FILE       load a reference EXR (bounce-trace's) and show it split with the frame
+//   compare off|split|difference   how the frame is shown beside the reference
 // Commands run in order, one per frame (a frames N takes N); the viewer exits after the last.
 // Paths are as written (relative to the working folder). GL-free.
 #pragma once
@@ -47,11 +49,13 @@ struct ScriptCommand {
     BookmarkSave,
     BookmarkGo,
     VplPaths,
-    VplClamp
+    VplClamp,
+    Reference,
+    Compare
   };
   Kind kind = Kind::Frames;
-  int line = 0;                            // 1-based, for messages
-  std::string text;                        // camera or mode name, file
+  int line = 0;      // 1-based, for messages
+  std::string text;  // camera or mode name, file; compare: off, split or difference
   glm::vec3 position{0.0f}, target{0.0f};  // view
   float number = 0.0f;                     // exposure; vpl-clamp (m)
   std::string field;                       // light: intensity, position or direction

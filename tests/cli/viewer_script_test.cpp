@@ -90,7 +90,10 @@ TEST(ViewerScript, MistakesNameTheLineAndTheReason) {
   EXPECT_EQ(refusal("frames 1\nzoom 2\n"),
             "line 2: unknown command 'zoom' (camera, view, mode, exposure, panel, frames, "
             "capture, window, light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths, "
-            "vpl-clamp)");
+            "vpl-clamp, reference, compare)");
+  EXPECT_EQ(refusal("reference ref.png\n"), "line 1: ref.png: a reference is an EXR file (.exr)");
+  EXPECT_EQ(refusal("compare side\n"),
+            "line 1: 'compare' takes off, split or difference, not 'side'");
   EXPECT_EQ(refusal("bookmark keep 1\n"), "line 1: 'bookmark' takes save or go, not 'keep'");
   EXPECT_EQ(refusal("bookmark go 5\n"), "line 1: bookmark 5 is not a whole number in [1, 4]");
   EXPECT_EQ(refusal("bookmark save 0\n"), "line 1: bookmark 0 is not a whole number in [1, 4]");

@@ -17,6 +17,8 @@
 #include "bake_folder/vpl_clamp.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
+#include "image/tonemap.h"
+#include "render/reference_view.h"
 #include "scene/load.h"
 #include "support/test_context.h"
 #include "support/tool_run.h"
@@ -370,6 +372,56 @@ TEST_F(ToolsTest, ViewerBookmarksReturnToTheirViewAndVplControlsMatchBounceRende
              1e-3f * std::abs(expected.pixels[i][c]) + 1e-4f;
   EXPECT_EQ(off, 0);
   EXPECT_FALSE(bounce::readExr(shot("whole")).pixels == selected.pixels);
+}
+
+// A reference EXR beside the frame (script `reference FILE`, `compare split|difference|off`; the
+// panel and --reference the same): in the split capture the left half (x < 32 of 64) is the
+// frame's radiance and the right half the reference's, bit for bit, and the window shows the
+// right half as toneMap(reference) of the CPU (engine/image/tonemap.h) within one 8-bit step;
+// the difference capture is relativeDifferenceColour(frame, reference) per pixel; off is the
+// frame again. A missing reference stops the script naming the file.
+TEST_F(ToolsTest, ViewerShowsAReferenceSplitAndItsRelativeDifference) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const int size = 64;
+  bounce::Image reference(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)  // across the tone curve, rows told apart from columns
+      reference.at(x, y) = {2.0f * x / size, 0.5f * y / size, 0.05f + 0.01f * ((x + 3 * y) % 7)};
+  bounce::writeExr(dir_ / "reference.exr", reference);
+  const auto shot = [&](const std::string& name) { return (dir_ / name).string(); };
+  std::ofstream(dir_ / "session.txt")
+      << "panel off\ncamera cornell\ncapture " << shot("frame.exr") << "\nreference "
+      << shot("reference.exr") << "\ncapture " << shot("split.exr") << "\nwindow "
+      << shot("split_window.exr") << "\ncompare difference\ncapture " << shot("difference.exr")
+      << "\ncompare off\ncapture " << shot("off.exr") << "\n";
+  const std::string view = "xvfb-run -a " + tool("bounce-view") + " " +
+                           content("cornell_box/cornell_box.gltf") + " --width 64 --height 64";
+  const ToolRun r = run(view + " --script " + quote(dir_ / "session.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image frame = bounce::readExr(shot("frame.exr"));
+  const bounce::Image split = bounce::readExr(shot("split.exr"));
+  const bounce::Image shown = bounce::readExr(shot("split_window.exr"));
+  const bounce::Image difference = bounce::readExr(shot("difference.exr"));
+  ASSERT_EQ(split.width, size);
+  ASSERT_EQ(shown.width, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::vec3 expected = x < size / 2 ? frame.at(x, y) : reference.at(x, y);
+      EXPECT_EQ(split.at(x, y), expected) << x << "," << y;
+      const glm::vec3 display = bounce::toneMap(expected, 0.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(shown.at(x, y)[c], display[c], 1.01f / 255.0f) << x << "," << y;
+      const glm::vec3 colour = bounce::relativeDifferenceColour(frame.at(x, y), reference.at(x, y));
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(difference.at(x, y)[c], colour[c], 1e-4f) << x << "," << y;
+    }
+  EXPECT_TRUE(bounce::readExr(shot("off.exr")).pixels == frame.pixels);
+
+  std::ofstream(dir_ / "missing.txt") << "reference " << shot("none.exr") << "\n";
+  const ToolRun missing = run(view + " --script " + quote(dir_ / "missing.txt"));
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.output.find(shot("none.exr")), std::string::npos) << missing.output;
 }
 
 // The viewer's background re-bake (--script rebake / wait-bake, the panel's button): a copy of
