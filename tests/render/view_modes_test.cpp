@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "atlas/atlas.h"
 #include "lightmap_scenes.h"
 #include "render/cascades.h"
 #include "render/view_mode_colours.h"
@@ -111,6 +113,57 @@ TEST(ViewModes, TexelDensityShowsTexelsPerMetreAgainstTheLayoutsTexelSize) {
   RendererSettings settings;
   settings.mode = RenderMode::TexelDensity;
   EXPECT_THROW(ForwardRenderer(d.scene, gl::shaderDirectory(), settings), std::invalid_argument);
+}
+
+// log₂(d/d₀) read back from a texel-density pixel: the ramp's colour times the checker's 1 or
+// kTexelCheckerDark, whose ratios of channels do not depend on the checker.
+float densityExponent(glm::vec3 pixel) {
+  if (pixel.b > 0.0f) return -pixel.b / (pixel.g + pixel.b);
+  return pixel.r / (pixel.r + pixel.g);
+}
+
+// The atlas's own layout (baker/atlas) of three 0.8 m quads side by side at lightmapScale 0.7, 1
+// and 1.5 (glTF extras.bounce.lightmapScale: texels per metre relative to the scene's), 5 cm
+// texels: each quad shows r = log₂(scale) (−0.51, 0, +0.58; a Unreal user's "this one has more
+// lightmap resolution than the rest") within 0.05, the atlas rounding its planar charts to whole
+// texels by under a few percent.
+TEST(ViewModes, TexelDensityShowsEachInstancesLightmapScaleInTheAtlasOwnLayout) {
+  Scene scene;
+  Material grey;
+  grey.name = "grey";
+  grey.albedo = glm::vec3(0.5f);
+  const std::array<float, 3> scales = {0.7f, 1.0f, 1.5f};
+  for (int i = 0; i < 3; ++i) {
+    addQuad(scene, {-1.3f + 0.9f * static_cast<float>(i), 0, 0.4f}, {0.8f, 0, 0}, {0, 0, -0.8f},
+            grey);
+    scene.instances.back().lightmapScale = scales[static_cast<std::size_t>(i)];
+  }
+  AtlasSettings atlasSettings;
+  atlasSettings.texelSize = 0.05f;
+  Bake bake;
+  bake.layout = buildAtlas(scene, atlasSettings).layout;
+  ASSERT_EQ(bake.layout.instances.size(), 3u);
+  EXPECT_EQ(bake.layout.texelSize, 0.05f);
+  bake.irradiance = Image(bake.layout.width, bake.layout.height, glm::vec3(1.0f));
+  bake.manifest = minimalManifest(scene);
+  const int width = 96, height = 32;
+  const Camera camera = downCamera(1.2f, 0.7f);
+  const Image image = renderMode(scene, camera, &bake, RenderMode::TexelDensity, width, height);
+  std::array<int, 3> seen{};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const glm::vec3 p = floorPoint(camera, width, height, x, y);
+      const float along = p.x + 1.3f;  // from the first quad's left edge
+      const int quad = static_cast<int>(std::floor(along / 0.9f));
+      const float inside = along - 0.9f * static_cast<float>(quad);
+      if (quad < 0 || quad > 2 || inside < 0.03f || inside > 0.77f || std::abs(p.z) > 0.37f)
+        continue;  // off the quads or near their edges
+      const float expected = std::log2(scales[static_cast<std::size_t>(quad)]);
+      EXPECT_NEAR(densityExponent(image.at(x, y)), expected, 0.05f)
+          << "quad " << quad << " pixel " << x << "," << y;
+      ++seen[static_cast<std::size_t>(quad)];
+    }
+  for (int i = 0; i < 3; ++i) EXPECT_GT(seen[static_cast<std::size_t>(i)], 20) << "quad " << i;
 }
 
 // The view depth of raster point (px, py) on the floor y = 0.
