@@ -16,6 +16,7 @@
 #include "area_light.glsl"
 #include "vpl.glsl"
 #include "vpl_shadows.glsl"
+#include "view_modes.glsl"
 
 // Centroid: with multisampling a pixel on a triangle's edge whose centre lies outside it is
 // shaded at a covered sample, so the position (shadow and visibility lookups) and the lightmap
@@ -24,6 +25,8 @@ centroid in vec3 vWorldPosition;
 centroid in vec3 vNormal;
 in vec2 vUv;
 centroid in vec2 vLightmapUv;
+in vec3 vWorldPositionAtCentre;  // the same at the pixel centre, for screen derivatives
+in vec2 vLightmapUvAtCentre;
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)
@@ -42,6 +45,15 @@ void main() {
   if (dot(ng, n) < 0.0) ng = -ng;
   vec3 albedo = uAlbedo;
   if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
+  // The inspection views that are no light at all (uniform branches: derivatives stay defined).
+  if (uLightingMode == LIGHTING_TEXEL_DENSITY) {
+    fragRadiance = vec4(texelDensityView(vLightmapUvAtCentre, vWorldPositionAtCentre), 1.0);
+    return;
+  }
+  if (uLightingMode == LIGHTING_CASCADES) {
+    fragRadiance = vec4(cascadeView(vWorldPosition), 1.0);
+    return;
+  }
   vec3 direct = vec3(0.0);
   if (modeUsesDirectLight()) {
     LightList lights = clusterLights(vWorldPosition);

@@ -14,6 +14,10 @@ centroid out vec3 vWorldPosition;
 centroid out vec3 vNormal;
 out vec2 vUv;
 centroid out vec2 vLightmapUv;
+// The same two at the pixel centre (not centroid): their screen derivatives, which centroid
+// sampling would bend at triangle edges, give the texel-density view (view_modes.glsl).
+out vec3 vWorldPositionAtCentre;
+out vec2 vLightmapUvAtCentre;
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
@@ -22,5 +26,7 @@ void main() {
   vNormal = normalize(uNormalMatrix * aNormal);
   vUv = aUv;
   vLightmapUv = aLightmapUv;
+  vWorldPositionAtCentre = world.xyz;
+  vLightmapUvAtCentre = aLightmapUv;
   gl_Position = uViewProjection * world;
 }

@@ -19,6 +19,7 @@
 //             computed on the CPU and bound where the chart colours are; nearest texel)
 //   validity  each texel sampled, filled from its neighbours or padding (the same way; the
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
+//   texel-density, cascades  false colours drawn by forward.frag (view_modes.glsl)
 // E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
 const int LIGHTING_FULL = 0;
 const int LIGHTING_DIRECT = 1;
@@ -28,6 +29,8 @@ const int LIGHTING_CHARTS = 4;
 const int LIGHTING_VPL = 5;
 const int LIGHTING_VPL_CLAMP = 6;
 const int LIGHTING_ERROR = 7;
+const int LIGHTING_TEXEL_DENSITY = 8;
+const int LIGHTING_CASCADES = 9;
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region

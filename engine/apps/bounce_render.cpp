@@ -46,7 +46,9 @@ struct Options {
   bool noLightCulling = false;
   std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
-  int msaa = 4;  // samples per pixel
+  int msaa = 4;                      // samples per pixel
+  std::optional<uint64_t> vplPaths;  // draw the VPLs of the bake's first N light paths
+  std::optional<float> vplClamp;     // VPL clamp distance, m (default: the bake's)
 };
 
 bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) {
@@ -127,6 +129,24 @@ int run(const Options& options) {
                                    bake ? &*bake : nullptr);
   for (const std::string& warning : renderer.warnings())
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
+  if (options.vplPaths || options.vplClamp) {
+    if (!renderer.hasVpls())
+      throw std::runtime_error(
+          "--vpl-paths and --vpl-clamp choose among the bake's VPLs, but " +
+          (bake ? "the bake " + bakeDir + " has none" : std::string("no bake is used")));
+    const bounce::ForwardRenderer::VplSelection bakes = renderer.vplSelection();
+    renderer.setVplSelection(options.vplPaths.value_or(bakes.totalPaths),
+                             options.vplClamp.value_or(bakes.bakeClampDistance));
+    const bounce::ForwardRenderer::VplSelection drawn = renderer.vplSelection();
+    std::fprintf(stderr,
+                 "bounce-render: VPLs of %llu of the bake's %llu light paths (%zu VPLs, flux x "
+                 "%.4g), clamp r = %.4g m (the bake's %.4g m)\n",
+                 static_cast<unsigned long long>(drawn.paths),
+                 static_cast<unsigned long long>(drawn.totalPaths), drawn.vplCount,
+                 static_cast<double>(drawn.totalPaths) / static_cast<double>(drawn.paths),
+                 static_cast<double>(drawn.clampDistance),
+                 static_cast<double>(drawn.bakeClampDistance));
+  }
   const auto uploaded = Clock::now();
   const bounce::Image image =
       renderer.renderImage(camera, options.width, options.height, options.msaa);
@@ -232,11 +252,22 @@ int main(int argc, char** argv) {
                  "green: what their clamp removed), error (each texel's estimated relative error: "
                  "blue 0, green at the bake's target, red at twice it or more), validity (green: "
                  "texels with samples of their own, orange: filled from their neighbours, dark "
-                 "blue: padding)")
+                 "blue: padding), texel-density (lightmap texels per metre against the bake's "
+                 "texel size: blue half or less, green equal, red twice or more, over a checker of "
+                 "texels), cascades (the directional light's shadow cascade: red, green, blue, "
+                 "yellow from near to far, cross-faded where they blend; needs no bake)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")
       ->check(CLI::Range(std::size_t{1}, bounce::kMaxVplGroups));
+  app.add_option("--vpl-paths", options.vplPaths,
+                 "draw the VPLs of the bake's first N light paths only, each flux x (the bake's "
+                 "paths)/N: the same estimate from fewer VPLs (default: all)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--vpl-clamp", options.vplClamp,
+                 "VPL clamp distance r in metres: the geometry term is capped at 1/r^2; 0 "
+                 "unclamped (default: the bake's)")
+      ->check(CLI::Range(0.0f, 1e6f));
   app.add_flag("--no-vpl-culling", options.noVplCulling,
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-light-culling", options.noLightCulling,

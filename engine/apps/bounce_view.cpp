@@ -4,9 +4,12 @@
 //   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
 //   one found for the scene as bounce-render finds it, bake_folder/bake_search.h): M cycles the
 //   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
-//   its error.exr error), C toggles the chart/texel-density view. H shows or hides the panel
-//   (viewer_panel.h: the bake's facts, modes, exposure, cameras, objects, lights, CPU and GPU
-//   frame times; --no-panel starts hidden); keys go to the panel only while it edits a field.
+//   its error.exr error and validity, texel-density, cascades; without a bake direct and
+//   cascades), C toggles the chart view. F1–F4 return to a camera bookmark, Shift+F1–F4 save
+//   the camera there (for the session). H shows or hides the panel (viewer_panel.h: the bake's
+//   facts, modes, exposure, cameras and bookmarks, the VPLs' light paths and clamp, objects,
+//   lights, CPU and GPU frame times; --no-panel starts hidden); keys go to the panel only while
+//   it edits a field.
 //   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
 //   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
 //   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
@@ -16,6 +19,8 @@
 // `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -41,6 +46,7 @@
 #include "image/image_io.h"
 #include "render/fly_camera.h"
 #include "render/forward_renderer.h"
+#include "render/reference_compare_pass.h"
 #include "render/tonemap_pass.h"
 #include "render/view.h"
 #include "scene/dynamic_selection.h"
@@ -73,6 +79,8 @@ struct Options {
   bool noPanel = false;            // start with the panel hidden
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::string dynamicVpls = "retrace";
+  std::string reference;          // a reference EXR (bounce-trace) to compare the frame with
+  std::string compare = "split";  // how, with --reference (render/reference_view.h)
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -86,6 +94,7 @@ struct LoadedBake {
   std::optional<bounce::Bake> bake;
   std::filesystem::path dir;
   std::vector<std::string> notes;
+  bool stale = false;  // the scene's bake was found but no longer matches it (BakeSearch::stale)
 };
 
 // With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
@@ -112,6 +121,7 @@ class Viewer {
         renderer_(scene_, bounce::gl::shaderDirectory(),
                   rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
+        compare_(bounce::gl::shaderDirectory()),
         selection_(scene_),
         objectSpeed_(bounce::objectSpeed(scene_)),
         exposure_(options.exposure) {
@@ -137,9 +147,16 @@ class Viewer {
       std::fprintf(stderr, "bounce-view: warning: no panel (%s); the keys still work\n", e.what());
     }
     if (bake_) bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    bakeStale_ = std::any_of(bakeNotes_.begin(), bakeNotes_.end(),
-                             [](const std::string& n) { return n.starts_with("not using"); });
+    bakeStale_ = loaded.stale;
+    if (bakeStale_)
+      std::fprintf(stderr,
+                   "bounce-view: lighting needs to be rebuilt: the scene's bake is stale (the "
+                   "panel's 'bake now' or the script's rebake re-bakes it)\n");
     select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
+    if (!options.reference.empty()) {
+      referenceView_ = *bounce::parseReferenceView(options.compare);  // CLI11 checked
+      loadReference(options.reference);
+    }
   }
 
   int run() {
@@ -164,7 +181,7 @@ class Viewer {
       if (panel_ && panelShown_) drawPanel();
       const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
       if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
-        if (!options_.screenshot.empty()) save(target_->read(), options_.screenshot, exposure_);
+        if (!options_.screenshot.empty()) save(shown().read(), options_.screenshot, exposure_);
         if (!options_.windowShot.empty()) saveWindow(options_.windowShot);
         std::fprintf(stderr,
                      "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
@@ -200,21 +217,13 @@ class Viewer {
     fly_.emplace(cameras_[index]);
   }
 
-  // The modes in the order M steps through them; without a bake only direct; the VPL modes
-  // (vpl, vpl-clamp) only when the bake has VPLs, error only when it has error.exr.
+  // The next of availableModes() (the order M steps through them): without a bake direct and
+  // cascades; the VPL modes only when the bake has VPLs, error and validity only with error.exr.
   void nextMode() {
-    if (!renderer_.hasBake()) return;
-    const std::vector<std::string> names = bounce::renderModeNames();
-    const std::string current(bounce::renderModeName(renderer_.settings().mode));
-    std::size_t i = 0;
-    while (i < names.size() && names[i] != current) ++i;
-    for (std::size_t step = 1; step <= names.size(); ++step) {
-      const bounce::RenderMode next = *bounce::parseRenderMode(names[(i + step) % names.size()]);
-      if (bounce::renderModeNeedsVpls(next) && !renderer_.hasVpls()) continue;
-      if (bounce::renderModeNeedsErrorMap(next) && !renderer_.hasErrorMap()) continue;
-      setMode(next);
-      return;
-    }
+    const std::vector<bounce::RenderMode> modes = availableModes();
+    const auto at = std::find(modes.begin(), modes.end(), renderer_.settings().mode);
+    if (modes.empty()) return;
+    setMode(at == modes.end() || at + 1 == modes.end() ? modes.front() : *(at + 1));
   }
 
   void toggleCharts() {
@@ -238,6 +247,12 @@ class Viewer {
                  : mode == bounce::RenderMode::Error
                      ? " (each texel's estimated relative error: blue 0, green at the bake's "
                        "target, red at twice it or more, dark grey none)"
+                 : mode == bounce::RenderMode::TexelDensity
+                     ? " (lightmap texels per metre against the bake's texel size: blue half or "
+                       "less, green equal, red twice or more; checker: one square per texel)"
+                 : mode == bounce::RenderMode::Cascades
+                     ? " (the directional light's shadow cascade: red, green, blue, yellow from "
+                       "near to far; grey: no shadowed directional light)"
                      : "");
   }
 
@@ -287,6 +302,16 @@ class Viewer {
           editLight(index, light);
         }
         if (c.kind == Kind::CancelBake && rebake_) rebake_->cancel();
+        const auto slot = static_cast<std::size_t>(c.count - 1);
+        if (c.kind == Kind::BookmarkSave) saveBookmark(slot);
+        if (c.kind == Kind::BookmarkGo) goToBookmark(slot);
+        if ((c.kind == Kind::VplPaths || c.kind == Kind::VplClamp) && !renderer_.hasVpls())
+          throw std::runtime_error("no VPLs to choose from: the bake has none");
+        if (c.kind == Kind::VplPaths)
+          selectVpls(static_cast<uint64_t>(c.count), renderer_.vplSelection().clampDistance);
+        if (c.kind == Kind::VplClamp) selectVpls(renderer_.vplSelection().paths, c.number);
+        if (c.kind == Kind::Reference) loadReference(c.text);
+        if (c.kind == Kind::Compare) setReferenceView(*bounce::parseReferenceView(c.text));
       } catch (const std::exception& e) {
         throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
                                  e.what());
@@ -314,7 +339,7 @@ class Viewer {
         ++scriptAt_;
         return scriptAt_ == script.size();
       }
-      if (c.kind == Kind::Capture) save(target_->read(), c.text, exposure_);
+      if (c.kind == Kind::Capture) save(shown().read(), c.text, exposure_);
       if (c.kind == Kind::Window) saveWindow(c.text);
       ++scriptAt_;
     }
@@ -334,6 +359,15 @@ class Viewer {
     view.msaa = options_.msaa;
     for (const bounce::Camera& camera : cameras_) view.cameras.push_back(camera.name);
     view.camera = cameraIndex_;
+    for (const std::optional<bounce::FlyCamera>& bookmark : bookmarks_)
+      view.bookmarks.push_back(bookmark.has_value());
+    view.referenceFile = referenceFile_;
+    view.referenceView = referenceView_;
+    if (renderer_.hasVpls()) {
+      const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
+      view.vpls = bounce::PanelVpls{s.paths, s.totalPaths, s.vplCount, s.clampDistance,
+                                    s.bakeClampDistance};
+    }
     view.object = selection_.empty() ? "" : selection_.name(scene_);
     view.objectCount = selection_.count();
     view.lights = &scene_.lights;
@@ -348,6 +382,20 @@ class Viewer {
     if (requests.mode) setMode(*requests.mode);
     if (requests.exposure) exposure_ = *requests.exposure;
     if (requests.camera) select(*requests.camera);
+    if (requests.saveBookmark) saveBookmark(*requests.saveBookmark);
+    if (requests.goToBookmark && bookmarks_.at(*requests.goToBookmark))
+      goToBookmark(*requests.goToBookmark);
+    if (requests.loadReference) try {
+        loadReference(*requests.loadReference);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "bounce-view: error: %s\n", e.what());  // keep viewing
+      }
+    if (requests.referenceView && compare_.hasReference()) referenceView_ = *requests.referenceView;
+    if (requests.vplSelection) try {
+        selectVpls(requests.vplSelection->first, requests.vplSelection->second);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "bounce-view: %s\n", e.what());  // keep the VPLs drawn
+      }
     if (requests.nextObject) selectNextObject();
     if (requests.screenshot) saveRequested_ = true;
     for (const auto& [index, light] : requests.lightEdits) editLight(index, light);
@@ -448,6 +496,17 @@ class Viewer {
       if (key == Key::M) nextMode();
       if (key == Key::C) toggleCharts();
       if (key == Key::G) selectNextObject();
+      if (key >= Key::F1 && key <= Key::F4) {
+        const auto slot =
+            static_cast<std::size_t>(static_cast<int>(key) - static_cast<int>(Key::F1));
+        if (window_.isDown(Key::LeftShift))
+          saveBookmark(slot);
+        else if (bookmarks_[slot])
+          goToBookmark(slot);
+        else
+          std::fprintf(stderr, "bounce-view: bookmark %zu is empty (Shift+F%zu saves it)\n",
+                       slot + 1, slot + 1);
+      }
     }
     speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
     const auto axis = [&](Key plus, Key minus) {
@@ -468,6 +527,32 @@ class Viewer {
                  -static_cast<float>(delta.y) * kRadiansPerPixel);
     }
     cursor_ = cursor;
+  }
+
+  // Camera bookmarks (F1..F4 go, Shift+F1..F4 save; the panel; the script's bookmark): the fly
+  // camera as it stands (position, heading, lens), for this session; going back restores that
+  // state itself, so the frame is the one drawn when it was saved.
+  void saveBookmark(std::size_t slot) {
+    bookmarks_.at(slot) = *fly_;
+    const glm::vec3 at = bookmarks_[slot]->position();
+    std::fprintf(stderr, "bounce-view: bookmark %zu saved at (%.3f, %.3f, %.3f) m\n", slot + 1,
+                 at.x, at.y, at.z);
+  }
+
+  void goToBookmark(std::size_t slot) {
+    if (!bookmarks_.at(slot))
+      throw std::runtime_error("bookmark " + std::to_string(slot + 1) + " is empty");
+    fly_ = *bookmarks_[slot];
+  }
+
+  // The VPLs of the bake's first `paths` light paths at clamp distance r (panel, script).
+  void selectVpls(uint64_t paths, float clampDistance) {
+    renderer_.setVplSelection(paths, clampDistance);
+    const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
+    std::fprintf(
+        stderr, "bounce-view: VPLs of %llu of %llu light paths (%zu VPLs), clamp r = %.4g m\n",
+        static_cast<unsigned long long>(s.paths), static_cast<unsigned long long>(s.totalPaths),
+        s.vplCount, static_cast<double>(s.clampDistance));
   }
 
   void selectNextObject() {
@@ -501,13 +586,51 @@ class Viewer {
       renderer_.setLightCulling(culling);
     }
     renderer_.render(fly_->camera(), *target_);
+    if (comparing()) {
+      if (!compared_ || compared_->width() != size.x || compared_->height() != size.y)
+        compared_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
+      compare_.draw(target_->color(), *compared_, referenceView_);
+    }
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
-    tonemap_.draw(target_->color(), exposure_);
+    tonemap_.draw(shown().color(), exposure_);
+  }
+
+  bool comparing() const {
+    return referenceView_ != bounce::ReferenceView::Off && compare_.hasReference();
+  }
+  // What the window shows and the captures hold: the frame, or the frame beside the reference
+  // (both radiance, tone-mapped alike).
+  const bounce::gl::RenderTarget& shown() const { return comparing() ? *compared_ : *target_; }
+
+  // A reference EXR (bounce-trace's, of the same camera and size) to compare the frame with;
+  // the split view unless another comparison is on.
+  void loadReference(const std::string& file) {
+    const bounce::Image reference = bounce::readExr(file);
+    compare_.setReference(reference);
+    referenceFile_ = file;
+    if (referenceView_ == bounce::ReferenceView::Off) referenceView_ = bounce::ReferenceView::Split;
+    const glm::ivec2 size = window_.framebufferSize();
+    std::fprintf(stderr, "bounce-view: reference %s, %dx%d (%s)\n", file.c_str(), reference.width,
+                 reference.height, std::string(bounce::referenceViewName(referenceView_)).c_str());
+    if (reference.width != size.x || reference.height != size.y)
+      std::fprintf(stderr,
+                   "bounce-view: warning: the reference is %dx%d, the frame %dx%d: it is "
+                   "stretched (open the viewer with --width %d --height %d to compare pixels)\n",
+                   reference.width, reference.height, size.x, size.y, reference.width,
+                   reference.height);
+  }
+
+  void setReferenceView(bounce::ReferenceView view) {
+    if (view != bounce::ReferenceView::Off && !compare_.hasReference())
+      throw std::runtime_error(
+          "no reference to compare with (--reference FILE, the panel, or "
+          "the script's reference FILE)");
+    referenceView_ = view;
   }
 
   void saveScreenshot() {
     saveRequested_ = false;
-    const bounce::Image radiance = target_->read();
+    const bounce::Image radiance = shown().read();
     const std::string stem = "bounce-view-" + std::to_string(++screenshots_);
     try {
       save(radiance, stem + ".png", exposure_);
@@ -525,9 +648,13 @@ class Viewer {
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;
+  bounce::ReferenceComparePass compare_;
   bounce::DynamicSelection selection_;
   float objectSpeed_ = 1.0f;  // m/s
   std::unique_ptr<bounce::gl::RenderTarget> target_;
+  std::unique_ptr<bounce::gl::RenderTarget> compared_;  // the frame beside the reference
+  bounce::ReferenceView referenceView_ = bounce::ReferenceView::Off;
+  std::string referenceFile_;
   std::vector<bounce::Camera> cameras_;
   std::size_t cameraIndex_ = 0;
   std::optional<bounce::FlyCamera> fly_;
@@ -545,8 +672,9 @@ class Viewer {
   bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
   bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written
   std::unique_ptr<bounce::BackgroundBake> rebake_;  // before the script state, after bake_
-  std::size_t scriptAt_ = 0;                        // the next command of options_.script
-  int scriptFrames_ = 0;                            // frames drawn of the current `frames N`
+  std::array<std::optional<bounce::FlyCamera>, bounce::kScriptBookmarks> bookmarks_;
+  std::size_t scriptAt_ = 0;  // the next command of options_.script
+  int scriptFrames_ = 0;      // frames drawn of the current `frames N`
 };
 
 }  // namespace
@@ -557,9 +685,10 @@ int main(int argc, char** argv) {
       "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
       "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
       "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits. With a bake: M cycles the modes, C toggles the chart view. Dynamic "
+      "exposure, Esc quits. M cycles the modes (without a bake direct and cascades), C toggles the "
+      "chart view. Dynamic "
       "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
-      "H shows or hides the panel.",
+      "F1-F4 go to a camera bookmark, Shift+F1-F4 save one. H shows or hides the panel.",
       "bounce-view"};
   app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
       ->required();
@@ -587,9 +716,9 @@ int main(int argc, char** argv) {
       ->needs("--frames")
       ->check(kImageFile);
   app.add_option("--script", options.scriptFile,
-                 "replay a session: camera, view, mode, exposure, panel, frames, capture and "
-                 "window commands, one per line (engine/cli/viewer_script.h); exits after the "
-                 "last")
+                 "replay a session: camera, view, mode, exposure, panel, frames, capture, window, "
+                 "light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths and vpl-clamp "
+                 "commands, one per line (engine/cli/viewer_script.h); exits after the last")
       ->check(CLI::ExistingFile);
   app.add_option("--bake", options.bake,
                  "bake folder (bounce-bake's output) for this scene: adds its baked light "
@@ -600,13 +729,25 @@ int main(int argc, char** argv) {
                  "before tone mapping); 1 turns it off (default 4)")
       ->check(CLI::Range(1, 64));
   app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
+  app.add_option("--reference", options.reference,
+                 "a reference EXR of the same camera (bounce-trace --out FILE.exr at the window's "
+                 "size) shown beside the frame, both through the same exposure and tone mapper")
+      ->check(CLI::ExistingFile);
+  app.add_option("--compare", options.compare,
+                 "with --reference: split (left the frame, right the reference; default) or "
+                 "difference (the luminance relative difference: red brighter, blue darker, full "
+                 "at 50%)")
+      ->check(CLI::IsMember({"split", "difference"}))
+      ->needs("--reference");
   app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
       ->excludes("--bake");
   app.add_option("--mode", options.mode,
                  "start in this mode: full (direct + baked indirect; the default with a bake), "
                  "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
                  "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
-                 "error (each texel's estimated relative error in false colour)")
+                 "error (each texel's estimated relative error in false colour), validity, "
+                 "texel-density (lightmap texels per metre against the bake's texel size), "
+                 "cascades (the directional light's shadow cascade index)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--dynamic-vpls", options.dynamicVpls,
                  "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
@@ -641,6 +782,7 @@ int main(int argc, char** argv) {
       bake = std::move(found.bake);
       loaded.dir = found.dir;
       loaded.notes = found.notes;
+      loaded.stale = found.stale();
     }
     const bounce::RenderMode mode =
         options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)

@@ -1,6 +1,7 @@
 #include "viewer_panel.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <optional>
 
@@ -108,6 +109,65 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
   if (ImGui::CollapsingHeader("Cameras", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (std::size_t i = 0; i < view.cameras.size(); ++i)
       if (ImGui::Selectable(view.cameras[i].c_str(), i == view.camera)) requests.camera = i;
+  }
+
+  if (ImGui::CollapsingHeader("Camera bookmarks")) {
+    for (std::size_t i = 0; i < view.bookmarks.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      const std::string slot = std::to_string(i + 1);
+      std::string go = "go F", save = "save (Shift+F";
+      go += slot;
+      save += slot;
+      save += ")";
+      ImGui::BeginDisabled(!view.bookmarks[i]);
+      if (ImGui::Button(go.c_str())) requests.goToBookmark = i;
+      ImGui::EndDisabled();
+      ImGui::SameLine();
+      if (ImGui::Button(save.c_str())) requests.saveBookmark = i;
+      ImGui::PopID();
+    }
+  }
+
+  if (view.vpls && ImGui::CollapsingHeader("VPLs")) {
+    const PanelVpls& v = *view.vpls;
+    int paths = static_cast<int>(v.paths);
+    float clamp = v.clampDistance;
+    // The first N light paths, their flux x total/N: the same estimate from fewer VPLs.
+    bool changed = ImGui::SliderInt("light paths", &paths, 1, static_cast<int>(v.totalPaths), "%d",
+                                    ImGuiSliderFlags_Logarithmic);
+    ImGui::Text(
+        "%zu VPLs of %llu paths (flux x %.3g)", v.vplCount,
+        static_cast<unsigned long long>(v.totalPaths),
+        static_cast<double>(v.totalPaths) / static_cast<double>(std::max<uint64_t>(v.paths, 1)));
+    const float top = std::max(4.0f * v.bakeClampDistance, 0.1f);
+    changed |= ImGui::SliderFloat("clamp r (m)", &clamp, 0.0f, top, "%.4f");
+    if (ImGui::Button("the bake's")) {
+      paths = static_cast<int>(v.totalPaths);
+      clamp = v.bakeClampDistance;
+      changed = true;
+    }
+    ImGui::SameLine();
+    ImGui::Text("r = %.4f m", static_cast<double>(v.bakeClampDistance));
+    if (changed) requests.vplSelection = {static_cast<uint64_t>(std::max(paths, 1)), clamp};
+  }
+
+  if (ImGui::CollapsingHeader("Reference")) {
+    // The path being typed lives across frames (the panel itself keeps no other state).
+    static std::array<char, 1024> path{};
+    ImGui::InputText("EXR", path.data(), path.size());
+    if (ImGui::Button("load") && path[0] != '\0') requests.loadReference = std::string(path.data());
+    if (!view.referenceFile.empty()) {
+      ImGui::TextWrapped("%s", view.referenceFile.c_str());
+      for (const ReferenceView v :
+           {ReferenceView::Off, ReferenceView::Split, ReferenceView::Difference}) {
+        if (v != ReferenceView::Off) ImGui::SameLine();
+        const std::string name(referenceViewName(v));
+        if (ImGui::RadioButton(name.c_str(), view.referenceView == v)) requests.referenceView = v;
+      }
+      ImGui::TextWrapped(
+          "split: left the frame, right the reference; difference: red brighter, "
+          "blue darker than the reference (full at 50%%)");
+    }
   }
 
   if (view.objectCount > 0 && ImGui::CollapsingHeader("Dynamic objects")) {

@@ -343,10 +343,10 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
   const BakeManifest& manifest = bake.manifest;
   const SceneHash hash = sceneHash(scene);
   if (manifest.sceneHash != hash.whole)
-    throw LoadError(manifestFile, "stale bake: it does not match the scene (" +
-                                      whyStale(manifestFile, manifest, scene, hash) +
-                                      "): its scene hash is " + manifest.sceneHash + ", " +
-                                      scene.source + " hashes to " + hash.whole + ": rebake");
+    throw StaleBakeError(manifestFile, "stale bake: it does not match the scene (" +
+                                           whyStale(manifestFile, manifest, scene, hash) +
+                                           "): its scene hash is " + manifest.sceneHash + ", " +
+                                           scene.source + " hashes to " + hash.whole + ": rebake");
   std::map<std::string, std::vector<unsigned char>> files = readRecordedFiles(dir, manifest);
 
   const fs::path layoutFile = dir / kLayoutName;

@@ -31,6 +31,7 @@
 #include "bake_folder/scene_hash.h"
 #include "bake_folder/vpl.h"
 #include "image/image.h"
+#include "scene/load_error.h"
 #include "scene/scene.h"
 
 namespace bounce {
@@ -53,6 +54,13 @@ struct Bake {
 inline constexpr float kNoErrorEstimate = -1.0f;
 inline constexpr float kMaxRelativeError = 1e6f;  // what a reader accepts
 
+// What readBake throws when the bake was made for another scene (its "sceneHash" differs from
+// the scene's): rebaking fixes it. A LoadError, so callers that do not ask keep working.
+class StaleBakeError : public LoadError {
+ public:
+  using LoadError::LoadError;
+};
+
 // Reads <dir>; throws LoadError naming the folder or its file and the reason when a file is
 // missing or malformed, when the format version is not kBakeFormatVersion, when the bake is
 // stale (its "sceneHash" differs from sceneContentHash(scene); the message gives both hashes and
@@ -61,7 +69,7 @@ inline constexpr float kMaxRelativeError = 1e6f;  // what a reader accepts
 // the one bake.json records (damaged, or another bake's), when a file disagrees with the
 // manifest (atlas size, regions, VPL count, visibility lights), and when a value is out of its
 // documented range (docs/bake_folder.md: irradiance finite in [0, kMaxBakeIrradiance], UVs in
-// [0, 1], VPL flux and positions).
+// [0, 1], VPL flux and positions). A stale bake throws StaleBakeError.
 Bake readBake(const std::filesystem::path& dir, const Scene& scene);
 
 // Writes <dir> whole or not at all (see above), with bake.json's "files" set from the bytes

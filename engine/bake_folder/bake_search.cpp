@@ -5,6 +5,13 @@
 
 namespace bounce {
 
+bool BakeSearch::stale() const {
+  if (bake) return false;
+  for (const RefusedBake& r : refused)
+    if (r.reason == RefusedBake::Reason::Stale) return true;
+  return false;
+}
+
 std::filesystem::path toolDirectory() {
   std::error_code error;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
@@ -36,6 +43,9 @@ BakeSearch findSceneBake(const std::filesystem::path& scenePath, const Scene& sc
                             scenePath.filename().string() + "; --no-bake draws without it)");
       return found;
     } catch (const std::exception& e) {
+      const bool stale = dynamic_cast<const StaleBakeError*>(&e) != nullptr;
+      found.refused.push_back(
+          {dir, stale ? RefusedBake::Reason::Stale : RefusedBake::Reason::Unusable, e.what()});
       found.notes.push_back("not using the bake " + dir.string() + ": " + e.what() +
                             " (rebake with bounce-bake " + scenePath.string() + ")");
     }

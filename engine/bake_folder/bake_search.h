@@ -16,10 +16,25 @@
 
 namespace bounce {
 
+// A folder found for the scene but not used, and why.
+struct RefusedBake {
+  enum class Reason {
+    Stale,     // made for another version of the scene (StaleBakeError): a re-bake fixes it
+    Unusable,  // missing files, damaged, another format: readBake's reason says which
+  };
+  std::filesystem::path dir;
+  Reason reason = Reason::Unusable;
+  std::string why;  // readBake's message
+};
+
 struct BakeSearch {
   std::optional<Bake> bake;
-  std::filesystem::path dir;       // the folder read; empty when none was usable
-  std::vector<std::string> notes;  // one line each: what was used, or why a folder was not
+  std::filesystem::path dir;         // the folder read; empty when none was usable
+  std::vector<RefusedBake> refused;  // the folders passed over, in search order
+  std::vector<std::string> notes;    // one line each: what was used, or why a folder was not
+  // Whether the scene's bake exists but no longer matches it (the viewer's "lighting needs to
+  // be rebuilt"): a folder was passed over as stale and none was used.
+  bool stale() const;
 };
 
 // The folder of the running executable (from /proc/self/exe); empty when it cannot be read.

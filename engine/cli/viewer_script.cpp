@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -98,6 +99,39 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
       if (c.field == "intensity" && (c.value.r < 0.0f || c.value.g < 0.0f || c.value.b < 0.0f))
         fail("a light's intensity is not negative");
       if (c.field == "direction" && c.value == glm::vec3(0.0f)) fail("a direction of length 0");
+    } else if (w[0] == "bookmark") {
+      arguments(2);
+      if (w[1] != "save" && w[1] != "go") fail("'bookmark' takes save or go, not '" + w[1] + "'");
+      c.kind = w[1] == "save" ? ScriptCommand::Kind::BookmarkSave : ScriptCommand::Kind::BookmarkGo;
+      const float n = parseNumber(w[2], "bookmark", fail);
+      if (n != std::floor(n) || n < 1.0f || n > static_cast<float>(kScriptBookmarks))
+        fail("bookmark " + w[2] + " is not a whole number in [1, " +
+             std::to_string(kScriptBookmarks) + "]");
+      c.count = static_cast<int>(n);
+    } else if (w[0] == "vpl-paths") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::VplPaths;
+      const float n = parseNumber(w[1], "light path count", fail);
+      if (n != std::floor(n) || n < 1.0f || n > 1e9f)
+        fail("light path count " + w[1] + " is not a whole number in [1, 1e9]");
+      c.count = static_cast<int>(n);
+    } else if (w[0] == "vpl-clamp") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::VplClamp;
+      c.number = parseNumber(w[1], "clamp distance", fail);
+      if (c.number < 0.0f) fail("a clamp distance is not negative");
+    } else if (w[0] == "reference") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Reference;
+      if (std::filesystem::path(w[1]).extension() != ".exr")
+        fail(w[1] + ": a reference is an EXR file (.exr)");
+      c.text = w[1];
+    } else if (w[0] == "compare") {
+      arguments(1);
+      c.kind = ScriptCommand::Kind::Compare;
+      if (w[1] != "off" && w[1] != "split" && w[1] != "difference")
+        fail("'compare' takes off, split or difference, not '" + w[1] + "'");
+      c.text = w[1];
     } else if (w[0] == "rebake" || w[0] == "wait-bake" || w[0] == "cancel-bake") {
       arguments(0);
       c.kind = w[0] == "rebake"      ? ScriptCommand::Kind::Rebake
@@ -106,7 +140,7 @@ std::vector<ScriptCommand> readViewerScript(const std::filesystem::path& file,
     } else {
       fail("unknown command '" + w[0] +
            "' (camera, view, mode, exposure, panel, frames, capture, window, light, rebake, "
-           "wait-bake, cancel-bake)");
+           "wait-bake, cancel-bake, bookmark, vpl-paths, vpl-clamp, reference, compare)");
     }
     commands.push_back(c);
   }

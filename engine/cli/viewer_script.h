@@ -13,6 +13,13 @@
 //   rebake               start a background re-bake (preview, then final, as the panel's button)
 //   wait-bake            draw frames until the re-bake has finished and its last pass is drawn
 //   cancel-bake          cancel the running re-bake
+//   bookmark save|go N   save the current camera as bookmark N (1..kScriptBookmarks), or
+//                        return to it (as Shift+F1..F4 and F1..F4)
+//   vpl-paths N          draw the VPLs of the bake's first N light paths (N >= 1; the panel's
+//                        "light paths")
+//   vpl-clamp R          VPL clamp distance R m (>= 0; 0 unclamped)
+//   reference FILE       load a reference EXR (bounce-trace's) and show it split with the frame
+//   compare off|split|difference   how the frame is shown beside the reference
 // Commands run in order, one per frame (a frames N takes N); the viewer exits after the last.
 // Paths are as written (relative to the working folder). GL-free.
 #pragma once
@@ -38,18 +45,26 @@ struct ScriptCommand {
     Rebake,
     WaitBake,
     CancelBake,
-    Light
+    Light,
+    BookmarkSave,
+    BookmarkGo,
+    VplPaths,
+    VplClamp,
+    Reference,
+    Compare
   };
   Kind kind = Kind::Frames;
-  int line = 0;                            // 1-based, for messages
-  std::string text;                        // camera or mode name, file
+  int line = 0;      // 1-based, for messages
+  std::string text;  // camera or mode name, file; compare: off, split or difference
   glm::vec3 position{0.0f}, target{0.0f};  // view
-  float number = 0.0f;                     // exposure
+  float number = 0.0f;                     // exposure; vpl-clamp (m)
   std::string field;                       // light: intensity, position or direction
   glm::vec3 value{0.0f};                   // light: the field's new value
-  int count = 1;                           // frames
+  int count = 1;                           // frames; the bookmark's slot (1-based); vpl-paths
   bool on = true;                          // panel
 };
+
+inline constexpr int kScriptBookmarks = 4;  // camera bookmarks: F1..F4
 
 // Throws LoadError("FILE: line N: reason") for an unknown command, a wrong argument count, a
 // number that does not parse or is not finite, a mode that does not exist, a capture whose

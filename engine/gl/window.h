@@ -37,16 +37,20 @@ enum class Key {
   Digit7,
   Digit8,
   Digit9,
-  M,  // bounce-view: next render mode
-  C,  // bounce-view: chart view on/off
-  G,  // bounce-view: select the next dynamic object
-  I,  // bounce-view: move the selected object away from the camera
-  K,  //   ... towards the camera
-  J,  //   ... left
-  L,  //   ... right
-  U,  //   ... down
-  O,  //   ... up
-  H,  // bounce-view: panel shown/hidden
+  M,   // bounce-view: next render mode
+  C,   // bounce-view: chart view on/off
+  G,   // bounce-view: select the next dynamic object
+  I,   // bounce-view: move the selected object away from the camera
+  K,   //   ... towards the camera
+  J,   //   ... left
+  L,   //   ... right
+  U,   //   ... down
+  O,   //   ... up
+  H,   // bounce-view: panel shown/hidden
+  F1,  // bounce-view: camera bookmark 1 (Shift: save it)
+  F2,  //   ... 2
+  F3,  //   ... 3
+  F4,  //   ... 4
 };
 
 enum class MouseButton { Left, Right };

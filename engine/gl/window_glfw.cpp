@@ -20,7 +20,7 @@ GLADapiproc glfwProc(const char* name) {
   return glfwGetProcAddress(name);
 }
 
-constexpr std::array<std::pair<Key, int>, 33> kKeyCodes = {{
+constexpr std::array<std::pair<Key, int>, 37> kKeyCodes = {{
     {Key::W, GLFW_KEY_W},
     {Key::A, GLFW_KEY_A},
     {Key::S, GLFW_KEY_S},
@@ -54,6 +54,10 @@ constexpr std::array<std::pair<Key, int>, 33> kKeyCodes = {{
     {Key::U, GLFW_KEY_U},
     {Key::O, GLFW_KEY_O},
     {Key::H, GLFW_KEY_H},
+    {Key::F1, GLFW_KEY_F1},
+    {Key::F2, GLFW_KEY_F2},
+    {Key::F3, GLFW_KEY_F3},
+    {Key::F4, GLFW_KEY_F4},
 }};
 
 int glfwKey(Key key) {

@@ -1,5 +1,7 @@
 #include "render/forward_renderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -12,6 +14,7 @@
 #include "render/shadow_pass.h"
 #include "render/view.h"
 #include "vpl_runtime/vpl_occlusion.h"
+#include "vpl_runtime/vpl_paths.h"
 
 namespace bounce {
 
@@ -167,17 +170,45 @@ void ForwardRenderer::setBake(const Bake& bake) {
         statics.grow(instance.worldBox.lower);
         statics.grow(instance.worldBox.upper);
       }
-    vplClampDistance_ = r;
+    vplClampDistance_ = bakeVplClampDistance_ = r;
     vplBounds_ = statics.empty() ? p.scene.bounds() : statics;
-    vpls_ = *bake.vpls;
-    // Both hand the VPL sections to the light table.
-    if (settings_.vplTracer && hasDynamicInstance(p.scene)) {
-      retraceVpls();
-    } else {
-      p.vpls.attach(*bake.vpls, r, vplBounds_, settings_.vpls);
-      updateVplOcclusion();
-    }
+    bakeVpls_ = *bake.vpls;
+    vplTotalPaths_ = vplPathCount(bakeVpls_, bake.manifest.vpls ? bake.manifest.vpls->paths : 0);
+    vplPathsDrawn_ = vplTotalPaths_;
+    vpls_ = bakeVpls_;
+    attachVpls();
   }
+}
+
+void ForwardRenderer::attachVpls() {
+  Passes& p = *passes_;
+  // Both hand the VPL sections to the light table.
+  if (settings_.vplTracer && hasDynamicInstance(p.scene)) {
+    retraceVpls();
+  } else {
+    p.vpls.attach(vpls_, vplClampDistance_, vplBounds_, settings_.vpls);
+    updateVplOcclusion();
+  }
+}
+
+void ForwardRenderer::setVplSelection(uint64_t paths, float clampDistance) {
+  if (bakeVpls_.empty()) throw std::invalid_argument("no VPLs to select: the bake has none");
+  if (!std::isfinite(clampDistance) || clampDistance < 0.0f)
+    throw std::invalid_argument("VPL clamp distance " + std::to_string(clampDistance) +
+                                " m is not a finite number >= 0");
+  paths = std::clamp<uint64_t>(paths, 1, vplTotalPaths_);
+  std::vector<Vpl> selected = firstPathsVpls(bakeVpls_, paths, vplTotalPaths_);
+  if (selected.empty())
+    throw std::invalid_argument("the first " + std::to_string(paths) + " of the bake's " +
+                                std::to_string(vplTotalPaths_) + " light paths left no VPL");
+  vpls_ = std::move(selected);
+  vplPathsDrawn_ = paths;
+  vplClampDistance_ = clampDistance;
+  attachVpls();
+}
+
+ForwardRenderer::VplSelection ForwardRenderer::vplSelection() const {
+  return {vplPathsDrawn_, vplTotalPaths_, vpls_.size(), vplClampDistance_, bakeVplClampDistance_};
 }
 
 bool ForwardRenderer::hasBake() const {

@@ -112,6 +112,20 @@ class ForwardRenderer {
   // Vpl per group; each group's shadow cube sits at its member nearest it), the per-cell cuts
   // and the clamp distance. Empty before a bake with VPLs.
   const VplPass& vpls() const;
+  // Which of the bake's VPLs are drawn and how they are clamped (the viewer's panel): the VPLs of
+  // its first `paths` light paths, each flux × totalPaths/paths (vpl_runtime/vpl_paths.h: the
+  // same estimator over fewer paths), with the geometry term capped at 1/r², r = clampDistance
+  // (m; 0 unclamped; bake_folder/vpl_clamp.h). paths is kept in [1, totalPaths]. Throws
+  // std::invalid_argument without VPLs, for a negative or non-finite r, or when those paths left
+  // no VPL. With a VplTracer and dynamic instances the re-traced set is drawn whole, at this r.
+  void setVplSelection(uint64_t paths, float clampDistance);
+  struct VplSelection {
+    uint64_t paths = 0, totalPaths = 0;  // light paths drawn, of the bake's
+    std::size_t vplCount = 0;            // the VPLs of those paths
+    float clampDistance = 0.0f;          // r drawn, m
+    float bakeClampDistance = 0.0f;      // the bake's r, m
+  };
+  VplSelection vplSelection() const;
   // VPL visibility (one shadow cube per group) on or off; off draws every VPL unoccluded.
   void setVplShadows(bool enabled);
   // Renders the vpl-clamp view of `camera` at width x height and sums it (needs VPLs; the mode
@@ -140,10 +154,17 @@ class ForwardRenderer {
   void followDynamicMoves();
 
   RendererSettings settings_;
-  std::vector<Vpl> vpls_;  // the bake's VPLs in file order (path order), for updateVplOcclusion
-  float vplClampDistance_ = 0.0f;  // r, m: the bake's (its N over the static area)
-  Box vplBounds_;                  // where the VPL grid lies: the static surfaces
-  bool dynamicMoved_ = false;      // a dynamic instance moved since the VPLs last followed
+  // Draws vpls_ (or the re-traced set) at vplClampDistance_ into the VPL pass.
+  void attachVpls();
+
+  std::vector<Vpl> bakeVpls_;          // the bake's VPLs in file order (path order)
+  uint64_t vplTotalPaths_ = 0;         // the light paths of bakeVpls_ (vpl_runtime/vpl_paths.h)
+  uint64_t vplPathsDrawn_ = 0;         // the first this many of them are drawn
+  std::vector<Vpl> vpls_;              // those paths' VPLs, as drawn, for updateVplOcclusion
+  float vplClampDistance_ = 0.0f;      // r drawn, m
+  float bakeVplClampDistance_ = 0.0f;  // the bake's r (its N over the static area), m
+  Box vplBounds_;                      // where the VPL grid lies: the static surfaces
+  bool dynamicMoved_ = false;          // a dynamic instance moved since the VPLs last followed
   const Scene& scene_;
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;

@@ -29,6 +29,10 @@ int lightingModeIndex(RenderMode mode) {
     case RenderMode::Error:
     case RenderMode::Validity:
       return 7;  // both read their colours from the chart unit
+    case RenderMode::TexelDensity:
+      return 8;
+    case RenderMode::Cascades:
+      return 9;
   }
   return 1;
 }
@@ -63,6 +67,7 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
                              gl::Filter::Nearest, gl::Wrap::ClampToEdge);
   }
   size_ = {static_cast<float>(layout.width), static_cast<float>(layout.height)};
+  targetTexelsPerMetre_ = layout.texelSize > 0.0f ? 1.0f / layout.texelSize : 1.0f;
   attachVisibility(bake);
   const std::span<const GpuInstance> instances = scene.instances();
   lightmapped_.assign(instances.size(), 0);
@@ -121,7 +126,11 @@ bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {
 }
 
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
-  program.set("uLightingMode", lightingModeIndex(attached_ ? mode : RenderMode::Direct));
+  // Without a bake only the modes that need none are drawn as asked.
+  program.set(
+      "uLightingMode",
+      lightingModeIndex(attached_ || !renderModeNeedsBake(mode) ? mode : RenderMode::Direct));
+  program.set("uTargetTexelsPerMetre", targetTexelsPerMetre_);
   program.set("uLightmap", TextureUnit::kLightmap);
   program.set("uLightmapCharts", TextureUnit::kLightmapCharts);
   program.set("uLightmapSize", size_);

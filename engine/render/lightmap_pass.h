@@ -56,7 +56,8 @@ class LightmapPass {
   std::optional<gl::Texture2D> visibility_;  // bake_folder/light_visibility.h as 2·W × H RGBA32F
   int bakedLights_ = 0;                      // static area lights the visibility names
   glm::vec2 size_{1.0f};
-  std::vector<uint8_t> lightmapped_;  // per instance
+  float targetTexelsPerMetre_ = 1.0f;  // 1 / the layout's texel size (the texel-density view)
+  std::vector<uint8_t> lightmapped_;   // per instance
   bool attached_ = false;
   std::string visibilityRefusal_;
 };

@@ -5,9 +5,10 @@
 namespace bounce {
 namespace {
 
-constexpr std::array kModes = {RenderMode::Full,     RenderMode::Direct, RenderMode::Indirect,
-                               RenderMode::Lightmap, RenderMode::Charts, RenderMode::Vpl,
-                               RenderMode::VplClamp, RenderMode::Error,  RenderMode::Validity};
+constexpr std::array kModes = {RenderMode::Full,         RenderMode::Direct,  RenderMode::Indirect,
+                               RenderMode::Lightmap,     RenderMode::Charts,  RenderMode::Vpl,
+                               RenderMode::VplClamp,     RenderMode::Error,   RenderMode::Validity,
+                               RenderMode::TexelDensity, RenderMode::Cascades};
 
 }  // namespace
 
@@ -31,12 +32,16 @@ std::string_view renderModeName(RenderMode mode) {
       return "error";
     case RenderMode::Validity:
       return "validity";
+    case RenderMode::TexelDensity:
+      return "texel-density";
+    case RenderMode::Cascades:
+      return "cascades";
   }
   return "direct";
 }
 
 bool renderModeNeedsBake(RenderMode mode) {
-  return mode != RenderMode::Direct;
+  return mode != RenderMode::Direct && mode != RenderMode::Cascades;
 }
 
 bool renderModeNeedsVpls(RenderMode mode) {

@@ -23,9 +23,13 @@ enum class RenderMode {
              // needs a bake with error.exr)
   Validity,  // each texel sampled, filled from neighbours or padding (bake_folder/texel_error.h;
              // needs a bake with error.exr)
+  TexelDensity,  // lightmap texels per metre against the bake's texel size as a false colour, ×
+                 // a checker of texels (render/view_mode_colours.h; needs a bake)
+  Cascades,      // the directional light's shadow cascade index as a false colour
+                 // (render/view_mode_colours.h; no bake needed)
 };
 
-// Whether the mode reads the lightmap or the VPLs (and so needs a bake).
+// Whether the mode reads the lightmap, its layout or the VPLs (and so needs a bake).
 bool renderModeNeedsBake(RenderMode mode);
 // Whether the mode draws every surface from the VPLs (and so needs a bake with VPLs).
 bool renderModeNeedsVpls(RenderMode mode);

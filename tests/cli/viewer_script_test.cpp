@@ -70,10 +70,36 @@ TEST(ViewerScript, ReadsEveryCommandWithItsLine) {
   EXPECT_EQ(c[7].kind, Kind::Window);
 }
 
+TEST(ViewerScript, ReadsBookmarksAndVplControls) {
+  const fs::path file =
+      writeScript("bookmarks", "bookmark save 2\nbookmark go 4\nvpl-paths 200\nvpl-clamp 0.03\n");
+  const std::vector<ScriptCommand> c = readViewerScript(file, kModes);
+  using Kind = ScriptCommand::Kind;
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_EQ(c[0].kind, Kind::BookmarkSave);
+  EXPECT_EQ(c[0].count, 2);
+  EXPECT_EQ(c[1].kind, Kind::BookmarkGo);
+  EXPECT_EQ(c[1].count, 4);
+  EXPECT_EQ(c[2].kind, Kind::VplPaths);
+  EXPECT_EQ(c[2].count, 200);
+  EXPECT_EQ(c[3].kind, Kind::VplClamp);
+  EXPECT_EQ(c[3].number, 0.03f);
+}
+
 TEST(ViewerScript, MistakesNameTheLineAndTheReason) {
   EXPECT_EQ(refusal("frames 1\nzoom 2\n"),
             "line 2: unknown command 'zoom' (camera, view, mode, exposure, panel, frames, "
-            "capture, window, light, rebake, wait-bake, cancel-bake)");
+            "capture, window, light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths, "
+            "vpl-clamp, reference, compare)");
+  EXPECT_EQ(refusal("reference ref.png\n"), "line 1: ref.png: a reference is an EXR file (.exr)");
+  EXPECT_EQ(refusal("compare side\n"),
+            "line 1: 'compare' takes off, split or difference, not 'side'");
+  EXPECT_EQ(refusal("bookmark keep 1\n"), "line 1: 'bookmark' takes save or go, not 'keep'");
+  EXPECT_EQ(refusal("bookmark go 5\n"), "line 1: bookmark 5 is not a whole number in [1, 4]");
+  EXPECT_EQ(refusal("bookmark save 0\n"), "line 1: bookmark 0 is not a whole number in [1, 4]");
+  EXPECT_EQ(refusal("vpl-paths 0\n"),
+            "line 1: light path count 0 is not a whole number in [1, 1e9]");
+  EXPECT_EQ(refusal("vpl-clamp -0.1\n"), "line 1: a clamp distance is not negative");
   EXPECT_EQ(refusal("light sun colour 1 1 1\n"),
             "line 1: 'light' sets intensity, position or direction, not 'colour'");
   EXPECT_EQ(refusal("light sun intensity 1 -1 1\n"), "line 1: a light's intensity is not negative");

@@ -17,6 +17,8 @@
 #include "bake_folder/vpl_clamp.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
+#include "image/tonemap.h"
+#include "render/reference_view.h"
 #include "scene/load.h"
 #include "support/test_context.h"
 #include "support/tool_run.h"
@@ -294,8 +296,9 @@ TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
   const fs::path built =
       fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
   if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
-  const std::vector<std::string> modes = {"full", "direct",    "indirect", "lightmap", "charts",
-                                          "vpl",  "vpl-clamp", "error",    "validity"};
+  const std::vector<std::string> modes = {"full",     "direct",        "indirect",  "lightmap",
+                                          "charts",   "vpl",           "vpl-clamp", "error",
+                                          "validity", "texel-density", "cascades"};
   std::string script = "camera cornell\npanel off\n";
   for (const std::string& mode : modes)
     script += "mode " + mode + "\ncapture " + (dir_ / (mode + ".exr")).string() + "\n";
@@ -325,6 +328,100 @@ TEST_F(ToolsTest, ScriptedViewerSessionCapturesEveryModeAsBounceRenderDrawsIt) {
     for (std::size_t b = a + 1; b < modes.size(); ++b)
       EXPECT_FALSE(captures[a].pixels == captures[b].pixels) << modes[a] << " = " << modes[b];
   EXPECT_EQ(bounce::readExr(dir_ / "window.exr").width, 96);
+}
+
+// Camera bookmarks and the VPL controls through a script on the Cornell box with the build's
+// bake: a bookmark saved at one view and gone back to after another gives that view's frame bit
+// for bit (and the other view's frame differs); `vpl-paths 200` and `vpl-clamp 0.03` give
+// bounce-render's frame with --vpl-paths 200 --vpl-clamp 0.03 (within 1e-3 + 1e-4 W/(sr·m²), as
+// the modes above), which differs from the bake's whole VPL set.
+TEST_F(ToolsTest, ViewerBookmarksReturnToTheirViewAndVplControlsMatchBounceRender) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path built =
+      fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
+  if (!fs::exists(built / "bake.json")) GTEST_SKIP() << "no build-step bake at " << built;
+  const auto shot = [&](const std::string& name) { return (dir_ / (name + ".exr")).string(); };
+  std::ofstream(dir_ / "session.txt")
+      << "panel off\nmode vpl\nview 0.28 0.27 -0.6 0.28 0.27 0.3\ncapture " << shot("a")
+      << "\nbookmark save 2\nview 0.1 0.45 -0.4 0.35 0.15 0.4\ncapture " << shot("b")
+      << "\nbookmark go 2\ncapture " << shot("a_again") << "\ncamera cornell\ncapture "
+      << shot("whole") << "\nvpl-paths 200\nvpl-clamp 0.03\ncapture " << shot("selected") << "\n";
+  const ToolRun r =
+      run("xvfb-run -a " + tool("bounce-view") + " " + content("cornell_box/cornell_box.gltf") +
+          " --width 64 --height 64 --script " + quote(dir_ / "session.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image a = bounce::readExr(shot("a"));
+  EXPECT_TRUE(bounce::readExr(shot("a_again")).pixels == a.pixels);
+  EXPECT_FALSE(bounce::readExr(shot("b")).pixels == a.pixels);
+
+  const ToolRun rendered =
+      run(tool("bounce-render") + " " + content("cornell_box/cornell_box.gltf") +
+          " --mode vpl --vpl-paths 200 --vpl-clamp 0.03 --width 64 --height 64 --out " +
+          quote(dir_ / "render.exr"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  EXPECT_NE(rendered.output.find("VPLs of 200 of the bake's"), std::string::npos)
+      << rendered.output;
+  const bounce::Image expected = bounce::readExr(dir_ / "render.exr");
+  const bounce::Image selected = bounce::readExr(shot("selected"));
+  ASSERT_EQ(selected.pixels.size(), expected.pixels.size());
+  int off = 0;
+  for (std::size_t i = 0; i < expected.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      off += std::abs(selected.pixels[i][c] - expected.pixels[i][c]) >
+             1e-3f * std::abs(expected.pixels[i][c]) + 1e-4f;
+  EXPECT_EQ(off, 0);
+  EXPECT_FALSE(bounce::readExr(shot("whole")).pixels == selected.pixels);
+}
+
+// A reference EXR beside the frame (script `reference FILE`, `compare split|difference|off`; the
+// panel and --reference the same): in the split capture the left half (x < 32 of 64) is the
+// frame's radiance and the right half the reference's, bit for bit, and the window shows the
+// right half as toneMap(reference) of the CPU (engine/image/tonemap.h) within one 8-bit step;
+// the difference capture is relativeDifferenceColour(frame, reference) per pixel; off is the
+// frame again. A missing reference stops the script naming the file.
+TEST_F(ToolsTest, ViewerShowsAReferenceSplitAndItsRelativeDifference) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const int size = 64;
+  bounce::Image reference(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)  // across the tone curve, rows told apart from columns
+      reference.at(x, y) = {2.0f * x / size, 0.5f * y / size, 0.05f + 0.01f * ((x + 3 * y) % 7)};
+  bounce::writeExr(dir_ / "reference.exr", reference);
+  const auto shot = [&](const std::string& name) { return (dir_ / name).string(); };
+  std::ofstream(dir_ / "session.txt")
+      << "panel off\ncamera cornell\ncapture " << shot("frame.exr") << "\nreference "
+      << shot("reference.exr") << "\ncapture " << shot("split.exr") << "\nwindow "
+      << shot("split_window.exr") << "\ncompare difference\ncapture " << shot("difference.exr")
+      << "\ncompare off\ncapture " << shot("off.exr") << "\n";
+  const std::string view = "xvfb-run -a " + tool("bounce-view") + " " +
+                           content("cornell_box/cornell_box.gltf") + " --width 64 --height 64";
+  const ToolRun r = run(view + " --script " + quote(dir_ / "session.txt"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bounce::Image frame = bounce::readExr(shot("frame.exr"));
+  const bounce::Image split = bounce::readExr(shot("split.exr"));
+  const bounce::Image shown = bounce::readExr(shot("split_window.exr"));
+  const bounce::Image difference = bounce::readExr(shot("difference.exr"));
+  ASSERT_EQ(split.width, size);
+  ASSERT_EQ(shown.width, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::vec3 expected = x < size / 2 ? frame.at(x, y) : reference.at(x, y);
+      EXPECT_EQ(split.at(x, y), expected) << x << "," << y;
+      const glm::vec3 display = bounce::toneMap(expected, 0.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(shown.at(x, y)[c], display[c], 1.01f / 255.0f) << x << "," << y;
+      const glm::vec3 colour = bounce::relativeDifferenceColour(frame.at(x, y), reference.at(x, y));
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(difference.at(x, y)[c], colour[c], 1e-4f) << x << "," << y;
+    }
+  EXPECT_TRUE(bounce::readExr(shot("off.exr")).pixels == frame.pixels);
+
+  std::ofstream(dir_ / "missing.txt") << "reference " << shot("none.exr") << "\n";
+  const ToolRun missing = run(view + " --script " + quote(dir_ / "missing.txt"));
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.output.find(shot("none.exr")), std::string::npos) << missing.output;
 }
 
 // The viewer's background re-bake (--script rebake / wait-bake, the panel's button): a copy of
@@ -516,6 +613,41 @@ TEST_F(ToolsTest, FindsTheBakeBesideTheSceneAndSaysWhich) {
       << stale.output;
   EXPECT_NE(stale.output.find("mode direct"), std::string::npos) << stale.output;
   EXPECT_TRUE(bounce::readExr(dir_ / "stale.exr").pixels == b.pixels);
+}
+
+// The viewer says "lighting needs to be rebuilt" for the bake of an edited scene (stale:
+// BakeSearch::stale), not for a damaged one (passed over too, but no re-bake of this scene's
+// edits is what it needs), nor for a matching one.
+TEST_F(ToolsTest, ViewerCallsTheBakeOfAnEditedSceneStaleAndADamagedOneNot) {
+  if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path sceneFile = dir_ / "plane.gltf";
+  fs::copy_file(fs::path(BOUNCE_SOURCE_DIR) / "content/point_over_plane/point_over_plane.gltf",
+                sceneFile);
+  const bounce::Scene scene = bounce::loadScene(sceneFile);
+  const std::string view = "xvfb-run -a " + tool("bounce-view") + " " + quote(sceneFile) +
+                           " --width 16 --height 16 --frames 1";
+  const std::string rebuild = "lighting needs to be rebuilt";
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  const ToolRun matching = run(view);
+  ASSERT_EQ(matching.exitCode, 0) << matching.output;
+  EXPECT_EQ(matching.output.find(rebuild), std::string::npos) << matching.output;
+
+  bounce::Scene edited = scene;
+  edited.materials.at(0).albedo *= 0.5f;
+  fs::remove_all(dir_ / "plane.bake");
+  writeConstantBake(dir_ / "plane.bake", scene, edited);  // baked for another albedo
+  const ToolRun stale = run(view);
+  ASSERT_EQ(stale.exitCode, 0) << stale.output;
+  EXPECT_NE(stale.output.find(rebuild), std::string::npos) << stale.output;
+
+  fs::remove_all(dir_ / "plane.bake");
+  writeConstantBake(dir_ / "plane.bake", scene, scene);
+  fs::remove(dir_ / "plane.bake" / "lightmap.exr");  // damaged
+  const ToolRun damaged = run(view);
+  ASSERT_EQ(damaged.exitCode, 0) << damaged.output;
+  EXPECT_NE(damaged.output.find("not using the bake"), std::string::npos) << damaged.output;
+  EXPECT_EQ(damaged.output.find(rebuild), std::string::npos) << damaged.output;
 }
 
 // A content scene finds the bake the build made for it (build/<preset>/content/...), next to the

@@ -177,6 +177,53 @@ TEST(VplRender, ClampReportSumsTheFrame) {
 
 INSTANTIATE_TEST_SUITE_P(ClampedAndUnclamped, VplRender, testing::Values(0.05f, 0.0f));
 
+// The viewer's VPL controls (ForwardRenderer::setVplSelection): the first P of the bake's N light
+// paths, each VPL's flux × N/P, clamped at another r, give at every pixel ρ/π times the CPU
+// gather of exactly those VPLs (built here from the definition, not by vpl_paths.h) at that r;
+// P = N at the bake's r is the bake's frame bit for bit.
+TEST(VplRender, SelectedPathsAndClampAreTheCpuGatherOfThoseVpls) {
+  VplScene s = vplScene(Mobility::Static);
+  for (std::size_t i = 0; i < s.vpls.size(); ++i) s.vpls[i].path = static_cast<uint32_t>(i / 2);
+  const uint64_t totalPaths = 130;  // 125 left VPLs, the last 5 escaped
+  Bake bake = vplBake(s, 0.05f);
+  bake.manifest.vpls->paths = totalPaths;
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Vpl;
+  settings.vpls.culling = false;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &bake);
+  const Image whole = renderer.renderImage(s.camera, kSize, kSize);
+
+  const uint64_t paths = 90;  // every wall VPL (paths 0..74) and part of the panel's
+  const float r = 0.12f;
+  renderer.setVplSelection(paths, r);
+  const ForwardRenderer::VplSelection selection = renderer.vplSelection();
+  EXPECT_EQ(selection.paths, paths);
+  EXPECT_EQ(selection.totalPaths, totalPaths);
+  EXPECT_EQ(selection.vplCount, 2 * paths);
+  EXPECT_EQ(selection.clampDistance, r);
+  EXPECT_EQ(selection.bakeClampDistance, 0.05f);
+  std::vector<Vpl> expected;
+  for (const Vpl& vpl : s.vpls)
+    if (vpl.path < paths) {
+      expected.push_back(vpl);
+      expected.back().flux *= static_cast<float>(totalPaths) / static_cast<float>(paths);
+    }
+  const Image image = renderer.renderImage(s.camera, kSize, kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const auto reflected = [&](glm::vec3 p) {
+        return glm::dvec3(kAlbedo) / kPi *
+               gatherVplIrradiance(expected, p, {0, 1, 0}, nullptr, r).irradiance;
+      };
+      expectClose(image.at(x, y), reflected(floorPoint(s.camera, kSize, kSize, x, y)),
+                  subpixelSpread(s, x, y, reflected), x, y, "selected VPLs");
+    }
+  renderer.setVplSelection(totalPaths, 0.05f);
+  EXPECT_TRUE(renderer.renderImage(s.camera, kSize, kSize).pixels == whole.pixels);
+  EXPECT_THROW(renderer.setVplSelection(paths, -1.0f), std::invalid_argument);
+}
+
 TEST(VplRender, CulledFrameIsTheCpuCut) {
   const VplScene s = vplScene(Mobility::Static);
   const float r = 0.05f;
