@@ -24,7 +24,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from gltf_writer import GltfWriter, cross, dot, normalize, sub, triangle_normal  # noqa: E402
+import gltf_writer  # noqa: E402
+from gltf_writer import GltfWriter, normalize, rotation_looking_along, sub  # noqa: E402
 
 HEIGHT = 2.6          # m, floor to ceiling
 ROOM_A = (0.0, 4.0)   # x extent of room A, m
@@ -58,45 +59,9 @@ def quad(a, b, c, d):
     return triangles
 
 
-def facing(triangles, outward):
-    """The triangles wound so their normals point along `outward`."""
-    return [t if dot(triangle_normal(t), outward) > 0 else [t[0], t[2], t[1]] for t in triangles]
-
-
 def box(lo, hi):
-    """A closed box, every face wound outwards."""
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    faces = [
-        (quad([x0, y0, z0], [x0, y1, z0], [x0, y1, z1], [x0, y0, z1]), [-1, 0, 0]),
-        (quad([x1, y0, z0], [x1, y1, z0], [x1, y1, z1], [x1, y0, z1]), [1, 0, 0]),
-        (quad([x0, y0, z0], [x1, y0, z0], [x1, y0, z1], [x0, y0, z1]), [0, -1, 0]),
-        (quad([x0, y1, z0], [x1, y1, z0], [x1, y1, z1], [x0, y1, z1]), [0, 1, 0]),
-        (quad([x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0]), [0, 0, -1]),
-        (quad([x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]), [0, 0, 1]),
-    ]
-    return [t for tris, n in faces for t in facing(tris, n)]
-
-
-def rotation_looking_along(forward):
-    """The unit quaternion (x, y, z, w) that turns a node's -Z to `forward` with +Y kept up."""
-    back = normalize([-c for c in forward])
-    right = normalize(cross([0.0, 1.0, 0.0], back))
-    up = cross(back, right)
-    # Columns right, up, back: the node's x, y, z axes in the world.
-    m = [[right[0], up[0], back[0]], [right[1], up[1], back[1]], [right[2], up[2], back[2]]]
-    trace = m[0][0] + m[1][1] + m[2][2]
-    if trace > 0:
-        s = 2.0 * math.sqrt(trace + 1.0)
-        return [(m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s, s / 4]
-    i = max(range(3), key=lambda k: m[k][k])
-    j, k = (i + 1) % 3, (i + 2) % 3
-    s = 2.0 * math.sqrt(1.0 + m[i][i] - m[j][j] - m[k][k])
-    q = [0.0, 0.0, 0.0, (m[k][j] - m[j][k]) / s]
-    q[i] = s / 4
-    q[j] = (m[j][i] + m[i][j]) / s
-    q[k] = (m[k][i] + m[i][k]) / s
-    return q
+    """A closed box of this scene's (subdivided) quads, every face wound outwards."""
+    return gltf_writer.box(lo, hi, quad)
 
 
 def rug_rows():
