@@ -2,7 +2,9 @@
 """Direct light in the Conference Room (8 ceiling panels in one mesh, 2 spots): mean absolute
 relative error of bounce-render --mode direct (1280x720 box-filtered to 320x180) against
 bounce-trace --direct-only, against the frame time, one point per method (shadow maps only;
-baked visibility at a texel size, labelled with its bake time).
+baked visibility at a texel size, labelled with its bake time); and, as triangles, the full
+frame against bounce-trace's full image for the default bake's baked visibility and for the
+panels' direct light baked into the lightmap (baked direct), which cannot be drawn apart.
 
 Usage: /usr/bin/python3 docs/charts/plot_direct_error_vs_time.py CSV PNG
 CSV: docs/charts/direct_error_vs_time.sh's (method,texel_m,bake_s,visibility_s,frame_ms,
@@ -30,13 +32,15 @@ def main():
         x = float(r["frame_ms"]) / 1000.0
         y = 100.0 * float(r["mean_abs_rel_error"])
         baked = r["method"] != "shadow maps"
+        full = "full frame" in r["method"]
         label = r["method"]
         if baked:
-            label += f", {100 * float(r['texel_m']):.1f} cm texels (bake {float(r['bake_s']):.0f} s, " \
-                     f"visibility {float(r['visibility_s']):.1f} s)"
+            label += f", {100 * float(r['texel_m']):.1f} cm texels (bake {float(r['bake_s']):.0f} s"
+            label += f", visibility {float(r['visibility_s']):.1f} s)" if not full else ")"
         else:
             label += " (3 area cubes, PCSS)"
-        ax.scatter([x], [y], s=60, marker="o" if baked else "s", label=label)
+        marker = "^" if full else ("o" if baked else "s")
+        ax.scatter([x], [y], s=60, marker=marker, label=label)
     ax.axhline(5.0, color="grey", linestyle="--", linewidth=1)
     ax.text(ax.get_xlim()[0], 5.3, " issue target 5%", color="grey", fontsize=8)
     ax.set_xlabel("frame time, s (1280x720, llvmpipe, 2 shared cores)")
