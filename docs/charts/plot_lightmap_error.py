@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Plot the rendered indirect frame's error against bake time (lightmap_error_vs_time.sh).
 
-Usage: plot_lightmap_error.py CSV PNG
-CSV: bench_indirect_accuracy's columns. One line per (texel budget, denoiser), one point per
+Usage: plot_lightmap_error.py CSV PNG [TITLE]
+CSV: bench_indirect_accuracy's columns. One line per (texel size, denoiser), one point per
 target error, labelled; the 5% goal as a line; the reference's noise allowance as a band.
+TITLE defaults to the Cornell box sweep's.
 """
 
 import csv
@@ -15,25 +16,25 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def main(csv_path, png_path):
+def main(csv_path, png_path, title="Cornell box, 64², labels: per-texel target error"):
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"plot_lightmap_error: {csv_path}: no data rows")
     series = {}
     for r in rows:
-        key = (int(r["texel_budget"]), float(r["texel_size_m"]), r["denoise"])
+        key = (float(r["texel_size_m"]), r["denoise"])
         series.setdefault(key, []).append(r)
     fig, ax = plt.subplots(figsize=(7.5, 5))
     styles = {"on": "-", "off": "--"}
     colours = {}
-    for (budget, texel, denoise), points in sorted(series.items()):
+    for (texel, denoise), points in sorted(series.items()):
         points.sort(key=lambda r: float(r["bake_s"]))
-        colour = colours.setdefault(budget, f"C{len(colours)}")
+        colour = colours.setdefault(texel, f"C{len(colours)}")
         x = [float(p["bake_s"]) for p in points]
         y = [100 * float(p["mean_abs_rel_error"]) for p in points]
         ax.plot(x, y, styles[denoise], marker="o", color=colour,
-                label=f"{budget} texels ({100 * texel:.1f} cm), denoiser {denoise}")
+                label=f"{100 * texel:.1f} cm texels, denoiser {denoise}")
         for p, xi, yi in zip(points, x, y):
             ax.annotate(f"{float(p['target_error']):g}", (xi, yi), textcoords="offset points",
                         xytext=(4, 4), fontsize=7, color=colour)
@@ -45,7 +46,7 @@ def main(csv_path, png_path):
     ax.set_xscale("log")
     ax.set_xlabel("bake time, s (atlas + bake, 2 cores, shared machine)")
     ax.set_ylabel("indirect frame: mean |ΔY|/Y vs path tracer, %")
-    ax.set_title("Cornell box, 64², labels: per-texel target error")
+    ax.set_title(title)
     ax.set_ylim(bottom=0)
     ax.legend(fontsize=8)
     fig.tight_layout()
@@ -53,6 +54,6 @@ def main(csv_path, png_path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:])
