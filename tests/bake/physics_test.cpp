@@ -55,16 +55,9 @@ TEST(BakePhysics, TexturedFurnaceBouncesTheTexturesMeanColour) {
   const float le = 1.0f;
   const glm::vec3 a(0.9f, 0.1f, 0.6f), b(0.1f, 0.5f, 0.2f), factor(0.9f);
   test::World world;
-  Texture stripes;
-  stripes.name = "stripes";
-  stripes.width = stripes.height = 256;
-  for (int y = 0; y < stripes.height; ++y)
-    for (int x = 0; x < stripes.width; ++x) stripes.texels.push_back(x % 4 == 0 ? b : a);
-  world.scene.textures.push_back(stripes);
-  const uint32_t m = test::addMaterial(world.scene, factor, glm::vec3(le));
-  world.scene.materials[m].albedoTexture = 0;
-  test::addInwardBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f), m);
-  for (Mesh& mesh : world.scene.meshes) mesh.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  test::addInwardTexturedBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f),
+                             test::addMaterial(world.scene, factor, glm::vec3(le)),
+                             test::stripedTexture(a, b));
   world.build();
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   const LightmapBake bake = bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout,

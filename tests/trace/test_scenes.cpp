@@ -51,6 +51,25 @@ void addInwardBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
           material);  // y = hi, faces −y
 }
 
+void addInwardTexturedBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material,
+                          Texture texture) {
+  scene.textures.push_back(std::move(texture));
+  scene.materials.at(material).albedoTexture = static_cast<uint32_t>(scene.textures.size() - 1);
+  const std::size_t first = scene.meshes.size();
+  addInwardBox(scene, lo, hi, material);
+  for (std::size_t m = first; m < scene.meshes.size(); ++m)
+    scene.meshes[m].uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+}
+
+Texture stripedTexture(glm::vec3 a, glm::vec3 b) {
+  Texture stripes;
+  stripes.name = "stripes";
+  stripes.width = stripes.height = 256;
+  for (int y = 0; y < stripes.height; ++y)
+    for (int x = 0; x < stripes.width; ++x) stripes.texels.push_back(x % 4 == 0 ? b : a);
+  return stripes;
+}
+
 World planeWorld(glm::vec3 albedo, glm::vec3 shadingNormal) {
   World world;
   const uint32_t m = addMaterial(world.scene, albedo);

@@ -25,6 +25,14 @@ void addQuad(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p
              uint32_t material);
 // An axis-aligned box whose six faces face inwards.
 void addInwardBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material);
+
+// A closed box as addInwardBox whose faces all show `texture` (added to the scene) once, uv0
+// (0, 0) to (1, 1) over each face, through `material`'s albedo (which multiplies it).
+void addInwardTexturedBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material,
+                          Texture texture);
+// 256 × 256 texels in stripes, every 4th column `b` and the others `a`: area mean (3a + b)/4,
+// while uv (0, 0), a corner between texels, reads (a + b)/2.
+Texture stripedTexture(glm::vec3 a, glm::vec3 b);
 // A pinhole camera at `eye` looking at `target`.
 Camera lookAt(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov);
 

@@ -81,16 +81,8 @@ TEST(VplEnergy, ClosedBoxPointLightFluxPerBounceIsPhi0RhoK) {
 TEST(VplEnergy, TexturedClosedBoxReflectsTheTexturesMeanColour) {
   const glm::vec3 a(0.9f, 0.1f, 0.6f), b(0.1f, 0.5f, 0.2f);
   test::World world;
-  Texture stripes;
-  stripes.name = "stripes";
-  stripes.width = stripes.height = 256;
-  for (int y = 0; y < stripes.height; ++y)
-    for (int x = 0; x < stripes.width; ++x) stripes.texels.push_back(x % 4 == 0 ? b : a);
-  world.scene.textures.push_back(stripes);
-  const uint32_t wall = addMaterial(world.scene, glm::vec3(1.0f));
-  world.scene.materials[wall].albedoTexture = 0;
-  addInwardBox(world.scene, glm::vec3(-1.0f), glm::vec3(1.0f), wall);
-  for (Mesh& mesh : world.scene.meshes) mesh.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  test::addInwardTexturedBox(world.scene, glm::vec3(-1.0f), glm::vec3(1.0f),
+                             addMaterial(world.scene, glm::vec3(1.0f)), test::stripedTexture(a, b));
   Light light;
   light.position = {0.2f, -0.1f, 0.3f};
   light.intensity = {1, 2, 3};
