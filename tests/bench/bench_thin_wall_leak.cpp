@@ -1,0 +1,113 @@
+// How much light crosses a wall thinner than a texel (docs/real_scenes.md, "Light through thin
+// walls"): a lit and a dark room, each 2 m × 2 m × 2.5 m, share ONE floor quad, ONE ceiling quad
+// and two side-wall quads that run through a dividing wall (a box t thick), as slabs and walls
+// of real levels do. A 10 W/sr point light hangs in the lit room; nothing can reach the dark
+// room but through the wall, so every pixel of it is exactly 0 in the path tracer. For each wall
+// thickness and texel size: a default bake (bakeScene, the texels asked), then the renderer's
+// full and indirect frames from a camera in the dark room facing the wall, and the lit room's
+// mean luminance from the mirror camera. Prints one CSV line per case: the dark room's largest
+// pixel and its 99th percentile, as fractions of the lit room's mean (goal: every pixel under
+// 1%).
+//
+//   bench_thin_wall_leak [--thickness M,...] [--texel-size M,...] [--size PIXELS] [--spp N]
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "gl/context.h"
+#include "image/luminance.h"
+#include "indirect_accuracy.h"
+#include "shadow_scenes.h"
+#include "test_scenes.h"
+
+namespace {
+
+using namespace bounce;
+
+Material matte(const char* name, float albedo) {
+  Material m;
+  m.name = name;
+  m.albedo = glm::vec3(albedo);
+  return m;
+}
+
+// x < −t/2: the lit room, x > t/2: the dark one; both 2 m deep (z ∈ [−1, 1]), 2.5 m high.
+Scene twoRooms(float t) {
+  Scene scene;
+  const Material white = matte("wall", 0.75f), floor = matte("floor", 0.5f);
+  const float h = 2.5f;
+  test::addQuad(scene, {-2, 0, 1}, {4, 0, 0}, {0, 0, -2}, floor);  // the floor, up, under the wall
+  test::addQuad(scene, {-2, h, -1}, {4, 0, 0}, {0, 0, 2}, white);  // the ceiling, down, over it
+  test::addQuad(scene, {-2, 0, -1}, {4, 0, 0}, {0, h, 0}, white);  // z = −1, facing +z, through it
+  test::addQuad(scene, {2, 0, 1}, {-4, 0, 0}, {0, h, 0}, white);  // z = +1, facing −z, through it
+  test::addQuad(scene, {-2, 0, 1}, {0, 0, -2}, {0, h, 0}, white);  // x = −2, facing +x
+  test::addQuad(scene, {2, 0, -1}, {0, 0, 2}, {0, h, 0}, white);   // x = +2, facing −x
+  test::addBox(scene, {-t / 2, 0, -1}, {t / 2, h, 1}, white);      // the dividing wall
+  scene.lights.push_back(test::pointAt({-1.0f, 2.0f, 0.3f}, 10.0f));
+  return scene;
+}
+
+struct Leak {
+  double largest = 0.0, p99 = 0.0;  // of the dark room's pixels, / the lit room's mean
+};
+
+Leak darkRoomLeak(const Image& dark, double litMean) {
+  std::vector<double> y(dark.pixels.size(), 0.0);
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = luminance(dark.pixels[i]) / litMean;
+  if (y.empty()) return {};
+  std::sort(y.begin(), y.end());
+  return {y[y.size() - 1], y[static_cast<std::size_t>(0.99 * static_cast<double>(y.size() - 1))]};
+}
+
+double meanLuminance(const Image& image) {
+  double sum = 0.0;
+  for (const glm::vec3& p : image.pixels) sum += luminance(p);
+  return sum / static_cast<double>(image.pixels.size());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<float> thicknesses = {0.005f, 0.02f, 0.05f}, texels = {0.025f, 0.05f, 0.1f};
+  int size = 96, spp = 1024;
+  CLI::App app{"Light that crosses a wall thinner than a texel, into a dark room."};
+  app.add_option("--thickness", thicknesses, "dividing wall thicknesses, m")->delimiter(',');
+  app.add_option("--texel-size", texels, "lightmap texel sizes, m")->delimiter(',');
+  app.add_option("--size", size, "frame width = height, pixels");
+  app.add_option("--spp", spp, "most samples per texel");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const auto context = gl::createOSMesaContext();
+    // The cameras stand 1.8 m from the wall at 1.2 m and look at its foot, seeing the floor, the
+    // ceiling and both side walls where they pass through it.
+    const Camera dark = test::lookingAt({1.9f, 1.2f, 0.0f}, {0.0f, 0.8f, 0.0f}, 1.4f);
+    const Camera lit = test::lookingAt({-1.9f, 1.2f, 0.0f}, {0.0f, 0.8f, 0.0f}, 1.4f);
+    std::printf(
+        "thickness_m,texel_m,bake_s,full_largest,full_p99,indirect_largest,indirect_p99,"
+        "lit_mean\n");
+    for (const float t : thicknesses)
+      for (const float texel : texels) {
+        const Scene scene = twoRooms(t);
+        SceneBakeSettings settings = test::lightmapOnlySettings();
+        settings.texelSize = texel;
+        settings.spp = spp;
+        const Bake bake = bakeScene(scene, settings).folder;
+        RendererSettings full;
+        full.mode = RenderMode::Full;
+        ForwardRenderer renderer(scene, gl::shaderDirectory(), full, &bake);
+        const double litMean = meanLuminance(renderer.renderImage(lit, size, size, 4));
+        const Leak f = darkRoomLeak(renderer.renderImage(dark, size, size, 4), litMean);
+        const Leak i = darkRoomLeak(test::renderIndirect(scene, bake, dark, size, size), litMean);
+        std::printf("%.3f,%.3f,%.1f,%.4f,%.4f,%.4f,%.4f,%.4f\n", static_cast<double>(t),
+                    static_cast<double>(texel), bake.manifest.measured.seconds.total, f.largest,
+                    f.p99, i.largest, i.p99, litMean);
+        std::fflush(stdout);
+      }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_thin_wall_leak: error: %s\n", e.what());
+    return 1;
+  }
+}
