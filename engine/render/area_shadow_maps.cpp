@@ -7,52 +7,84 @@
 #include "render/texture_units.h"
 
 namespace bounce {
-void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnings) {
-  if (!settings_.enabled) return;
-  const std::vector<AreaLight>& lights = scene.areaLights().lights;
-  for (const uint32_t i : pickShadowedAreaLights(lights, kMaxAreaShadows)) {
-    Cube cube;
-    cube.index = i;
-    cube.light = lights[i];
-    cubes_.push_back(std::move(cube));
-  }
-  if (lights.size() > cubes_.size())
-    warnings.push_back(std::to_string(lights.size() - cubes_.size()) + " area lights beyond the " +
-                       std::to_string(kMaxAreaShadows) +
-                       " most powerful have no shadow map: they shadow only static surfaces of a "
-                       "bake with their visibility (visibility.bin)");
-  if (!cubes_.empty()) sampler_.emplace();
-  place(scene);
+void AreaShadowMaps::add(const GpuScene& scene) {
+  if (!settings_.enabled || scene.areaLights().lights.empty()) return;
+  slots_ = kMaxAreaShadows;
+  sampler_.emplace();
 }
 
-void AreaShadowMaps::place(const GpuScene& scene) {
-  emitterVersion_ = scene.emitterVersion();
-  const AreaLightSet& set = scene.areaLights();
-  const Box sceneBox = scene.bounds();
-  for (Cube& cube : cubes_) {
-    // A moved instance is cut into the same lights (the rule is rigid-motion invariant) unless
-    // rounding changes a bit-equal edge: then the cube keeps its old light.
-    if (cube.index >= set.lights.size() || set.lights[cube.index].instance != cube.light.instance)
-      continue;
-    cube.light = set.lights[cube.index];
-    // The light's own instance is left out of its map (render), so its centre can see past it.
-    cube.origin = cube.light.centre;
-    cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
-    cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
-                           static_cast<int>(cube.light.first + cube.light.count));
-    int resolution = settings_.resolution;
-    // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
-    // scene's diagonal at the distance of its centre.
-    if (resolution <= 0)
-      resolution = defaultShadowResolution(cube.origin, sceneBox, 2.0f, 256, 1024);
-    if (resolution != cube.resolution) {
-      cube.texture.reset();
-      cube.texture.emplace(resolution);
-      cube.dynamicTexture.reset();
-      cube.resolution = resolution;
+AreaShadowReceivers AreaShadowMaps::receivers(const GpuScene& scene, const ViewVolume& view) const {
+  AreaShadowReceivers where;
+  const std::span<const GpuInstance> instances = scene.instances();
+  // A dynamic instance near the view: its box meets the visible volume's box (a caster just
+  // outside the frustum may still throw its shadow into it).
+  for (std::size_t i = 0; i < instances.size(); ++i)
+    if (instances[i].mobility == Mobility::Dynamic &&
+        !intersect(instances[i].worldBox, view.box).empty())
+      where.dynamics.push_back({instances[i].worldBox, static_cast<uint32_t>(i)});
+  // Static surfaces read the all-caster cubes of every light without baked visibility.
+  // Their surfaces lie in the static, non-emitting instances' boxes: points of each box's
+  // visible part stand for them (a light's mean over the air of the view would count the space
+  // around the light itself).
+  if (allCastersNeeded_ && bakedVisibilityLights_ < scene.areaLights().lights.size())
+    for (const GpuInstance& instance : instances) {
+      if (instance.mobility != Mobility::Static ||
+          scene.materials()[instance.material].emission != glm::vec3(0.0f))
+        continue;
+      const Box visible = intersect(instance.worldBox, view.box);
+      if (visible.empty() || !view.frustum.overlaps(visible)) continue;
+      for (const glm::vec3& p : viewSamplePoints(view.frustum, visible, 3))
+        where.viewPoints.push_back(p);
     }
-    if (dynamicCubes_ && !cube.dynamicTexture) cube.dynamicTexture.emplace(resolution);
+  where.bakedVisibilityLights = bakedVisibilityLights_;
+  where.bakedDirectSkipped = bakedDirectSkipped_;
+  return where;
+}
+
+void AreaShadowMaps::assign(const GpuScene& scene, const std::vector<uint32_t>& lights) {
+  const auto chosen = [&](std::size_t index) {
+    return std::find(lights.begin(), lights.end(), index) != lights.end();
+  };
+  std::vector<Cube> kept;  // a slot's cube is not assignable (GL textures): rebuild the list
+  for (Cube& cube : cubes_)
+    if (chosen(cube.index)) kept.push_back(std::move(cube));
+  cubes_ = std::move(kept);
+  for (const uint32_t l : lights) {
+    if (std::any_of(cubes_.begin(), cubes_.end(), [&](const Cube& c) { return c.index == l; }))
+      continue;
+    Cube cube;
+    cube.index = l;
+    cube.light = scene.areaLights().lights[l];
+    place(scene, cube);
+    cubes_.push_back(std::move(cube));
   }
+}
+
+void AreaShadowMaps::place(const GpuScene& scene, Cube& cube) const {
+  const AreaLightSet& set = scene.areaLights();
+  // A moved instance is cut into the same lights (the rule is rigid-motion invariant) unless
+  // rounding changes a bit-equal edge: then the cube keeps its old light.
+  if (cube.index >= set.lights.size() || set.lights[cube.index].instance != cube.light.instance)
+    return;
+  cube.light = set.lights[cube.index];
+  // The light's own instance is left out of its map (render), so its centre can see past it.
+  cube.origin = cube.light.centre;
+  cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
+  cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
+                         static_cast<int>(cube.light.first + cube.light.count));
+  int resolution = settings_.resolution;
+  // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
+  // scene's diagonal at the distance of its centre.
+  if (resolution <= 0)
+    resolution = defaultShadowResolution(cube.origin, scene.bounds(), 2.0f, 256, 1024);
+  if (resolution != cube.resolution) {
+    cube.texture.reset();
+    cube.texture.emplace(resolution);
+    cube.dynamicTexture.reset();
+    cube.resolution = resolution;
+  }
+  if (dynamicCubes_ && !cube.dynamicTexture) cube.dynamicTexture.emplace(resolution);
+  cube.faces.fill(FaceState::Stale);
 }
 
 bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
@@ -63,21 +95,48 @@ bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
   for (Cube& cube : cubes_) {
     cube.dynamicTexture.reset();
     if (enabled && cube.resolution > 0) cube.dynamicTexture.emplace(cube.resolution);
+    cube.faces.fill(FaceState::Stale);
   }
   return true;
 }
 
-ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view, float floor,
                                        gl::Program& depthProgram, gl::DepthTarget& target) {
   ShadowDrawCount count;
-  if (cubes_.empty() || !allCastersNeeded_) return count;
-  if (scene.emitterVersion() != emitterVersion_) place(scene);
+  if (slots_ == 0 || !allCastersNeeded_) {
+    choice_ = {};
+    return count;
+  }
+  const std::span<const GpuInstance> instances = scene.instances();
+  // Lights re-cut (an emitter moved) or any instance moved: every face is out of date.
+  bool moved = scene.emitterVersion() != emitterVersion_ || drawnModels_.size() != instances.size();
+  for (std::size_t i = 0; !moved && i < instances.size(); ++i)
+    moved = instances[i].model != drawnModels_[i];
+  if (moved) {
+    if (scene.emitterVersion() != emitterVersion_)
+      for (Cube& cube : cubes_) place(scene, cube);
+    for (Cube& cube : cubes_) cube.faces.fill(FaceState::Stale);
+    emitterVersion_ = scene.emitterVersion();
+    drawnModels_.clear();
+    for (const GpuInstance& instance : instances) drawnModels_.push_back(instance.model);
+  }
+  std::vector<uint32_t> held;
+  for (const Cube& cube : cubes_) held.push_back(static_cast<uint32_t>(cube.index));
+  const std::vector<float> contribution =
+      areaLightContributions(scene.areaLights(), receivers(scene, view));
+  choice_ = chooseShadowedAreaLights(contribution, slots_, floor, held);
+  assign(scene, choice_.lights);
+
   const Box sceneBox = scene.bounds();
   for (Cube& cube : cubes_) {
     for (int face = 0; face < 6; ++face) {
       const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
       cube.far = faceView.far;
       const bool reaches = view.mayReach(faceView.viewProjection, sceneBox);
+      FaceState& state = cube.faces[static_cast<std::size_t>(face)];
+      // Drawn stays valid out of view; cleared must be drawn once it can be seen.
+      if (state == FaceState::Drawn || (state == FaceState::Cleared && !reaches)) continue;
+      state = reaches ? FaceState::Drawn : FaceState::Cleared;
       // Every caster, then (dynamicCubes_) the dynamic ones alone.
       for (const bool dynamicOnly : {false, true}) {
         if (dynamicOnly && !(dynamicCubes_ && cube.dynamicTexture)) break;
@@ -92,7 +151,6 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
         depthProgram.set("uLightPosition", cube.origin);
         depthProgram.set("uFar", faceView.far);
         const Frustum frustum(faceView.viewProjection);
-        const std::span<const GpuInstance> instances = scene.instances();
         ++count.views;
         for (std::size_t i = 0; i < instances.size(); ++i) {
           if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
