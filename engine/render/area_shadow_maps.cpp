@@ -9,7 +9,7 @@
 namespace bounce {
 void AreaShadowMaps::add(const GpuScene& scene) {
   if (!settings_.enabled || scene.areaLights().lights.empty()) return;
-  slots_ = kMaxAreaShadows;
+  slots_ = areaShadowSlots(gl::Texture2D::maxFragmentUnits(), dynamicCubes_);
   sampler_.emplace();
 }
 
@@ -88,9 +88,9 @@ void AreaShadowMaps::place(const GpuScene& scene, Cube& cube) const {
 }
 
 bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
-  if (enabled &&
-      gl::Texture2D::maxFragmentUnits() < TextureUnit::kAreaDynamicShadow0 + kMaxAreaShadows)
-    return false;
+  const int slots = areaShadowSlots(gl::Texture2D::maxFragmentUnits(), enabled);
+  if (slots == 0) return false;
+  if (sampler_) slots_ = slots;  // add() found area lights (and shadows on)
   dynamicCubes_ = enabled;
   for (Cube& cube : cubes_) {
     cube.dynamicTexture.reset();
@@ -172,20 +172,21 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
                                 glm::vec3(0.0f));
   for (int slot = 0; slot < kMaxAreaShadows; ++slot) {
-    forward.set("uAreaShadowMap" + std::to_string(slot), TextureUnit::kAreaShadow0 + slot);
-    // Unused, they share the all-caster cubes' units (the same sampler type).
-    forward.set(
-        "uAreaDynamicShadowMap" + std::to_string(slot),
-        (dynamicCubes_ ? TextureUnit::kAreaDynamicShadow0 : TextureUnit::kAreaShadow0) + slot);
+    // Unused slots (beyond slots_) share slots 0..2's units, which every driver has (the same
+    // sampler type); unused dynamic-caster samplers share their slot's all-caster unit.
+    const int unit = areaShadowUnit(slot < slots_ ? slot : slot % kAreaShadowsWithin16Units, false);
+    forward.set("uAreaShadowMap" + std::to_string(slot), unit);
+    forward.set("uAreaDynamicShadowMap" + std::to_string(slot),
+                dynamicCubes_ && slot < slots_ ? areaShadowUnit(slot, true) : unit);
   }
   forward.set("uAreaDynamicShadows", dynamicCubes_ ? 1 : 0);
   for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
     const Cube& cube = cubes_[slot];
-    const int unit = TextureUnit::kAreaShadow0 + static_cast<int>(slot);
+    const int unit = areaShadowUnit(static_cast<int>(slot), false);
     cube.texture->bind(unit);
     sampler_->bind(unit);
     if (dynamicCubes_ && cube.dynamicTexture) {
-      const int dynamicUnit = TextureUnit::kAreaDynamicShadow0 + static_cast<int>(slot);
+      const int dynamicUnit = areaShadowUnit(static_cast<int>(slot), true);
       cube.dynamicTexture->bind(dynamicUnit);
       sampler_->bind(dynamicUnit);
     }

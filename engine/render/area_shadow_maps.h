@@ -18,11 +18,11 @@
 #include "render/area_shadow_budget.h"
 #include "render/gpu_scene.h"
 #include "render/shadow_map_geometry.h"
+#include "render/texture_units.h"
 
 namespace bounce {
 
-// Must match MAX_AREA_SHADOWS and AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl.
-constexpr int kMaxAreaShadows = 3;
+// Must match AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl (the slots: texture_units.h).
 constexpr int kAreaShadowSamples = 32;
 
 class AreaShadowMaps {
@@ -43,8 +43,9 @@ class AreaShadowMaps {
   void bind(gl::Program& forward) const;
   // With baked visibility the static surfaces already hold the static occluders' shadows; what
   // they still need from the maps is the dynamic instances' (V = V_baked · V_dynamic): on, each
-  // cube gets a second one of only the dynamic instances (texture units kAreaDynamicShadow0..).
-  // Returns false, changing nothing, when the driver lacks those units.
+  // cube gets a second one of only the dynamic instances (areaShadowUnit(slot, true)), which
+  // may leave room for fewer slots (areaShadowSlots). Returns false, changing nothing, when the
+  // driver lacks the units for even one.
   bool setDynamicCasterCubes(bool enabled);
   // Off, the all-caster cubes are not drawn (nothing reads them: every surface has baked
   // visibility and no dynamic instance exists); the lit pass is told there are none.
@@ -81,7 +82,7 @@ class AreaShadowMaps {
   ShadowSettings settings_;
   std::vector<Cube> cubes_;  // slot i's cube
   std::optional<gl::DepthValueSampler> sampler_;
-  int slots_ = 0;  // most cubes at once (texture units)
+  int slots_ = 0;  // most cubes at once: areaShadowSlots of the driver's texture units
   AreaShadowChoice choice_;
   std::vector<glm::mat4> drawnModels_;  // every instance's model when the faces were drawn
   int emitterVersion_ = -1;
