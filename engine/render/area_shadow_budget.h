@@ -33,6 +33,16 @@
 
 namespace bounce {
 
+// Slots of the shader's uniform arrays (MAX_AREA_SHADOWS in shaders/shadow_area.glsl: 32 light
+// points each, 96 vec3 per 3 slots of the fragment uniforms).
+constexpr int kMaxAreaShadows = 6;
+
+// How many cubes fit at once: six layers each in a depth array of at most `maxArrayLayers`
+// (GL_MAX_ARRAY_TEXTURE_LAYERS, ≥ 256 in GL 3.3), at most kMaxAreaShadows.
+constexpr int areaShadowSlotCapacity(int maxArrayLayers) {
+  return maxArrayLayers / 6 < kMaxAreaShadows ? maxArrayLayers / 6 : kMaxAreaShadows;
+}
+
 // Where the cubes are read, world metres.
 struct AreaShadowReceivers {
   struct Dynamic {

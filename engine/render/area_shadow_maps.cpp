@@ -8,8 +8,21 @@
 
 namespace bounce {
 void AreaShadowMaps::add(const GpuScene& scene) {
-  if (!settings_.enabled || scene.areaLights().lights.empty()) return;
-  slots_ = areaShadowSlots(gl::Texture2D::maxFragmentUnits(), dynamicCubes_);
+  const std::vector<AreaLight>& lights = scene.areaLights().lights;
+  if (!settings_.enabled || lights.empty()) return;
+  slots_ = std::min(areaShadowSlotCapacity(gl::DepthTextureArray::maxLayers()),
+                    static_cast<int>(lights.size()));
+  cubes_.resize(static_cast<std::size_t>(slots_));
+  // One resolution for every slot: the point lights' rule (shadow_map_geometry.h: texels no
+  // larger than 1/2048 of the scene's diagonal at the distance of its centre) at the light
+  // that needs the most.
+  resolution_ = settings_.resolution;
+  if (resolution_ <= 0)
+    for (const AreaLight& light : lights)
+      resolution_ = std::max(
+          resolution_, defaultShadowResolution(light.centre, scene.bounds(), 2.0f, 256, 1024));
+  maps_.emplace(resolution_, 6 * slots_);
+  if (dynamicCubes_) dynamic_.emplace(resolution_, 6 * slots_);
   sampler_.emplace();
 }
 
@@ -45,18 +58,20 @@ void AreaShadowMaps::assign(const GpuScene& scene, const std::vector<uint32_t>& 
   const auto chosen = [&](std::size_t index) {
     return std::find(lights.begin(), lights.end(), index) != lights.end();
   };
-  std::vector<Cube> kept;  // a slot's cube is not assignable (GL textures): rebuild the list
   for (Cube& cube : cubes_)
-    if (chosen(cube.index)) kept.push_back(std::move(cube));
-  cubes_ = std::move(kept);
+    if (cube.occupied && !chosen(cube.index)) cube.occupied = false;
   for (const uint32_t l : lights) {
-    if (std::any_of(cubes_.begin(), cubes_.end(), [&](const Cube& c) { return c.index == l; }))
+    if (std::any_of(cubes_.begin(), cubes_.end(),
+                    [&](const Cube& c) { return c.occupied && c.index == l; }))
       continue;
-    Cube cube;
-    cube.index = l;
-    cube.light = scene.areaLights().lights[l];
-    place(scene, cube);
-    cubes_.push_back(std::move(cube));
+    const auto free =
+        std::find_if(cubes_.begin(), cubes_.end(), [](const Cube& c) { return !c.occupied; });
+    if (free == cubes_.end()) break;  // cannot happen: at most slots_ are chosen
+    *free = Cube{};
+    free->occupied = true;
+    free->index = l;
+    free->light = scene.areaLights().lights[l];
+    place(scene, *free);
   }
 }
 
@@ -72,31 +87,16 @@ void AreaShadowMaps::place(const GpuScene& scene, Cube& cube) const {
   cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
   cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
                          static_cast<int>(cube.light.first + cube.light.count));
-  int resolution = settings_.resolution;
-  // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
-  // scene's diagonal at the distance of its centre.
-  if (resolution <= 0)
-    resolution = defaultShadowResolution(cube.origin, scene.bounds(), 2.0f, 256, 1024);
-  if (resolution != cube.resolution) {
-    cube.texture.reset();
-    cube.texture.emplace(resolution);
-    cube.dynamicTexture.reset();
-    cube.resolution = resolution;
-  }
-  if (dynamicCubes_ && !cube.dynamicTexture) cube.dynamicTexture.emplace(resolution);
   cube.faces.fill(FaceState::Stale);
 }
 
 bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
-  const int slots = areaShadowSlots(gl::Texture2D::maxFragmentUnits(), enabled);
-  if (slots == 0) return false;
-  if (sampler_) slots_ = slots;  // add() found area lights (and shadows on)
+  if (enabled && gl::Texture2D::maxFragmentUnits() <= TextureUnit::kAreaDynamicShadow0)
+    return false;
   dynamicCubes_ = enabled;
-  for (Cube& cube : cubes_) {
-    cube.dynamicTexture.reset();
-    if (enabled && cube.resolution > 0) cube.dynamicTexture.emplace(cube.resolution);
-    cube.faces.fill(FaceState::Stale);
-  }
+  dynamic_.reset();
+  if (enabled && maps_) dynamic_.emplace(resolution_, 6 * slots_);
+  for (Cube& cube : cubes_) cube.faces.fill(FaceState::Stale);
   return true;
 }
 
@@ -114,23 +114,27 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
     moved = instances[i].model != drawnModels_[i];
   if (moved) {
     if (scene.emitterVersion() != emitterVersion_)
-      for (Cube& cube : cubes_) place(scene, cube);
+      for (Cube& cube : cubes_)
+        if (cube.occupied) place(scene, cube);
     for (Cube& cube : cubes_) cube.faces.fill(FaceState::Stale);
     emitterVersion_ = scene.emitterVersion();
     drawnModels_.clear();
     for (const GpuInstance& instance : instances) drawnModels_.push_back(instance.model);
   }
   std::vector<uint32_t> held;
-  for (const Cube& cube : cubes_) held.push_back(static_cast<uint32_t>(cube.index));
+  for (const Cube& cube : cubes_)
+    if (cube.occupied) held.push_back(static_cast<uint32_t>(cube.index));
   const std::vector<float> contribution =
       areaLightContributions(scene.areaLights(), receivers(scene, view));
   choice_ = chooseShadowedAreaLights(contribution, slots_, floor, held);
   assign(scene, choice_.lights);
 
   const Box sceneBox = scene.bounds();
-  for (Cube& cube : cubes_) {
+  for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
+    Cube& cube = cubes_[slot];
+    if (!cube.occupied) continue;
     for (int face = 0; face < 6; ++face) {
-      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
+      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, resolution_);
       cube.far = faceView.far;
       const bool reaches = view.mayReach(faceView.viewProjection, sceneBox);
       FaceState& state = cube.faces[static_cast<std::size_t>(face)];
@@ -139,8 +143,8 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
       state = reaches ? FaceState::Drawn : FaceState::Cleared;
       // Every caster, then (dynamicCubes_) the dynamic ones alone.
       for (const bool dynamicOnly : {false, true}) {
-        if (dynamicOnly && !(dynamicCubes_ && cube.dynamicTexture)) break;
-        target.bind(dynamicOnly ? *cube.dynamicTexture : *cube.texture, face);
+        if (dynamicOnly && !dynamic_) break;
+        target.bind(dynamicOnly ? *dynamic_ : *maps_, 6 * static_cast<int>(slot) + face);
         gl::clearDepth();
         if (!reaches) continue;
         // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
@@ -171,35 +175,34 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   std::vector<glm::vec4> normals(kMaxAreaShadows, glm::vec4(0.0f));
   std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
                                 glm::vec3(0.0f));
-  for (int slot = 0; slot < kMaxAreaShadows; ++slot) {
-    // Unused slots (beyond slots_) share slots 0..2's units, which every driver has (the same
-    // sampler type); unused dynamic-caster samplers share their slot's all-caster unit.
-    const int unit = areaShadowUnit(slot < slots_ ? slot : slot % kAreaShadowsWithin16Units, false);
-    forward.set("uAreaShadowMap" + std::to_string(slot), unit);
-    forward.set("uAreaDynamicShadowMap" + std::to_string(slot),
-                dynamicCubes_ && slot < slots_ ? areaShadowUnit(slot, true) : unit);
+  forward.set("uAreaShadowMaps", TextureUnit::kAreaShadow0);
+  // Unused, it shares the all-caster array's unit (the same sampler type).
+  forward.set("uAreaDynamicShadowMaps",
+              dynamic_ ? TextureUnit::kAreaDynamicShadow0 : TextureUnit::kAreaShadow0);
+  forward.set("uAreaDynamicShadows", dynamic_ ? 1 : 0);
+  if (maps_) {
+    maps_->bind(TextureUnit::kAreaShadow0);
+    sampler_->bind(TextureUnit::kAreaShadow0);
   }
-  forward.set("uAreaDynamicShadows", dynamicCubes_ ? 1 : 0);
+  if (dynamic_) {
+    dynamic_->bind(TextureUnit::kAreaDynamicShadow0);
+    sampler_->bind(TextureUnit::kAreaDynamicShadow0);
+  }
+  int count = 0;  // one past the last occupied slot (empty ones keep rows (0, 0): no light)
   for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
     const Cube& cube = cubes_[slot];
-    const int unit = areaShadowUnit(static_cast<int>(slot), false);
-    cube.texture->bind(unit);
-    sampler_->bind(unit);
-    if (dynamicCubes_ && cube.dynamicTexture) {
-      const int dynamicUnit = areaShadowUnit(static_cast<int>(slot), true);
-      cube.dynamicTexture->bind(dynamicUnit);
-      sampler_->bind(dynamicUnit);
-    }
+    if (!cube.occupied) continue;
+    count = static_cast<int>(slot) + 1;
     origins[slot] = cube.origin;
     // The light's radius bounds the blocker search's reach (shaders/shadow_area.glsl, d_min).
-    params[slot] = glm::vec4(cube.far, static_cast<float>(cube.resolution), cube.light.radius,
+    params[slot] = glm::vec4(cube.far, static_cast<float>(resolution_), cube.light.radius,
                              settings_.filterRadius);
     rows[slot] = glm::vec2(cube.rows);
     normals[slot] = glm::vec4(cube.light.normal, cube.light.doubleSided ? 1.0f : 0.0f);
     std::copy(cube.points.begin(), cube.points.end(),
               points.begin() + static_cast<std::ptrdiff_t>(slot * kAreaShadowSamples));
   }
-  forward.set("uAreaShadowCount", allCastersNeeded_ ? static_cast<int>(cubes_.size()) : 0);
+  forward.set("uAreaShadowCount", allCastersNeeded_ ? count : 0);
   forward.set("uAreaShadowOrigin", std::span<const glm::vec3>(origins));
   forward.set("uAreaShadowParams", std::span<const glm::vec4>(params));
   forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));

@@ -1,5 +1,6 @@
 // Area-light shadows: for each area light (scene/area_lights.h) that brings the most light where
-// the cubes are read (area_shadow_budget.h, re-chosen every frame), a depth cube map from the
+// the cubes are read (area_shadow_budget.h, re-chosen every frame), a depth cube (six layers of
+// one depth array shared by every slot, cube_face.glsl) from the
 // light's centre storing distance/far (the point lights' depth pass, less the light's own
 // instance), read by shaders/shadow_area.glsl as plain distances (no comparison) for
 // percentage-closer soft shadows. The lights' unshadowed irradiance stays the exact polygon
@@ -18,11 +19,10 @@
 #include "render/area_shadow_budget.h"
 #include "render/gpu_scene.h"
 #include "render/shadow_map_geometry.h"
-#include "render/texture_units.h"
 
 namespace bounce {
 
-// Must match AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl (the slots: texture_units.h).
+// Must match AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl.
 constexpr int kAreaShadowSamples = 32;
 
 class AreaShadowMaps {
@@ -43,9 +43,8 @@ class AreaShadowMaps {
   void bind(gl::Program& forward) const;
   // With baked visibility the static surfaces already hold the static occluders' shadows; what
   // they still need from the maps is the dynamic instances' (V = V_baked · V_dynamic): on, each
-  // cube gets a second one of only the dynamic instances (areaShadowUnit(slot, true)), which
-  // may leave room for fewer slots (areaShadowSlots). Returns false, changing nothing, when the
-  // driver lacks the units for even one.
+  // cube gets a second one of only the dynamic instances (a second array, texture unit
+  // kAreaDynamicShadow0). Returns false, changing nothing, when the driver lacks that unit.
   bool setDynamicCasterCubes(bool enabled);
   // Off, the all-caster cubes are not drawn (nothing reads them: every surface has baked
   // visibility and no dynamic instance exists); the lit pass is told there are none.
@@ -62,27 +61,28 @@ class AreaShadowMaps {
  private:
   enum class FaceState : uint8_t { Stale, Cleared, Drawn };
   struct Cube {
+    bool occupied = false;
     std::size_t index = 0;  // into GpuScene::areaLights().lights
     AreaLight light;
     glm::vec3 origin{0.0f};         // the map's centre: the light's area-weighted centre
     std::vector<glm::vec3> points;  // kAreaShadowSamples points on the light, world metres
     glm::ivec2 rows{0};             // the light's rows [first, end) of the emitter table
-    std::optional<gl::DepthCubeMap> texture;
-    std::optional<gl::DepthCubeMap> dynamicTexture;  // the dynamic instances only
-    int resolution = 0;
     float far = 1.0f;
     std::array<FaceState, 6> faces{};
   };
   // Where the cubes are read this frame (area_shadow_budget.h).
   AreaShadowReceivers receivers(const GpuScene& scene, const ViewVolume& view) const;
-  // Gives the chosen lights slots: a light already holding one keeps it.
+  // Gives the chosen lights slots: a light already holding one keeps it (its layers stay).
   void assign(const GpuScene& scene, const std::vector<uint32_t>& lights);
   void place(const GpuScene& scene, Cube& cube) const;
 
   ShadowSettings settings_;
-  std::vector<Cube> cubes_;  // slot i's cube
+  std::vector<Cube> cubes_;                       // slot i: layers 6i..6i+5
+  std::optional<gl::DepthTextureArray> maps_;     // every caster
+  std::optional<gl::DepthTextureArray> dynamic_;  // the dynamic instances only
   std::optional<gl::DepthValueSampler> sampler_;
-  int slots_ = 0;  // most cubes at once: areaShadowSlots of the driver's texture units
+  int resolution_ = 0;  // texels per face side, every slot's
+  int slots_ = 0;       // most cubes at once (areaShadowSlotCapacity, at most the lights)
   AreaShadowChoice choice_;
   std::vector<glm::mat4> drawnModels_;  // every instance's model when the faces were drawn
   int emitterVersion_ = -1;

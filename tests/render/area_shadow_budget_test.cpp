@@ -2,11 +2,9 @@
 // irradiance from a square against its closed form, and the choice following a dynamic box
 // from lamp to lamp among stronger, distant lights.
 #include "render/area_shadow_budget.h"
-#include "render/texture_units.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -138,27 +136,12 @@ TEST(AreaShadowBudget, ViewPointsRankOnlyLightsWithoutBakedVisibility) {
   for (const float c : areaLightContributions(scene.set, receivers)) EXPECT_EQ(c, 0.0f);
 }
 
-// The slots follow the driver's texture units: 3 within GL 3.3's 16, up to 6 beyond, each with
-// a unit of its own (the dynamic-caster cubes' too, when drawn).
-TEST(AreaShadowSlots, FollowTheDriversTextureUnits) {
-  EXPECT_EQ(areaShadowSlots(16, false), 3);
-  EXPECT_EQ(areaShadowSlots(16, true), 0);  // no unit 17 for the dynamic-caster cubes
-  EXPECT_EQ(areaShadowSlots(20, true), 3);
-  EXPECT_EQ(areaShadowSlots(24, false), 6);
-  EXPECT_EQ(areaShadowSlots(24, true), 4);  // slot 4's dynamic cube would need unit 24
-  EXPECT_EQ(areaShadowSlots(32, true), 6);
-  // Every used unit is distinct and not one of the pass's other units.
-  std::vector<int> units;
-  for (int slot = 0; slot < kMaxAreaShadows; ++slot)
-    for (const bool dynamic : {false, true}) units.push_back(areaShadowUnit(slot, dynamic));
-  for (const int other : {TextureUnit::kAlbedo, TextureUnit::kEmitters, TextureUnit::kLightmap,
-                          TextureUnit::kLightmapCharts, TextureUnit::kLightTable,
-                          TextureUnit::kVplShadow, TextureUnit::kBakedVisibility})
-    units.push_back(other);
-  for (int i = 0; i < 6; ++i) units.push_back(TextureUnit::kSpotShadow0 + i);  // spot, point
-  units.push_back(TextureUnit::kDirectionalShadow);
-  std::sort(units.begin(), units.end());
-  EXPECT_EQ(std::adjacent_find(units.begin(), units.end()), units.end());
+// Six layers per cube in one depth array: GL 3.3's 256 layers hold every slot of the shader.
+TEST(AreaShadowSlots, SixLayersPerCubeUpToTheShadersSlots) {
+  EXPECT_EQ(areaShadowSlotCapacity(256), kMaxAreaShadows);
+  EXPECT_EQ(areaShadowSlotCapacity(6 * kMaxAreaShadows), kMaxAreaShadows);
+  EXPECT_EQ(areaShadowSlotCapacity(6 * kMaxAreaShadows - 1), kMaxAreaShadows - 1);
+  EXPECT_EQ(areaShadowSlotCapacity(5), 0);
 }
 
 }  // namespace
