@@ -49,6 +49,15 @@ AreaShadowReceivers AreaShadowMaps::receivers(const GpuScene& scene, const ViewV
       for (const glm::vec3& p : viewSamplePoints(view.frustum, visible, 3))
         where.viewPoints.push_back(p);
     }
+  // Every frame costs lights × points polygon evaluations: a scene of many instances keeps an
+  // even spread of at most kMaxViewPoints.
+  constexpr std::size_t kMaxViewPoints = 512;
+  if (where.viewPoints.size() > kMaxViewPoints) {
+    std::vector<glm::vec3> spread;
+    for (std::size_t k = 0; k < kMaxViewPoints; ++k)
+      spread.push_back(where.viewPoints[k * where.viewPoints.size() / kMaxViewPoints]);
+    where.viewPoints = std::move(spread);
+  }
   where.bakedVisibilityLights = bakedVisibilityLights_;
   where.bakedDirectSkipped = bakedDirectSkipped_;
   return where;
