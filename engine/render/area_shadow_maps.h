@@ -1,10 +1,10 @@
 // Area-light shadows: for each area light (scene/area_lights.h) that brings the most light where
-// the cubes are read (area_shadow_budget.h, re-chosen every frame), a depth cube (six layers of
-// one depth array shared by every slot, cube_face.glsl) from the
+// the cubes are read (area_shadow_budget.h, re-chosen every frame), a depth cube from the
 // light's centre storing distance/far (the point lights' depth pass, less the light's own
-// instance), read by shaders/shadow_area.glsl as plain distances (no comparison) for
-// percentage-closer soft shadows. The lights' unshadowed irradiance stays the exact polygon
-// integral of shaders/area_light.glsl; the map only scales it by the visible fraction of the light.
+// instance; six layers of one depth array shared by every slot, shaders/cube_face.glsl), read by
+// shaders/shadow_area.glsl as plain distances (no comparison) for percentage-closer soft
+// shadows. The lights' unshadowed irradiance stays the exact polygon integral of
+// shaders/area_light.glsl; the map only scales it by the visible fraction of the light.
 #pragma once
 
 #include <array>
