@@ -19,19 +19,20 @@
 // texel edge w = texelAngle·distance. d_min = max(light radius, d_R/5): blockers nearer the light
 // than that (penumbrae over 4× the light's size) are not searched for. Needs shadow_common.glsl.
 
-const int MAX_AREA_SHADOWS = 3;      // texture units kAreaShadow0.. (render/texture_units.h)
+#include "cube_face.glsl"
+
+const int MAX_AREA_SHADOWS = 6;      // kMaxAreaShadows (render/area_shadow_maps.h)
 const int AREA_SHADOW_SAMPLES = 32;  // K, points per light (kAreaShadowSamples)
 
-uniform int uAreaShadowCount;
-uniform samplerCube uAreaShadowMap0;  // distance from c / far, read raw (no comparison)
-uniform samplerCube uAreaShadowMap1;
-uniform samplerCube uAreaShadowMap2;
+uniform int uAreaShadowCount;  // slots [0, count) may hold a light (rows (0, 0): none)
+// Every slot's cube in one array, layer 6·slot + face (cube_face.glsl): distance from c / far,
+// read raw (no comparison). One texture unit and one fetch per lookup for any number of slots
+// (GLSL 3.30 cannot index an array of samplers by a variable).
+uniform sampler2DArray uAreaShadowMaps;
 // The same cubes with only the dynamic instances drawn (uAreaDynamicShadows): what a static
 // surface with baked visibility still needs from the maps.
 uniform bool uAreaDynamicShadows;
-uniform samplerCube uAreaDynamicShadowMap0;
-uniform samplerCube uAreaDynamicShadowMap1;
-uniform samplerCube uAreaDynamicShadowMap2;
+uniform sampler2DArray uAreaDynamicShadowMaps;
 uniform vec3 uAreaShadowOrigin[MAX_AREA_SHADOWS];  // c, metres
 // x: far (m), y: face size (texels), z: light radius (m), w: unused
 uniform vec4 uAreaShadowParams[MAX_AREA_SHADOWS];
@@ -43,15 +44,9 @@ uniform vec3 uAreaShadowPoints[MAX_AREA_SHADOWS * AREA_SHADOW_SAMPLES];  // x_k,
 // Distance (metres) from the light's centre to the nearest surface along `direction` (of the
 // dynamic instances alone when `dynamicOnly`).
 float areaShadowDistance(int light, vec3 direction, bool dynamicOnly) {
-  float stored;
-  if (dynamicOnly)
-    stored = light == 0   ? texture(uAreaDynamicShadowMap0, direction).r
-             : light == 1 ? texture(uAreaDynamicShadowMap1, direction).r
-                          : texture(uAreaDynamicShadowMap2, direction).r;
-  else
-    stored = light == 0   ? texture(uAreaShadowMap0, direction).r
-             : light == 1 ? texture(uAreaShadowMap1, direction).r
-                          : texture(uAreaShadowMap2, direction).r;
+  vec3 uvFace = cubeFaceUv(direction);
+  vec3 at = vec3(uvFace.xy, float(6 * light) + uvFace.z);
+  float stored = dynamicOnly ? texture(uAreaDynamicShadowMaps, at).r : texture(uAreaShadowMaps, at).r;
   return stored * uAreaShadowParams[light].x;
 }
 

@@ -165,6 +165,11 @@ int run(const Options& options) {
                  grid.clusters, static_cast<double>(grid.punctualEntries) / grid.clusters,
                  static_cast<double>(grid.areaEntries) / grid.clusters, grid.maxPunctual,
                  grid.maxArea, static_cast<double>(settings.lightCulling.irradianceFloor));
+  if (renderer.areaShadowSlots() > 0)
+    std::fprintf(
+        stderr, "bounce-render: %s\n",
+        bounce::describeAreaShadowChoice(renderer.areaShadowChoice(), renderer.areaShadowSlots())
+            .c_str());
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time.
     bounce::gl::RenderTarget target(options.width, options.height, options.msaa);

@@ -574,6 +574,19 @@ class Viewer {
       renderer_.setInstanceTransform(i, scene_.instances[i].transform);
   }
 
+  // The area-light cube budget, logged whenever its choice changes (the camera or a dynamic
+  // instance moved): which lights have a cube, what the rest bring.
+  void reportAreaShadowChoice() {
+    const bounce::AreaShadowChoice& choice = renderer_.areaShadowChoice();
+    if (renderer_.areaShadowSlots() == 0 ||
+        (choice.lights == reportedLights_ && choice.unshadowed == reportedUnshadowed_))
+      return;
+    reportedLights_ = choice.lights;
+    reportedUnshadowed_ = choice.unshadowed;
+    std::fprintf(stderr, "bounce-view: %s\n",
+                 bounce::describeAreaShadowChoice(choice, renderer_.areaShadowSlots()).c_str());
+  }
+
   void draw() {
     const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
     if (!target_ || target_->width() != size.x || target_->height() != size.y)
@@ -586,6 +599,7 @@ class Viewer {
       renderer_.setLightCulling(culling);
     }
     renderer_.render(fly_->camera(), *target_);
+    reportAreaShadowChoice();
     if (comparing()) {
       if (!compared_ || compared_->width() != size.x || compared_->height() != size.y)
         compared_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
@@ -645,6 +659,8 @@ class Viewer {
   std::optional<bounce::Bake> bake_;  // before renderer_, which reads it on construction
   std::filesystem::path bakeDir_;
   std::vector<std::string> bakeNotes_;
+  std::vector<uint32_t> reportedLights_;  // the area-light cube choice last logged
+  std::size_t reportedUnshadowed_ = static_cast<std::size_t>(-1);
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;

@@ -7,81 +7,153 @@
 #include "render/texture_units.h"
 
 namespace bounce {
-void AreaShadowMaps::add(const GpuScene& scene, std::vector<std::string>& warnings) {
-  if (!settings_.enabled) return;
+void AreaShadowMaps::add(const GpuScene& scene) {
   const std::vector<AreaLight>& lights = scene.areaLights().lights;
-  for (const uint32_t i : pickShadowedAreaLights(lights, kMaxAreaShadows)) {
-    Cube cube;
-    cube.index = i;
-    cube.light = lights[i];
-    cubes_.push_back(std::move(cube));
-  }
-  if (lights.size() > cubes_.size())
-    warnings.push_back(std::to_string(lights.size() - cubes_.size()) + " area lights beyond the " +
-                       std::to_string(kMaxAreaShadows) +
-                       " most powerful have no shadow map: they shadow only static surfaces of a "
-                       "bake with their visibility (visibility.bin)");
-  if (!cubes_.empty()) sampler_.emplace();
-  place(scene);
+  if (!settings_.enabled || lights.empty()) return;
+  slots_ = std::min(areaShadowSlotCapacity(gl::DepthTextureArray::maxLayers()),
+                    static_cast<int>(lights.size()));
+  cubes_.resize(static_cast<std::size_t>(slots_));
+  // One resolution for every slot: the point lights' rule (shadow_map_geometry.h: texels no
+  // larger than 1/2048 of the scene's diagonal at the distance of its centre) at the light
+  // that needs the most.
+  resolution_ = settings_.resolution;
+  if (resolution_ <= 0)
+    for (const AreaLight& light : lights)
+      resolution_ = std::max(
+          resolution_, defaultShadowResolution(light.centre, scene.bounds(), 2.0f, 256, 1024));
+  maps_.emplace(resolution_, 6 * slots_);
+  if (dynamicCubes_) dynamic_.emplace(resolution_, 6 * slots_);
+  sampler_.emplace();
 }
 
-void AreaShadowMaps::place(const GpuScene& scene) {
-  emitterVersion_ = scene.emitterVersion();
-  const AreaLightSet& set = scene.areaLights();
-  const Box sceneBox = scene.bounds();
-  for (Cube& cube : cubes_) {
-    // A moved instance is cut into the same lights (the rule is rigid-motion invariant) unless
-    // rounding changes a bit-equal edge: then the cube keeps its old light.
-    if (cube.index >= set.lights.size() || set.lights[cube.index].instance != cube.light.instance)
-      continue;
-    cube.light = set.lights[cube.index];
-    // The light's own instance is left out of its map (render), so its centre can see past it.
-    cube.origin = cube.light.centre;
-    cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
-    cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
-                           static_cast<int>(cube.light.first + cube.light.count));
-    int resolution = settings_.resolution;
-    // The point lights' rule (shadow_map_geometry.h): texels no larger than 1/2048 of the
-    // scene's diagonal at the distance of its centre.
-    if (resolution <= 0)
-      resolution = defaultShadowResolution(cube.origin, sceneBox, 2.0f, 256, 1024);
-    if (resolution != cube.resolution) {
-      cube.texture.reset();
-      cube.texture.emplace(resolution);
-      cube.dynamicTexture.reset();
-      cube.resolution = resolution;
+AreaShadowReceivers AreaShadowMaps::receivers(const GpuScene& scene, const ViewVolume& view) const {
+  AreaShadowReceivers where;
+  const std::span<const GpuInstance> instances = scene.instances();
+  // A dynamic instance near the view: its box meets the visible volume's box (a caster just
+  // outside the frustum may still throw its shadow into it).
+  for (std::size_t i = 0; i < instances.size(); ++i)
+    if (instances[i].mobility == Mobility::Dynamic &&
+        !intersect(instances[i].worldBox, view.box).empty())
+      where.dynamics.push_back({instances[i].worldBox, static_cast<uint32_t>(i)});
+  // Static surfaces read the all-caster cubes of every light without baked visibility.
+  // Their surfaces lie in the static, non-emitting instances' boxes: points of each box's
+  // visible part stand for them (a light's mean over the air of the view would count the space
+  // around the light itself).
+  if (allCastersNeeded_ && bakedVisibilityLights_ < scene.areaLights().lights.size())
+    for (const GpuInstance& instance : instances) {
+      if (instance.mobility != Mobility::Static ||
+          scene.materials()[instance.material].emission != glm::vec3(0.0f))
+        continue;
+      const Box visible = intersect(instance.worldBox, view.box);
+      if (visible.empty() || !view.frustum.overlaps(visible)) continue;
+      for (const glm::vec3& p : viewSamplePoints(view.frustum, visible, 3))
+        where.viewPoints.push_back(p);
     }
-    if (dynamicCubes_ && !cube.dynamicTexture) cube.dynamicTexture.emplace(resolution);
+  // Every frame costs lights × points polygon evaluations: a scene of many instances keeps an
+  // even spread of at most kMaxViewPoints.
+  constexpr std::size_t kMaxViewPoints = 512;
+  if (where.viewPoints.size() > kMaxViewPoints) {
+    std::vector<glm::vec3> spread;
+    for (std::size_t k = 0; k < kMaxViewPoints; ++k)
+      spread.push_back(where.viewPoints[k * where.viewPoints.size() / kMaxViewPoints]);
+    where.viewPoints = std::move(spread);
   }
+  where.bakedVisibilityLights = bakedVisibilityLights_;
+  where.bakedDirectSkipped = bakedDirectSkipped_;
+  return where;
+}
+
+void AreaShadowMaps::assign(const GpuScene& scene, const std::vector<uint32_t>& lights) {
+  const auto chosen = [&](std::size_t index) {
+    return std::find(lights.begin(), lights.end(), index) != lights.end();
+  };
+  for (Cube& cube : cubes_)
+    if (cube.occupied && !chosen(cube.index)) cube.occupied = false;
+  for (const uint32_t l : lights) {
+    if (std::any_of(cubes_.begin(), cubes_.end(),
+                    [&](const Cube& c) { return c.occupied && c.index == l; }))
+      continue;
+    const auto free =
+        std::find_if(cubes_.begin(), cubes_.end(), [](const Cube& c) { return !c.occupied; });
+    if (free == cubes_.end()) break;  // cannot happen: at most slots_ are chosen
+    *free = Cube{};
+    free->occupied = true;
+    free->index = l;
+    free->light = scene.areaLights().lights[l];
+    place(scene, *free);
+  }
+}
+
+void AreaShadowMaps::place(const GpuScene& scene, Cube& cube) const {
+  const AreaLightSet& set = scene.areaLights();
+  // A moved instance is cut into the same lights (the rule is rigid-motion invariant) unless
+  // rounding changes a bit-equal edge: then the cube keeps its old light.
+  if (cube.index >= set.lights.size() || set.lights[cube.index].instance != cube.light.instance)
+    return;
+  cube.light = set.lights[cube.index];
+  // The light's own instance is left out of its map (render), so its centre can see past it.
+  cube.origin = cube.light.centre;
+  cube.points = samplePoints(set, cube.index, kAreaShadowSamples);
+  cube.rows = glm::ivec2(static_cast<int>(cube.light.first),
+                         static_cast<int>(cube.light.first + cube.light.count));
+  cube.faces.fill(FaceState::Stale);
 }
 
 bool AreaShadowMaps::setDynamicCasterCubes(bool enabled) {
-  if (enabled &&
-      gl::Texture2D::maxFragmentUnits() < TextureUnit::kAreaDynamicShadow0 + kMaxAreaShadows)
+  if (enabled && gl::Texture2D::maxFragmentUnits() <= TextureUnit::kAreaDynamicShadow0)
     return false;
   dynamicCubes_ = enabled;
-  for (Cube& cube : cubes_) {
-    cube.dynamicTexture.reset();
-    if (enabled && cube.resolution > 0) cube.dynamicTexture.emplace(cube.resolution);
-  }
+  dynamic_.reset();
+  if (enabled && maps_) dynamic_.emplace(resolution_, 6 * slots_);
+  for (Cube& cube : cubes_) cube.faces.fill(FaceState::Stale);
   return true;
 }
 
-ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
+ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& view, float floor,
                                        gl::Program& depthProgram, gl::DepthTarget& target) {
   ShadowDrawCount count;
-  if (cubes_.empty() || !allCastersNeeded_) return count;
-  if (scene.emitterVersion() != emitterVersion_) place(scene);
+  if (slots_ == 0 || !allCastersNeeded_) {
+    choice_ = {};
+    return count;
+  }
+  const std::span<const GpuInstance> instances = scene.instances();
+  // Lights re-cut (an emitter moved) or any instance moved: every face is out of date.
+  bool moved = scene.emitterVersion() != emitterVersion_ || drawnModels_.size() != instances.size();
+  for (std::size_t i = 0; !moved && i < instances.size(); ++i)
+    moved = instances[i].model != drawnModels_[i];
+  if (moved) {
+    if (scene.emitterVersion() != emitterVersion_)
+      for (Cube& cube : cubes_)
+        if (cube.occupied) place(scene, cube);
+    for (Cube& cube : cubes_) cube.faces.fill(FaceState::Stale);
+    emitterVersion_ = scene.emitterVersion();
+    drawnModels_.clear();
+    for (const GpuInstance& instance : instances) drawnModels_.push_back(instance.model);
+  }
+  std::vector<uint32_t> held;
+  for (const Cube& cube : cubes_)
+    if (cube.occupied) held.push_back(static_cast<uint32_t>(cube.index));
+  const std::vector<float> contribution =
+      areaLightContributions(scene.areaLights(), receivers(scene, view));
+  choice_ = chooseShadowedAreaLights(contribution, slots_, floor, held);
+  assign(scene, choice_.lights);
+
   const Box sceneBox = scene.bounds();
-  for (Cube& cube : cubes_) {
+  for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
+    Cube& cube = cubes_[slot];
+    if (!cube.occupied) continue;
     for (int face = 0; face < 6; ++face) {
-      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, cube.resolution);
+      const ShadowView faceView = cubeFaceShadowView(cube.origin, face, sceneBox, resolution_);
       cube.far = faceView.far;
       const bool reaches = view.mayReach(faceView.viewProjection, sceneBox);
+      FaceState& state = cube.faces[static_cast<std::size_t>(face)];
+      // Drawn stays valid out of view; cleared must be drawn once it can be seen.
+      if (state == FaceState::Drawn || (state == FaceState::Cleared && !reaches)) continue;
+      state = reaches ? FaceState::Drawn : FaceState::Cleared;
       // Every caster, then (dynamicCubes_) the dynamic ones alone.
       for (const bool dynamicOnly : {false, true}) {
-        if (dynamicOnly && !(dynamicCubes_ && cube.dynamicTexture)) break;
-        target.bind(dynamicOnly ? *cube.dynamicTexture : *cube.texture, face);
+        if (dynamicOnly && !dynamic_) break;
+        target.bind(dynamicOnly ? *dynamic_ : *maps_, 6 * static_cast<int>(slot) + face);
         gl::clearDepth();
         if (!reaches) continue;
         // drawShadowCasters (shadow_casters.h) less the light's own instance: its surface passes
@@ -92,7 +164,6 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
         depthProgram.set("uLightPosition", cube.origin);
         depthProgram.set("uFar", faceView.far);
         const Frustum frustum(faceView.viewProjection);
-        const std::span<const GpuInstance> instances = scene.instances();
         ++count.views;
         for (std::size_t i = 0; i < instances.size(); ++i) {
           if (i == cube.light.instance || !frustum.overlaps(instances[i].worldBox)) continue;
@@ -113,34 +184,34 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   std::vector<glm::vec4> normals(kMaxAreaShadows, glm::vec4(0.0f));
   std::vector<glm::vec3> points(static_cast<std::size_t>(kMaxAreaShadows * kAreaShadowSamples),
                                 glm::vec3(0.0f));
-  for (int slot = 0; slot < kMaxAreaShadows; ++slot) {
-    forward.set("uAreaShadowMap" + std::to_string(slot), TextureUnit::kAreaShadow0 + slot);
-    // Unused, they share the all-caster cubes' units (the same sampler type).
-    forward.set(
-        "uAreaDynamicShadowMap" + std::to_string(slot),
-        (dynamicCubes_ ? TextureUnit::kAreaDynamicShadow0 : TextureUnit::kAreaShadow0) + slot);
+  forward.set("uAreaShadowMaps", TextureUnit::kAreaShadow0);
+  // Unused, it shares the all-caster array's unit (the same sampler type).
+  forward.set("uAreaDynamicShadowMaps",
+              dynamic_ ? TextureUnit::kAreaDynamicShadow0 : TextureUnit::kAreaShadow0);
+  forward.set("uAreaDynamicShadows", dynamic_ ? 1 : 0);
+  if (maps_) {
+    maps_->bind(TextureUnit::kAreaShadow0);
+    sampler_->bind(TextureUnit::kAreaShadow0);
   }
-  forward.set("uAreaDynamicShadows", dynamicCubes_ ? 1 : 0);
+  if (dynamic_) {
+    dynamic_->bind(TextureUnit::kAreaDynamicShadow0);
+    sampler_->bind(TextureUnit::kAreaDynamicShadow0);
+  }
+  int count = 0;  // one past the last occupied slot (empty ones keep rows (0, 0): no light)
   for (std::size_t slot = 0; slot < cubes_.size(); ++slot) {
     const Cube& cube = cubes_[slot];
-    const int unit = TextureUnit::kAreaShadow0 + static_cast<int>(slot);
-    cube.texture->bind(unit);
-    sampler_->bind(unit);
-    if (dynamicCubes_ && cube.dynamicTexture) {
-      const int dynamicUnit = TextureUnit::kAreaDynamicShadow0 + static_cast<int>(slot);
-      cube.dynamicTexture->bind(dynamicUnit);
-      sampler_->bind(dynamicUnit);
-    }
+    if (!cube.occupied) continue;
+    count = static_cast<int>(slot) + 1;
     origins[slot] = cube.origin;
     // The light's radius bounds the blocker search's reach (shaders/shadow_area.glsl, d_min).
-    params[slot] = glm::vec4(cube.far, static_cast<float>(cube.resolution), cube.light.radius,
+    params[slot] = glm::vec4(cube.far, static_cast<float>(resolution_), cube.light.radius,
                              settings_.filterRadius);
     rows[slot] = glm::vec2(cube.rows);
     normals[slot] = glm::vec4(cube.light.normal, cube.light.doubleSided ? 1.0f : 0.0f);
     std::copy(cube.points.begin(), cube.points.end(),
               points.begin() + static_cast<std::ptrdiff_t>(slot * kAreaShadowSamples));
   }
-  forward.set("uAreaShadowCount", allCastersNeeded_ ? static_cast<int>(cubes_.size()) : 0);
+  forward.set("uAreaShadowCount", allCastersNeeded_ ? count : 0);
   forward.set("uAreaShadowOrigin", std::span<const glm::vec3>(origins));
   forward.set("uAreaShadowParams", std::span<const glm::vec4>(params));
   forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));

@@ -94,6 +94,14 @@ ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
   return passes_->shadows.lastFrame();
 }
 
+const AreaShadowChoice& ForwardRenderer::areaShadowChoice() const {
+  return passes_->shadows.areaShadowChoice();
+}
+
+int ForwardRenderer::areaShadowSlots() const {
+  return passes_->shadows.areaShadowSlots();
+}
+
 void ForwardRenderer::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   passes_->scene.setInstanceTransform(index, transform);
   const std::span<const GpuInstance> instances = passes_->scene.instances();
@@ -150,6 +158,9 @@ void ForwardRenderer::setBake(const Bake& bake) {
   // With every surface reading baked visibility and nothing dynamic, the area cubes are unused.
   p.shadows.setAreaCubesNeeded(
       !(p.lightmap.visibilityCoversEveryInstance(p.scene) && !hasDynamicInstance(p.scene)));
+  // Which lights static surfaces still read cubes for: the area-shadow budget ranks the rest by
+  // the dynamic instances only.
+  p.shadows.setAreaBake(p.lightmap.bakedVisibilityLights(p.scene), true);
   // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
   // through cubes of their own.
   if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&
@@ -268,8 +279,11 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
+  // Without culling every light is shaded everywhere: any light that brings light competes.
+  const float areaFloor =
+      settings_.lightCulling.enabled ? settings_.lightCulling.irradianceFloor : 0.0f;
   p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
-                   cascadeCamera_ ? *cascadeCamera_ : camera, aspect);
+                   cascadeCamera_ ? *cascadeCamera_ : camera, aspect, areaFloor);
   followDynamicMoves();
   p.vpls.renderShadows(p.scene);
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,

@@ -21,6 +21,7 @@
 #include "bake_folder/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
+#include "render/area_shadow_budget.h"
 #include "render/light_culling.h"
 #include "render/render_mode.h"
 #include "render/shadow_settings.h"
@@ -140,6 +141,11 @@ class ForwardRenderer {
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;
+  // The last frame's area-light shadow budget: which lights had a cube, how many that reach
+  // where cubes are read had none and what they bring (area_shadow_budget.h); the most cubes
+  // the driver's texture units allow at once.
+  const AreaShadowChoice& areaShadowChoice() const;
+  int areaShadowSlots() const;
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t emitterTriangleCount() const;

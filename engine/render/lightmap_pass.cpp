@@ -125,6 +125,15 @@ bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {
   return true;
 }
 
+std::size_t LightmapPass::bakedVisibilityLights(const GpuScene& scene) const {
+  if (!visibility_) return 0;
+  for (std::size_t i = 0; i < scene.instances().size(); ++i)
+    if (scene.instances()[i].mobility == Mobility::Static &&
+        (i >= lightmapped_.size() || !lightmapped_[i]))
+      return 0;
+  return static_cast<std::size_t>(bakedLights_);
+}
+
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   // Without a bake only the modes that need none are drawn as asked.
   program.set(

@@ -35,6 +35,9 @@ class LightmapPass {
   // then no surface needs the area lights' all-caster cubes.
   bool visibilityCoversEveryInstance(const GpuScene& scene) const;
   const std::string& visibilityRefusal() const { return visibilityRefusal_; }
+  // The static area lights [0, n) whose visibility every static instance of `scene` reads from
+  // the bake (0 when some static instance has no atlas region, or without visibility).
+  std::size_t bakedVisibilityLights(const GpuScene& scene) const;
 
   // Per frame: mode, textures, atlas size.
   void bind(gl::Program& program, RenderMode mode) const;

@@ -25,7 +25,7 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
     if (light.type == LightType::Directional) lightSlot_[i] = directional_.add(light);
     if (lightSlot_[i] < 0) ++unshadowed;
   }
-  area_.add(scene, warnings);
+  area_.add(scene);
   if (unshadowed > 0)
     warnings.push_back(std::to_string(unshadowed) + " lights beyond the first " +
                        std::to_string(kMaxSpotShadows) + " spot, " +
@@ -42,13 +42,13 @@ void ShadowPass::setLight(std::size_t index, const Light& light) {
 }
 
 void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Camera& camera,
-                        float aspect) {
+                        float aspect, float areaFloor) {
   lastFrame_ = {};
   if (!settings_.enabled) return;
   lastFrame_ += spot_.render(scene, view, depth_, target_);
   lastFrame_ += point_.render(scene, view, depth_, target_);
   lastFrame_ += directional_.render(scene, camera, aspect, target_);
-  lastFrame_ += area_.render(scene, view, depth_, target_);
+  lastFrame_ += area_.render(scene, view, areaFloor, depth_, target_);
   gl::checkErrors("shadow pass");
 }
 

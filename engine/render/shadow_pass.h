@@ -27,13 +27,23 @@ class ShadowPass {
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
 
   // `view`: what the camera can see; maps that cannot reach it are not rendered. `camera` and
-  // the image's `aspect`: what the directional cascades are fitted to.
-  void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect);
+  // the image's `aspect`: what the directional cascades are fitted to. `areaFloor` (W/m²): an
+  // area light bringing less where the cubes are read gets no cube (area_shadow_budget.h).
+  void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect,
+              float areaFloor);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
   bool setDynamicCasterCubes(bool enabled) { return area_.setDynamicCasterCubes(enabled); }
   void setAreaCubesNeeded(bool needed) { area_.setAllCasterCubesNeeded(needed); }
+  // AreaShadowMaps::setBakedVisibilityLights and setBakedDirectSkipped.
+  void setAreaBake(std::size_t bakedVisibilityLights, bool bakedDirectSkipped) {
+    area_.setBakedVisibilityLights(bakedVisibilityLights);
+    area_.setBakedDirectSkipped(bakedDirectSkipped);
+  }
+  // Which area lights have a cube this frame and what the others bring; the most cubes at once.
+  const AreaShadowChoice& areaShadowChoice() const { return area_.lastChoice(); }
+  int areaShadowSlots() const { return area_.slots(); }
   // Punctual light `index` moved, turned or changed power (its kind stays): its map follows.
   void setLight(std::size_t index, const Light& light);
   // Per punctual light: its map's slot among its kind's maps, −1 for none.

@@ -11,10 +11,11 @@ struct TextureUnit {
   static constexpr int kSpotShadow0 = 2;        // sampler2DShadow × kMaxSpotShadows (2..5)
   static constexpr int kPointShadow0 = 6;       // samplerCubeShadow × kMaxPointShadows (6..7)
   static constexpr int kDirectionalShadow = 8;  // reserved: cascades (shadow_directional.glsl)
-  static constexpr int kAreaShadow0 = 9;        // reserved: area-light maps (shadow_area.glsl)
-  static constexpr int kLightmap = 12;          // sampler2D: baked irradiance (lightmap.glsl)
-  static constexpr int kLightmapCharts = 13;    // sampler2D: chart colours (lightmap.glsl)
-  static constexpr int kLightTable = 14;        // samplerBuffer: every light (render/light_table.h)
+  // sampler2DArray: every area-light slot's cube, 6 layers each (area_shadow_maps.h); 10, 11 free
+  static constexpr int kAreaShadow0 = 9;
+  static constexpr int kLightmap = 12;        // sampler2D: baked irradiance (lightmap.glsl)
+  static constexpr int kLightmapCharts = 13;  // sampler2D: chart colours (lightmap.glsl)
+  static constexpr int kLightTable = 14;      // samplerBuffer: every light (render/light_table.h)
   // sampler2DArrayShadow: the VPL groups' shadow cubes (vpl_shadows.glsl). Beyond the 16 units
   // GL 3.3 guarantees: VplPass turns VPL shadows off, with a warning, on a driver without it.
   static constexpr int kVplShadow =
@@ -23,8 +24,8 @@ struct TextureUnit {
   // 16: on a driver without it the sampler shares kLightmap's unit (both sampler2D) and
   // LightmapPass leaves the visibility out (area lights fall back to their shadow maps).
   static constexpr int kBakedVisibility = 16;
-  // samplerCube × kMaxAreaShadows (17..19): the area-light cubes of the dynamic instances alone,
-  // for static receivers whose static shadows are baked (area_shadow_maps.h).
+  // sampler2DArray: the area-light cubes of the dynamic instances alone, for static receivers
+  // whose static shadows are baked (area_shadow_maps.h).
   static constexpr int kAreaDynamicShadow0 = 17;
 };
 

@@ -1,0 +1,151 @@
+#include "render/area_shadow_budget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace bounce {
+namespace {
+
+float brightest(glm::vec3 c) {
+  return std::max({c.r, c.g, c.b, 0.0f});
+}
+
+// Lambert's vector irradiance Φ of triangle (a, b, c) seen from the origin, per unit radiance,
+// pointing from the origin towards the triangle: ½ Σ_edges θ_e·Γ_e, θ_e the angle the edge
+// subtends and Γ_e the unit normal of the plane through the origin and the edge.
+glm::dvec3 vectorIrradiance(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  if (la <= 0.0 || lb <= 0.0 || lc <= 0.0) return glm::dvec3(0.0);
+  const glm::dvec3 u[3] = {a / la, b / lb, c / lc};
+  glm::dvec3 phi(0.0);
+  for (int e = 0; e < 3; ++e) {
+    const glm::dvec3 cross = glm::cross(u[e], u[(e + 1) % 3]);
+    const double s = glm::length(cross);
+    if (s <= 1e-12) continue;
+    const double theta = std::atan2(s, glm::dot(u[e], u[(e + 1) % 3]));
+    phi += 0.5 * theta * (cross / s);
+  }
+  return glm::dot(phi, a + b + c) < 0.0 ? -phi : phi;
+}
+
+}  // namespace
+
+float largestIrradiance(const AreaLightSet& set, std::size_t light, glm::vec3 p) {
+  const AreaLight& l = set.lights[light];
+  glm::dvec3 sum(0.0);
+  float radiance = 0.0f;
+  for (uint32_t t = l.first; t < l.first + l.count; ++t) {
+    const EmitterTriangle& e = set.triangles[t];
+    const glm::vec3 front = glm::cross(e.v1 - e.v0, e.v2 - e.v0);
+    if (!e.doubleSided && glm::dot(front, p - e.v0) <= 0.0f) continue;  // behind it
+    const double l_t = brightest(e.radiance);
+    radiance = std::max(radiance, brightest(e.radiance));
+    sum += l_t * vectorIrradiance(glm::dvec3(e.v0 - p), glm::dvec3(e.v1 - p), glm::dvec3(e.v2 - p));
+  }
+  // A hemisphere of radiance L gives π·L: no surface gets more.
+  return std::min(static_cast<float>(glm::length(sum)), std::numbers::pi_v<float> * radiance);
+}
+
+std::vector<glm::vec3> viewSamplePoints(const Frustum& frustum, const Box& box, int perAxis) {
+  std::vector<glm::vec3> points;
+  if (box.empty() || perAxis <= 0) return points;
+  const glm::vec3 cell = (box.upper - box.lower) / static_cast<float>(perAxis);
+  for (int i = 0; i < perAxis; ++i)
+    for (int j = 0; j < perAxis; ++j)
+      for (int k = 0; k < perAxis; ++k) {
+        const glm::vec3 p = box.lower + cell * (glm::vec3(i, j, k) + 0.5f);
+        if (frustum.overlaps(Box{p, p})) points.push_back(p);
+      }
+  return points;
+}
+
+std::vector<float> areaLightContributions(const AreaLightSet& set,
+                                          const AreaShadowReceivers& receivers) {
+  std::vector<float> contribution(set.lights.size(), 0.0f);
+  for (std::size_t l = 0; l < set.lights.size(); ++l) {
+    const AreaLight& light = set.lights[l];
+    if (receivers.bakedDirectSkipped && light.bakeDirect) continue;
+    float c = 0.0f;
+    for (const AreaShadowReceivers::Dynamic& dynamic : receivers.dynamics) {
+      if (dynamic.instance == light.instance || dynamic.box.empty()) continue;
+      const Box& b = dynamic.box;
+      c = std::max(c, largestIrradiance(set, l, glm::clamp(light.centre, b.lower, b.upper)));
+      c = std::max(c, largestIrradiance(set, l, b.centre()));
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? b.upper.x : b.lower.x,
+                          (corner & 2) ? b.upper.y : b.lower.y,
+                          (corner & 4) ? b.upper.z : b.lower.z);
+        c = std::max(c, largestIrradiance(set, l, p));
+      }
+    }
+    if (l >= receivers.bakedVisibilityLights && !receivers.viewPoints.empty()) {
+      double sum = 0.0;
+      for (const glm::vec3& p : receivers.viewPoints) sum += largestIrradiance(set, l, p);
+      c = std::max(c, static_cast<float>(sum / static_cast<double>(receivers.viewPoints.size())));
+    }
+    contribution[l] = c;
+  }
+  return contribution;
+}
+
+AreaShadowChoice chooseShadowedAreaLights(std::span<const float> contributions, int slots,
+                                          float floor, std::span<const uint32_t> previous) {
+  AreaShadowChoice choice;
+  std::vector<uint32_t> order;
+  for (uint32_t l = 0; l < contributions.size(); ++l) {
+    choice.totalContribution += contributions[l];
+    if (contributions[l] >= floor && contributions[l] > 0.0f) order.push_back(l);
+  }
+  // A light holding a slot ranks 10% higher: a rival must bring clearly more to take it.
+  const auto rank = [&](uint32_t l) {
+    const bool held = std::find(previous.begin(), previous.end(), l) != previous.end();
+    return contributions[l] * (held ? 1.1f : 1.0f);
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return rank(a) > rank(b); });
+  const std::size_t kept = std::min(order.size(), static_cast<std::size_t>(std::max(slots, 0)));
+  choice.lights.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(kept));
+  for (std::size_t i = kept; i < order.size(); ++i) {
+    ++choice.unshadowed;
+    choice.unshadowedContribution += contributions[order[i]];
+    choice.largestUnshadowed = std::max(choice.largestUnshadowed, contributions[order[i]]);
+  }
+  // Largest contribution first (the 10% rule only decides membership).
+  std::stable_sort(choice.lights.begin(), choice.lights.end(),
+                   [&](uint32_t a, uint32_t b) { return contributions[a] > contributions[b]; });
+  return choice;
+}
+
+std::string describeAreaShadowChoice(const AreaShadowChoice& choice, int slots) {
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return std::string(text);
+  };
+  std::string s = "area-light shadow cubes: ";
+  s += std::to_string(choice.lights.size());
+  s += " of ";
+  s += std::to_string(slots);
+  s += " slots in use";
+  if (choice.unshadowed == 0) {
+    s += "; every area light bringing light where the cubes are read has one";
+    return s;
+  }
+  s += "; ";
+  s += std::to_string(choice.unshadowed);
+  s += " more lights bring light where the cubes are read but have none (dynamic instances and "
+       "surfaces without baked visibility get no shadow from them): together ";
+  s += number(choice.unshadowedContribution);
+  s += " W/m², the strongest ";
+  s += number(choice.largestUnshadowed);
+  s += " W/m², ";
+  s += number(choice.totalContribution > 0.0
+                  ? 100.0 * choice.unshadowedContribution / choice.totalContribution
+                  : 0.0);
+  s += "% of every area light's contribution there";
+  return s;
+}
+
+}  // namespace bounce
