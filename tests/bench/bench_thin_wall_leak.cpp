@@ -10,13 +10,17 @@
 // 1%).
 //
 //   bench_thin_wall_leak [--thickness M,...] [--texel-size M,...] [--size PIXELS] [--spp N]
+//                        [--image-dir DIR]   (each case's dark-room frames, 4 EV brighter)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "gl/context.h"
+#include "image/image_io.h"
 #include "image/luminance.h"
 #include "indirect_accuracy.h"
 #include "shadow_scenes.h"
@@ -72,11 +76,13 @@ double meanLuminance(const Image& image) {
 int main(int argc, char** argv) {
   std::vector<float> thicknesses = {0.005f, 0.02f, 0.05f}, texels = {0.025f, 0.05f, 0.1f};
   int size = 96, spp = 1024;
+  std::string imageDir;
   CLI::App app{"Light that crosses a wall thinner than a texel, into a dark room."};
   app.add_option("--thickness", thicknesses, "dividing wall thicknesses, m")->delimiter(',');
   app.add_option("--texel-size", texels, "lightmap texel sizes, m")->delimiter(',');
   app.add_option("--size", size, "frame width = height, pixels");
   app.add_option("--spp", spp, "most samples per texel");
+  app.add_option("--image-dir", imageDir, "write the dark room's full and indirect frames here");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto context = gl::createOSMesaContext();
@@ -98,8 +104,18 @@ int main(int argc, char** argv) {
         full.mode = RenderMode::Full;
         ForwardRenderer renderer(scene, gl::shaderDirectory(), full, &bake);
         const double litMean = meanLuminance(renderer.renderImage(lit, size, size, 4));
-        const Leak f = darkRoomLeak(renderer.renderImage(dark, size, size, 4), litMean);
-        const Leak i = darkRoomLeak(test::renderIndirect(scene, bake, dark, size, size), litMean);
+        const Image darkFull = renderer.renderImage(dark, size, size, 4);
+        const Image darkIndirect = test::renderIndirect(scene, bake, dark, size, size);
+        const Leak f = darkRoomLeak(darkFull, litMean), i = darkRoomLeak(darkIndirect, litMean);
+        if (!imageDir.empty()) {
+          char name[64];
+          std::snprintf(name, sizeof name, "wall%.3f_texel%.3f", static_cast<double>(t),
+                        static_cast<double>(texel));
+          writePng(std::filesystem::path(imageDir) / (std::string(name) + "_full.png"), darkFull,
+                   4.0f);
+          writePng(std::filesystem::path(imageDir) / (std::string(name) + "_indirect.png"),
+                   darkIndirect, 4.0f);
+        }
         std::printf("%.3f,%.3f,%.1f,%.4f,%.4f,%.4f,%.4f,%.4f\n", static_cast<double>(t),
                     static_cast<double>(texel), bake.manifest.measured.seconds.total, f.largest,
                     f.p99, i.largest, i.p99, litMean);
