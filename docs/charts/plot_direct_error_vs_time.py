@@ -38,7 +38,7 @@ def main():
             label += f", {100 * float(r['texel_m']):.1f} cm texels (bake {float(r['bake_s']):.0f} s"
             label += f", visibility {float(r['visibility_s']):.1f} s)" if not full else ")"
         else:
-            label += " (3 area cubes, PCSS)"
+            label += " (area cubes by contribution, PCSS)"
         marker = "^" if full else ("o" if baked else "s")
         ax.scatter([x], [y], s=60, marker=marker, label=label)
     ax.axhline(5.0, color="grey", linestyle="--", linewidth=1)
@@ -47,7 +47,7 @@ def main():
     ax.set_ylabel("mean abs. relative error vs path tracer, %")
     ax.set_ylim(0, None)
     ax.set_title("Conference Room direct light: error against frame time")
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=7, loc="center right")
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(sys.argv[2])
