@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
     RendererSettings settings;
     settings.mode = full ? RenderMode::Full : RenderMode::Indirect;
     ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &baked);
-    const Image rendered =
-        boxDownsample(renderer.renderImage(camera, box * size, box * height, 1), box);
+    const Image rendered = test::renderAreaAveraged(renderer, camera, size, height, box);
     const test::IndirectComparison c = test::compareIndirect(scene, camera, rendered, reference);
     if (!outDir.empty()) {
       writeExr(fs::path(outDir) / (frame + ".exr"), rendered);

@@ -80,8 +80,7 @@ Image renderDirect(const Scene& scene, const Bake* bake, const Camera& camera) {
   RendererSettings settings;
   settings.mode = RenderMode::Direct;
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, bake);
-  return boxDownsample(renderer.renderImage(camera, kWidth * kSupersample, kHeight * kSupersample),
-                       kSupersample);
+  return renderAreaAveraged(renderer, camera, kWidth, kHeight, kSupersample);
 }
 
 // The tracer's reference, 1024 spp: its noise adds ~1% to the mean error (referenceNoise).

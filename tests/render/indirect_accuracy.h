@@ -16,6 +16,7 @@
 
 #include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
+#include "image/image.h"
 #include "image/luminance.h"
 #include "pipeline/scene_bake.h"
 #include "pixel_surfaces.h"
@@ -69,6 +70,14 @@ inline Reference traceReference(const Scene& scene, const Camera& camera, int wi
 inline Reference traceIndirectReference(const Scene& scene, const Camera& camera, int width,
                                         int height, int spp, uint32_t seed = 1) {
   return traceReference(scene, camera, width, height, spp, PathSet::IndirectOnly, seed);
+}
+
+// The renderer's frame as the tracer's pixels see it: drawn at k× the resolution, one sample per
+// pixel, and box-filtered, so each pixel averages radiance over its area (multisampling alone
+// shades once per pixel). Needs a current GL context.
+inline Image renderAreaAveraged(ForwardRenderer& renderer, const Camera& camera, int width,
+                                int height, int k) {
+  return boxDownsample(renderer.renderImage(camera, k * width, k * height, 1), k);
 }
 
 // --mode indirect; needs a current GL context.

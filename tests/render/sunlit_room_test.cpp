@@ -24,9 +24,7 @@ IndirectComparison compareMode(const Scene& scene, const Bake& bake, const Camer
   settings.mode = mode;
   testContext();
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
-  // The tracer averages radiance over each pixel's area: so does the renderer's frame, drawn at
-  // 4× the resolution and box-filtered (multisampling alone shades once per pixel).
-  const Image rendered = boxDownsample(renderer.renderImage(camera, 4 * kWidth, 4 * kHeight, 1), 4);
+  const Image rendered = renderAreaAveraged(renderer, camera, kWidth, kHeight, 4);
   return compareIndirect(scene, camera, rendered,
                          traceReference(scene, camera, kWidth, kHeight, referenceSpp, paths));
 }
