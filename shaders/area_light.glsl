@@ -78,11 +78,9 @@ vec3 emitterTriangleIrradiance(int i, vec3 p, vec3 n) {
 // V_l its visible fraction: baked per lightmap texel for static lights on a static surface
 // (baked_visibility.glsl; times the dynamic instances' own cube when the light has one), else
 // from its shadow map when it has one (shadow_area.glsl), else 1
-// (ng: the receiver's geometric normal; atlasUv: its lightmap UV).
-vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, vec2 atlasUv) {
+// (ng: the receiver's geometric normal; baked: the bake's texels around its lightmap UV).
+vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked) {
   vec3 irradiance = vec3(0.0);
-  BakedVisibilityTexels baked;
-  if (uHasBakedVisibility) baked = bakedVisibilityTexels(atlasUv, uLightmapSize);
   int count = lights.all ? uAreaLightCount : lights.areaCount;
   for (int k = 0; k < count; ++k) {
     int l = areaLightIndex(lights, k);  // its own row: baked visibility and shadows by index

@@ -1,5 +1,7 @@
-// Baked visibility of the static area lights (engine/bake_folder/light_visibility.h): per lightmap
-// texel up to 4 (light, V) pairs, V the visible fraction of the light's unshadowed irradiance.
+// Baked visibility of the static lights (engine/bake_folder/light_visibility.h): per lightmap
+// texel up to 4 (light, V) pairs, V the visible fraction of the light's unshadowed irradiance;
+// lights 0 .. uBakedLightCount − 1 are the static area lights, the punctual ones follow
+// (PunctualLight.bakedIndex, light_table.glsl).
 // Read with the lightmap's bilinear weights at the fragment's atlas UV, each of the 4 texels
 // giving its own V for the light (its slot's, else its "every other light" slot's, else 1: the
 // light brought that texel nothing), so a light absent from one texel never borrows another
@@ -10,7 +12,7 @@
 
 uniform bool uHasBake;                // a bake is attached (baked-direct lights are not drawn)
 uniform bool uHasBakedVisibility;     // this draw: a static instance, the bake has visibility
-uniform int uBakedLightCount;         // static area lights the bake names (the first ones)
+uniform int uBakedLightCount;         // static area lights the bake names (the first indices)
 uniform sampler2D uBakedVisibility;
 
 const float VISIBILITY_OTHER_LIGHTS = -2.0;

@@ -9,10 +9,10 @@
 // Punctual lights are shadowed by their maps (shadows.glsl); area lights by their baked
 // visibility on static surfaces (baked_visibility.glsl), else by their maps (shadow_area.glsl:
 // percentage-closer soft shadows).
+#include "baked_visibility.glsl"
 #include "lights.glsl"
 #include "shadows.glsl"
 #include "lightmap.glsl"
-#include "baked_visibility.glsl"
 #include "area_light.glsl"
 #include "vpl.glsl"
 #include "vpl_shadows.glsl"
@@ -57,8 +57,10 @@ void main() {
   vec3 direct = vec3(0.0);
   if (modeUsesDirectLight()) {
     LightList lights = clusterLights(vWorldPosition);
-    direct = punctualIrradiance(lights, vWorldPosition, n, ng) +
-             areaIrradiance(lights, vWorldPosition, n, ng, vLightmapUv);
+    BakedVisibilityTexels baked;
+    if (uHasBakedVisibility) baked = bakedVisibilityTexels(vLightmapUv, uLightmapSize);
+    direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked) +
+             areaIrradiance(lights, vWorldPosition, n, ng, baked);
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);

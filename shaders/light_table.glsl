@@ -18,6 +18,7 @@ struct PunctualLight {
   vec3 direction;    // unit, the way light travels (spot, directional)
   int shadowSlot;    // its map among its kind's, −1: unshadowed
   vec3 power;        // intensity W/sr (point, spot) or irradiance W/m² (directional)
+  int bakedIndex;    // its index in the bake's visibility (baked_visibility.glsl), −1: none
   vec2 cosCone;      // spot: cos(inner), cos(outer)
 };
 
@@ -26,7 +27,7 @@ PunctualLight punctualLight(int i) {
   vec4 t1 = texelFetch(uLightTable, 4 * i + 1);
   vec4 t2 = texelFetch(uLightTable, 4 * i + 2);
   vec4 t3 = texelFetch(uLightTable, 4 * i + 3);
-  return PunctualLight(int(t0.w), t0.xyz, t1.xyz, int(t1.w), t2.rgb, t3.xy);
+  return PunctualLight(int(t0.w), t0.xyz, t1.xyz, int(t1.w), t2.rgb, int(t2.w), t3.xy);
 }
 
 // A range (first, count) stored in the cut section at `texel` (relative to the section).

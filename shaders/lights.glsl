@@ -6,6 +6,12 @@
 //   directional: E = E⊥ · cosθ                (E⊥ in W/m² on a surface facing the light)
 // with cosθ = max(n·l, 0), l the unit direction towards the light. Summed over the lights of
 // the fragment's cluster (light_grid.glsl), each read by its own index.
+//
+// A light that does not move, on a static surface of a bake with visibility, also has its
+// visible fraction baked per lightmap texel (baked_visibility.glsl): ray-traced against the
+// static scene, so it holds where shadow maps fail (contact under thin walls, acne, peter-
+// panning). The shadow map still draws the dynamic instances, so V = min(V_map, V_baked): each
+// is ≈ 0 where its occluders hide the light, and the baked one corrects the map's leaks.
 
 #include "light_table.glsl"
 #include "light_grid.glsl"
@@ -20,7 +26,16 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
   return t * t;
 }
 
-vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng) {
+// V of `light` at p: its shadow map's, and on a baked static surface the smaller of that and
+// its baked visible fraction.
+float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTexels baked) {
+  float v = lightVisibility(light, p, ng);
+  if (uHasBakedVisibility && light.bakedIndex >= 0)
+    v = min(v, bakedVisibility(baked, light.bakedIndex));
+  return v;
+}
+
+vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked) {
   vec3 irradiance = vec3(0.0);
   int count = lights.all ? uPunctualCount : lights.punctualCount;
   for (int k = 0; k < count; ++k) {
@@ -28,7 +43,8 @@ vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng) {
     if (light.power == vec3(0.0)) continue;
     if (light.type == LIGHT_DIRECTIONAL) {
       float cosTheta = max(dot(n, -light.direction), 0.0);
-      if (cosTheta > 0.0) irradiance += light.power * cosTheta * lightVisibility(light, p, ng);
+      if (cosTheta > 0.0)
+        irradiance += light.power * cosTheta * punctualVisibility(light, p, ng, baked);
       continue;
     }
     vec3 toLight = light.position - p;
@@ -38,7 +54,7 @@ vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng) {
     if (light.type == LIGHT_SPOT) intensity *= spotFalloff(light.cosCone, dot(-l, light.direction));
     float cosTheta = max(dot(n, l), 0.0);
     if (cosTheta > 0.0 && intensity != vec3(0.0))
-      irradiance += intensity * cosTheta / r2 * lightVisibility(light, p, ng);
+      irradiance += intensity * cosTheta / r2 * punctualVisibility(light, p, ng, baked);
   }
   return irradiance;
 }

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/task_arena.h>
 
+#include "scene/light_falloff.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"  // reverseBits: the base-2 radical inverse
@@ -24,14 +27,26 @@ struct LightEstimate {
 
 }  // namespace
 
-VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKernel& kernel,
-                                      const TexelCoverage& coverage,
+bool hasBakeableVisibility(const AreaLightSet& lights, std::span<const Light> punctual) {
+  if (lights.staticCount() > 0) return true;
+  return std::any_of(punctual.begin(), punctual.end(), [](const Light& light) {
+    return light.mobility == Mobility::Static && !light.bakeDirect;
+  });
+}
+
+VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, std::span<const Light> punctual,
+                                      const RayKernel& kernel, const TexelCoverage& coverage,
                                       const VisibilityBakeSettings& settings) {
   VisibilityTexels result;
   BakedVisibility& out = result.map;
   out.width = coverage.width;
   out.height = coverage.height;
   out.lightCount = static_cast<uint32_t>(lights.staticCount());
+  out.punctualCount = static_cast<uint32_t>(punctual.size());
+  if (out.indexCount() > kOtherLights - 1u)
+    throw std::invalid_argument(std::to_string(out.lightCount) + " static area lights and " +
+                                std::to_string(out.punctualCount) +
+                                " punctual lights: baked visibility can name at most 65533");
   out.texels.assign(coverage.texelCount(), TexelVisibility{});
   result.rays.assign(coverage.texelCount(), 0);
   result.irradiance.assign(coverage.texelCount(), 0.0);
@@ -42,7 +57,7 @@ VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKerne
   auto bakeTexel = [&](std::size_t texel) {
     const uint32_t begin = coverage.first[texel];
     const uint32_t points = coverage.first[texel + 1] - begin;
-    if (points == 0 || out.lightCount == 0) return;
+    if (points == 0 || out.indexCount() == 0) return;
     std::vector<LightEstimate> estimates;
     uint64_t texelRays = 0;
     for (uint32_t l = 0; l < out.lightCount; ++l) {
@@ -79,6 +94,45 @@ VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKerne
       const double e =
           luminance(lights.triangles[light.first].radiance) * light.area * sumW / samples;
       estimates.push_back({static_cast<uint16_t>(l), e, sumVisible / sumW});
+    }
+    const uint32_t pairs = std::min(static_cast<uint32_t>(samples), points);
+    for (std::size_t p = 0; p < punctual.size(); ++p) {
+      const Light& light = punctual[p];
+      if (light.mobility == Mobility::Dynamic || light.bakeDirect) continue;
+      const bool directional = light.type == LightType::Directional;
+      double sumW = 0.0, sumVisible = 0.0;
+      for (uint32_t k = 0; k < pairs; ++k) {
+        const TexelPoint& x = coverage.points[begin + k];
+        // d: towards the light; for a point or spot light its length is the distance r.
+        const glm::vec3 d = directional ? -light.direction : light.position - x.position;
+        const float r2 = glm::dot(d, d);
+        if (!(r2 > 0.0f)) continue;
+        const float cosX = glm::dot(x.shadingNormal, d) / std::sqrt(r2);
+        if (cosX <= 0.0f) continue;
+        double w = cosX;
+        if (!directional) {
+          w /= r2;
+          if (light.type == LightType::Spot)
+            w *= spotFalloff(light, glm::dot(-d, light.direction) / std::sqrt(r2));
+        }
+        if (w <= 0.0) continue;
+        Ray ray;
+        ray.origin = offsetRayOrigin(x.position, x.geometricNormal, d);
+        if (directional) {
+          ray.direction = d;  // unbounded: anything above the texel hides the sun
+        } else {
+          ray.direction = light.position - ray.origin;
+          ray.tmax = 1.0f - 1e-4f;
+        }
+        ++texelRays;
+        sumW += w;
+        if (!kernel.occluded(ray)) sumVisible += w;
+      }
+      if (sumW <= 0.0) continue;
+      const glm::vec3 power = directional ? light.irradiance : light.intensity;
+      const double e = luminance(power) * sumW / pairs;
+      if (!(e > 0.0)) continue;
+      estimates.push_back({out.punctualIndex(p), e, sumVisible / sumW});
     }
     result.rays[texel] = static_cast<uint32_t>(texelRays);
     if (estimates.empty()) return;
@@ -128,6 +182,7 @@ VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKerne
 VisibilityBakeReport summariseVisibility(const VisibilityTexels& texels) {
   VisibilityBakeReport report;
   report.lights = texels.map.lightCount;
+  report.punctualLights = texels.map.punctualCount;
   for (const uint32_t r : texels.rays) report.rays += r;
   for (const TexelVisibility& record : texels.map.texels) {
     report.texelsWithLight += record.light[0] != kNoLight ? 1 : 0;
@@ -141,12 +196,12 @@ VisibilityBakeReport summariseVisibility(const VisibilityTexels& texels) {
   return report;
 }
 
-BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
-                                    const TexelCoverage& coverage,
+BakedVisibility bakeLightVisibility(const AreaLightSet& lights, std::span<const Light> punctual,
+                                    const RayKernel& kernel, const TexelCoverage& coverage,
                                     const VisibilityBakeSettings& settings,
                                     VisibilityBakeReport& report) {
   const auto start = std::chrono::steady_clock::now();
-  VisibilityTexels texels = bakeVisibilityTexels(lights, kernel, coverage, settings);
+  VisibilityTexels texels = bakeVisibilityTexels(lights, punctual, kernel, coverage, settings);
   report = summariseVisibility(texels);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return std::move(texels.map);

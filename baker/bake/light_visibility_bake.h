@@ -1,5 +1,5 @@
-// Bakes the static area lights' visibility per lightmap texel (bake_folder/light_visibility.h): for
-// every covered texel and every static light l of scene/area_lights.h,
+// Bakes the static lights' visibility per lightmap texel (bake_folder/light_visibility.h): for
+// every covered texel and every static area light l of scene/area_lights.h,
 //   V_l = Σ_k w_k·vis(x_k, y_k) / Σ_k w_k,   w_k = max(n·(y_k − x_k), 0)·cosθ_y / r⁴,
 // a ratio estimator of E_shadowed / E_unshadowed over `samplesPerLight` pairs (x_k, y_k): x_k
 // cycles through the texel's sample points (texel_coverage.h, after the leak guard), y_k is
@@ -7,6 +7,12 @@
 // rotation per texel and light), and vis is one occlusion ray through the ray kernel. w_k is
 // the point-to-point form-factor kernel, so each pair counts for the irradiance it brings; the
 // unshadowed E_l ≈ lum(L_l)·A_l·Σ w_k / M ranks the lights for the texel's slots.
+//
+// A static punctual light (Scene::lights; not Light::mobility dynamic, not bakeDirect) has one
+// position or direction, so its pairs are the texel's sample points x_k themselves (at most
+// min(M, points)), with w_k = cosθ_x·falloff/r² (point, spot; spotFalloff of light_falloff.h) or
+// cosθ_x (directional), vis a ray towards the light (unbounded for a directional light), and
+// E = lum(I or E⊥)·Σ w_k / n. Area and punctual lights compete for the same slots by E.
 //
 // Each texel is computed from its own keys (seed, texel, light): the result does not depend on
 // the thread count, nor on the tiles the work is cut into (tile_work.h). Texels without sample
@@ -16,6 +22,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "bake/texel_coverage.h"
@@ -55,6 +62,7 @@ struct VisibilityTexels {
 
 struct VisibilityBakeReport {
   uint32_t lights = 0;            // static area lights
+  uint32_t punctualLights = 0;    // the scene's punctual lights (the static ones are baked)
   uint64_t rays = 0;              // occlusion rays traced
   uint64_t texelsWithLight = 0;   // covered texels some light reaches
   uint64_t texelsOverSlots = 0;   // of those, reached by more than kVisibilitySlots lights
@@ -63,16 +71,21 @@ struct VisibilityBakeReport {
 };
 
 // `lights` must hold the static lights first (scene/area_lights.h); only those are baked.
-VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, const RayKernel& kernel,
-                                      const TexelCoverage& coverage,
+// `punctual` is Scene::lights (all of them: the map names light i as lightCount + i).
+VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, std::span<const Light> punctual,
+                                      const RayKernel& kernel, const TexelCoverage& coverage,
                                       const VisibilityBakeSettings& settings);
+
+// Whether the visibility stage has anything to bake: a static area light or a static punctual
+// light whose direct light is drawn live.
+bool hasBakeableVisibility(const AreaLightSet& lights, std::span<const Light> punctual);
 
 // The report's counts from the texels, whichever tiles computed them (seconds left 0).
 VisibilityBakeReport summariseVisibility(const VisibilityTexels& texels);
 
 // Every tile at once: the map, with its report.
-BakedVisibility bakeLightVisibility(const AreaLightSet& lights, const RayKernel& kernel,
-                                    const TexelCoverage& coverage,
+BakedVisibility bakeLightVisibility(const AreaLightSet& lights, std::span<const Light> punctual,
+                                    const RayKernel& kernel, const TexelCoverage& coverage,
                                     const VisibilityBakeSettings& settings,
                                     VisibilityBakeReport& report);
 

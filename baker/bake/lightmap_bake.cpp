@@ -152,7 +152,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
 
   const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
   const AreaLightSet lights = sceneAreaLights(scene);
-  if (settings.visibility.enabled && lights.staticCount() > 0) {
+  if (settings.visibility.enabled && hasBakeableVisibility(lights, scene.lights)) {
     VisibilityBakeSettings visibility = settings.visibility;
     visibility.seed = settings.irradiance.seed;
     visibility.threads = settings.irradiance.threads;
@@ -163,7 +163,8 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     step = stage(kStageVisibility, tileRows(visibility.work, coverage.height));
     visibility.progress = step.get();
     share(TileStage::Visibility, visibility.work);
-    VisibilityTexels computed = bakeVisibilityTexels(lights, kernel, coverage, visibility);
+    VisibilityTexels computed =
+        bakeVisibilityTexels(lights, scene.lights, kernel, coverage, visibility);
     for (const TileRecord* record : restored[1])
       if (record)
         decodeVisibilityTile(record->source, record->bytes, coverage, grid.rect(record->tile),

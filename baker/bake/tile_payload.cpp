@@ -99,14 +99,15 @@ void decodeVisibilityTile(const std::filesystem::path& source, std::span<const u
     into.otherIrradiance[t] = r.f64("the other lights' irradiance");
     into.rays[t] = r.u32("the ray count");
     for (int s = 0; s < kVisibilitySlots; ++s)
-      if ((record.light[s] >= into.map.lightCount && record.light[s] != kNoLight &&
+      if ((record.light[s] >= into.map.indexCount() && record.light[s] != kNoLight &&
            record.light[s] != kOtherLights) ||
           !(record.visible[s] >= 0.0f && record.visible[s] <= 1.0f))
-        throw LoadError(source, "texel " + std::to_string(t) + " names light " +
-                                    std::to_string(record.light[s]) +
-                                    " with V = " + std::to_string(record.visible[s]) +
-                                    ": the scene has " + std::to_string(into.map.lightCount) +
-                                    " static area lights and V lies in [0, 1]");
+        throw LoadError(
+            source,
+            "texel " + std::to_string(t) + " names light " + std::to_string(record.light[s]) +
+                " with V = " + std::to_string(record.visible[s]) + ": the scene has " +
+                std::to_string(into.map.lightCount) + " static area lights and " +
+                std::to_string(into.map.punctualCount) + " punctual ones, and V lies in [0, 1]");
   });
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "atlas/atlas.h"
+#include "bake/light_visibility_bake.h"
 #include "bake/lightmap_bake.h"
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
@@ -86,7 +87,8 @@ nlohmann::json tileJournalKey(const Scene& scene, const SceneBakeSettings& setti
 std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSettings& settings) {
   std::vector<std::string> stages = {kStageAtlas, kStageRayKernel, kStageCoverage, kStageLeakGuard,
                                      kStageIrradiance};
-  if (LightmapBakeSettings{}.visibility.enabled && sceneAreaLights(scene).staticCount() > 0)
+  if (LightmapBakeSettings{}.visibility.enabled &&
+      hasBakeableVisibility(sceneAreaLights(scene), scene.lights))
     stages.push_back(kStageVisibility);
   if (settings.shards > 1 || (settings.exchange && !settings.exchange->keeper()))
     return stages;  // the merge, or the keeper, runs the rest
@@ -277,6 +279,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     const VisibilityBakeReport& v = bake.visibilityReport;
     manifest.visibility = BakeManifest::Visibility{
         .lights = v.lights,
+        .punctualLights = v.punctualLights,
         .slotsPerTexel = kVisibilitySlots,
         .samplesPerLight = static_cast<uint64_t>(settings.visibility.samplesPerLight),
         .texelsReached = v.texelsWithLight,
@@ -309,7 +312,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
         std::to_string(bake.visibilityReport.texelsOverSlots) + " of " +
         std::to_string(bake.visibilityReport.texelsWithLight) +
         " texels are reached by more than " + std::to_string(kVisibilitySlots) +
-        " static area lights: they name the " + std::to_string(kVisibilitySlots - 1) +
+        " static lights: they name the " + std::to_string(kVisibilitySlots - 1) +
         " brightest and share one visible fraction among the others (" +
         std::to_string(100.0 * bake.visibilityReport.otherLightsShare).substr(0, 4) +
         "% of the unshadowed irradiance)");

@@ -76,7 +76,9 @@ VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const Ray
 // moved; a dynamic object neither holds VPLs (they would stay behind when it moves) nor
 // shadows the paths here: each VPL records its path and the start of its incoming segment, and
 // the renderer cuts the paths the placed objects block (vpl_runtime/vpl_occlusion.h). The light the
-// dynamic objects reflect is left out. Meshes, materials and lights are kept as they are.
+// dynamic objects reflect is left out. Meshes and materials are kept as they are; lights keep
+// their places, but a light that moves (Light::mobility) is given zero power: nothing baked
+// holds its light.
 Scene staticScene(const Scene& scene);
 
 }  // namespace bounce

@@ -23,6 +23,7 @@ BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
   f.texelSize = bake.layout.texelSize;
   f.vpls = bake.vpls ? bake.vpls->size() : 0;
   f.bakedAreaLights = bake.visibility ? bake.visibility->lightCount : 0;
+  f.punctualLights = bake.visibility ? bake.visibility->punctualCount : 0;
   f.errorMap = bake.relativeError.has_value();
   // bounce-bake's manifests hash their settings; a hand-made one (tests, tools) records none of
   // these figures, and zeros would be shown as if measured.
@@ -66,9 +67,10 @@ std::vector<std::string> bakeFactLines(const BakeFacts& f) {
                            100.0 * *f.errorP95) +
                     (f.errorTarget ? format(" (target %.1f%%)", 100.0 * *f.errorTarget) : ""));
   if (f.vpls > 0) lines.push_back(format("%.0f VPLs", static_cast<double>(f.vpls)));
-  if (f.bakedAreaLights > 0)
-    lines.push_back(
-        format("baked visibility of %.0f area lights", static_cast<double>(f.bakedAreaLights)));
+  if (f.bakedAreaLights + f.punctualLights > 0)
+    lines.push_back(format("baked visibility of %.0f area and %.0f punctual lights",
+                           static_cast<double>(f.bakedAreaLights),
+                           static_cast<double>(f.punctualLights)));
   if (f.bakeSeconds) lines.push_back(format("baked in %.1f s", *f.bakeSeconds));
   if (f.ageSeconds) lines.push_back("written " + ageText(*f.ageSeconds) + " ago");
   return lines;

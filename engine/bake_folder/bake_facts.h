@@ -24,6 +24,7 @@ struct BakeFacts {
   std::optional<double> bakeSeconds;                       // wall time of the bake
   std::size_t vpls = 0;
   std::size_t bakedAreaLights = 0;   // static area lights with baked visibility
+  std::size_t punctualLights = 0;    // punctual lights the visibility indexes (static: baked)
   bool errorMap = false;             // error.exr present
   std::optional<double> ageSeconds;  // since bake.json was written
 };

@@ -274,6 +274,11 @@ std::optional<std::pair<std::string, std::string>> disagreement(const BakeManife
     return std::pair{kVisibilityFileName, "holds " + std::to_string(bake.visibility->lightCount) +
                                               " lights, bake.json says " +
                                               std::to_string(m.visibility->lights)};
+  if (bake.visibility && m.visibility->punctualLights != bake.visibility->punctualCount)
+    return std::pair{kVisibilityFileName, "holds " +
+                                              std::to_string(bake.visibility->punctualCount) +
+                                              " punctual lights, bake.json says " +
+                                              std::to_string(m.visibility->punctualLights)};
   return std::nullopt;
 }
 
@@ -385,6 +390,10 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
       throw LoadError(visibilityFile, "holds " + std::to_string(bake.visibility->lightCount) +
                                           " static area lights, " + scene.source + " has " +
                                           std::to_string(lights) + ": rebake");
+    if (bake.visibility->punctualCount != scene.lights.size())
+      throw LoadError(visibilityFile, "holds " + std::to_string(bake.visibility->punctualCount) +
+                                          " punctual lights, " + scene.source + " has " +
+                                          std::to_string(scene.lights.size()) + ": rebake");
   }
   if (const auto why = disagreement(manifest, bake)) throw LoadError(dir / why->first, why->second);
   return bake;

@@ -130,6 +130,7 @@ BakeManifest::Vpls readVpls(const Fields& f) {
 BakeManifest::Visibility readVisibility(const Fields& f) {
   BakeManifest::Visibility v;
   v.lights = f.count("lights");
+  v.punctualLights = f.count("punctualLights");
   v.slotsPerTexel = f.count("slotsPerTexel");
   v.samplesPerLight = f.count("samplesPerLight");
   v.texelsReached = f.count("texelsReached");
@@ -306,10 +307,12 @@ std::string manifestText(const BakeManifest& m) {
     json["visibility"] = {
         {"file", "visibility.bin"},
         {"what",
-         "per texel, the visible fraction V of each static area light's unshadowed irradiance "
-         "(bake_folder/light_visibility.h); the renderer multiplies its exact polygon irradiance "
-         "by it"},
+         "per texel, the visible fraction V of each static light's unshadowed irradiance "
+         "(bake_folder/light_visibility.h): lights 0..lights-1 are the static area lights, then "
+         "punctualLights the scene's point, spot and directional lights; the renderer multiplies "
+         "its exact unshadowed irradiance by it"},
         {"lights", v.lights},
+        {"punctualLights", v.punctualLights},
         {"slotsPerTexel", v.slotsPerTexel},
         {"samplesPerLight", v.samplesPerLight},
         {"texelsReached", v.texelsReached},

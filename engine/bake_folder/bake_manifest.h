@@ -103,8 +103,8 @@ struct BakeManifest {
   std::optional<Vpls> vpls;
   // Present exactly when the folder has a visibility.bin.
   struct Visibility {
-    uint64_t lights = 0, slotsPerTexel = 0, samplesPerLight = 0, texelsReached = 0,
-             texelsOverSlots = 0, rays = 0;
+    uint64_t lights = 0, punctualLights = 0, slotsPerTexel = 0, samplesPerLight = 0,
+             texelsReached = 0, texelsOverSlots = 0, rays = 0;
     double otherLightsShare = 0.0;
   };
   std::optional<Visibility> visibility;

@@ -1,9 +1,14 @@
-// Baked visibility of the static area lights (Unreal's stationary-light shadowing, Unity's
+// Baked visibility of the static lights (Unreal's stationary-light shadowing, Unity's
 // shadowmask): per lightmap texel, the fraction V ∈ [0, 1] of each static light's unshadowed
 // irradiance that reaches the texel's surface,
-//   V_l = ∫ E_l(x, y) vis(x, y) / ∫ E_l(x, y)   over the texel's covered area x and light l's y,
-// so that at run time the shader's exact unshadowed polygon irradiance E_l(p) times V_l is the
-// shadowed irradiance. GL-free; written and read by the bake folder (visibility.bin).
+//   V_l = ∫ E_l(x, y) vis(x, y) / ∫ E_l(x, y)   over the texel's covered area x and light l's y
+// (for a point, spot or directional light y is its one position or direction), so that at run
+// time the shader's exact unshadowed irradiance E_l(p) times V_l is the shadowed irradiance.
+// GL-free; written and read by the bake folder (visibility.bin).
+//
+// Light l names, for l < lightCount, static area light l (scene/area_lights.h order); for
+// lightCount ≤ l < lightCount + punctualCount, the scene's punctual light l − lightCount
+// (Scene::lights order; the dynamic ones and those whose direct light is baked are never named).
 //
 // A texel holds kVisibilitySlots (light, V) pairs, the lights that bring it the most unshadowed
 // irradiance first. A texel reached by more lights names the first kVisibilitySlots − 1 and
@@ -31,7 +36,12 @@ struct TexelVisibility {
 struct BakedVisibility {
   int width = 0, height = 0;            // the lightmap's
   uint32_t lightCount = 0;              // the scene's static area lights (scene/area_lights.h)
+  uint32_t punctualCount = 0;           // the scene's punctual lights (Scene::lights, all)
   std::vector<TexelVisibility> texels;  // width × height, rows top first
+
+  // The index light l of Scene::lights has in the texels' slots.
+  uint16_t punctualIndex(std::size_t l) const { return static_cast<uint16_t>(lightCount + l); }
+  uint32_t indexCount() const { return lightCount + punctualCount; }
 };
 
 }  // namespace bounce

@@ -19,7 +19,7 @@ static_assert(aggregateFieldCount<Texture>() == 4, "Texture changed: extend the 
 static_assert(aggregateFieldCount<Material>() == 6, "Material changed: extend the scene hash");
 static_assert(aggregateFieldCount<Mesh>() == 7, "Mesh changed: extend the scene hash");
 static_assert(aggregateFieldCount<Instance>() == 5, "Instance changed: extend the scene hash");
-static_assert(aggregateFieldCount<Light>() == 9, "Light changed: extend the scene hash");
+static_assert(aggregateFieldCount<Light>() == 10, "Light changed: extend the scene hash");
 static_assert(aggregateFieldCount<Scene>() == 8, "Scene changed: extend the scene hash");
 
 // FNV-1a (64 bit) over a little-endian serialisation, each array's length first so that moving
@@ -135,7 +135,8 @@ uint64_t hashLights(const std::vector<Light>& lights) {
     h.vec(light.irradiance);
     h.f32(light.innerConeAngle);
     h.f32(light.outerConeAngle);
-    h.u64(light.bakeDirect ? 1 : 0);  // whether its direct light is in the map
+    h.u64(light.bakeDirect ? 1 : 0);               // whether its direct light is in the map
+    h.u64(static_cast<uint64_t>(light.mobility));  // whether the bake holds its light
   }
   return h.state();
 }

@@ -13,7 +13,7 @@ namespace bounce {
 namespace {
 
 constexpr char kMagic[8] = {'B', 'N', 'C', 'V', 'I', 'S', 'I', 'B'};
-constexpr std::size_t kHeaderBytes = 24;
+constexpr std::size_t kHeaderBytes = 28;
 constexpr std::size_t kTexelBytes = 2 * kVisibilitySlots + 4 * kVisibilitySlots;
 
 void putU16(std::vector<unsigned char>& out, std::size_t at, uint16_t v) {
@@ -41,6 +41,7 @@ std::vector<unsigned char> encodeVisibility(const BakedVisibility& visibility) {
   putU32(out, 12, static_cast<uint32_t>(visibility.width));
   putU32(out, 16, static_cast<uint32_t>(visibility.height));
   putU32(out, 20, visibility.lightCount);
+  putU32(out, 24, visibility.punctualCount);
   for (std::size_t t = 0; t < visibility.texels.size(); ++t) {
     const std::size_t at = kHeaderBytes + kTexelBytes * t;
     for (int s = 0; s < kVisibilitySlots; ++s) {
@@ -73,6 +74,11 @@ BakedVisibility decodeVisibility(const std::filesystem::path& file,
   v.width = width;
   v.height = height;
   v.lightCount = getU32(bytes, 20);
+  v.punctualCount = getU32(bytes, 24);
+  if (uint64_t{v.lightCount} + v.punctualCount > kOtherLights - 1u)
+    throw LoadError(file, std::to_string(v.lightCount) + " area and " +
+                              std::to_string(v.punctualCount) +
+                              " punctual lights: at most 65533 in all can be named");
   const uint64_t texels = static_cast<uint64_t>(width) * static_cast<uint64_t>(height);
   const uint64_t expected = kHeaderBytes + kTexelBytes * texels;
   if (bytes.size() != expected)
@@ -88,9 +94,9 @@ BakedVisibility decodeVisibility(const std::filesystem::path& file,
       texel.light[s] = getU16(bytes, at + 2 * s);
       texel.visible[s] = std::bit_cast<float>(getU32(bytes, at + 2 * kVisibilitySlots + 4 * s));
       const uint16_t l = texel.light[s];
-      if (l != kNoLight && l != kOtherLights && l >= v.lightCount)
+      if (l != kNoLight && l != kOtherLights && l >= v.indexCount())
         throw LoadError(
-            file, which + "light " + std::to_string(l) + " of " + std::to_string(v.lightCount));
+            file, which + "light " + std::to_string(l) + " of " + std::to_string(v.indexCount()));
       if (!(texel.visible[s] >= 0.0f && texel.visible[s] <= 1.0f))
         throw LoadError(file, which + "visible fraction is not in [0, 1]");
       for (int r = 0; r < s; ++r)

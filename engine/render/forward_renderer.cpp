@@ -169,6 +169,7 @@ void ForwardRenderer::setBake(const Bake& bake) {
         "dynamic instances cast no area-light shadows on baked static surfaces: the driver has "
         "too few fragment texture units");
   p.lights.setBakedDirectInLightmap(true);
+  p.lights.setBakedVisibility(p.lightmap.bakedLightCount(), p.lightmap.bakedPunctualCount());
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {
     const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifest);

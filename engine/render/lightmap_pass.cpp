@@ -85,6 +85,7 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
 void LightmapPass::attachVisibility(const Bake& bake) {
   visibility_.reset();
   bakedLights_ = 0;
+  bakedPunctual_ = 0;
   visibilityRefusal_.clear();
   if (!bake.visibility) return;
   const BakedVisibility& v = *bake.visibility;
@@ -116,6 +117,7 @@ void LightmapPass::attachVisibility(const Bake& bake) {
   }
   visibility_.emplace(2 * v.width, v.height, table);
   bakedLights_ = static_cast<int>(v.lightCount);
+  bakedPunctual_ = v.punctualCount;
 }
 
 bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {

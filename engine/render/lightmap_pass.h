@@ -38,6 +38,10 @@ class LightmapPass {
   // The static area lights [0, n) whose visibility every static instance of `scene` reads from
   // the bake (0 when some static instance has no atlas region, or without visibility).
   std::size_t bakedVisibilityLights(const GpuScene& scene) const;
+  // The visibility's area lights (its first indices) and the punctual lights that follow them;
+  // 0 and 0 without visibility.
+  int bakedLightCount() const { return bakedLights_; }
+  std::size_t bakedPunctualCount() const { return bakedPunctual_; }
 
   // Per frame: mode, textures, atlas size.
   void bind(gl::Program& program, RenderMode mode) const;
@@ -58,6 +62,7 @@ class LightmapPass {
   std::optional<gl::Texture2D> validityColours_;  // the same, sampled / filled / padding
   std::optional<gl::Texture2D> visibility_;  // bake_folder/light_visibility.h as 2·W × H RGBA32F
   int bakedLights_ = 0;                      // static area lights the visibility names
+  std::size_t bakedPunctual_ = 0;            // punctual lights it names after them
   glm::vec2 size_{1.0f};
   float targetTexelsPerMetre_ = 1.0f;  // 1 / the layout's texel size (the texel-density view)
   std::vector<uint8_t> lightmapped_;   // per instance

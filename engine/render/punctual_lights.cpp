@@ -20,7 +20,20 @@ float shaderLightType(LightType type) {
 
 }  // namespace
 
-PunctualLights::PunctualLights(const Scene& scene) : lights_(scene.lights) {}
+PunctualLights::PunctualLights(const Scene& scene) : lights_(scene.lights), baked_(scene.lights) {}
+
+int PunctualLights::bakedIndex(std::size_t i) const {
+  if (i >= bakedCount_ || i >= baked_.size()) return -1;
+  const Light& now = lights_[i];
+  const Light& then = baked_[i];
+  if (now.mobility != Mobility::Static || now.bakeDirect) return -1;
+  // V depends on where the light is (point, spot) or the way it shines (directional, and a
+  // spot's falloff over a texel); not on its power.
+  if (now.position != then.position || now.direction != then.direction ||
+      now.innerConeAngle != then.innerConeAngle || now.outerConeAngle != then.outerConeAngle)
+    return -1;
+  return bakedFirst_ + static_cast<int>(i);
+}
 
 glm::vec3 PunctualLights::drawnPower(std::size_t i) const {
   const Light& light = lights_[i];
@@ -37,7 +50,7 @@ std::vector<glm::vec4> PunctualLights::texels(std::span<const int> shadowSlots) 
     const int slot = i < shadowSlots.size() ? shadowSlots[i] : -1;
     out.emplace_back(light.position, shaderLightType(light.type));
     out.emplace_back(glm::normalize(light.direction), static_cast<float>(slot));
-    out.emplace_back(power, 0.0f);
+    out.emplace_back(power, static_cast<float>(bakedIndex(i)));
     // The same cosines bounce::spotFalloff computes, so the shader's falloff matches it.
     out.emplace_back(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle), 0.0f, 0.0f);
   }

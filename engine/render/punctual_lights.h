@@ -30,10 +30,22 @@ class PunctualLights {
   // attached: then they are drawn with zero power (they keep their place in the table).
   // Without a bake they are drawn live like the others.
   void setBakedDirectInLightmap(bool inLightmap) { bakedDirectInLightmap_ = inLightmap; }
+  // The bake's visibility names light i as first + i for i < count (bake_folder/
+  // light_visibility.h; count 0: none). Light i reads it while it is static and where the bake
+  // saw it: moved or turned (setLight), it has its shadow map alone.
+  void setBakedVisibility(int first, std::size_t count) {
+    bakedFirst_ = first;
+    bakedCount_ = count;
+  }
+  // Light i's index in the baked visibility, −1 for none.
+  int bakedIndex(std::size_t i) const;
 
  private:
   bool bakedDirectInLightmap_ = false;
+  int bakedFirst_ = 0;
+  std::size_t bakedCount_ = 0;
   std::vector<Light> lights_;
+  std::vector<Light> baked_;  // the scene's lights, as the bake saw them
 };
 
 }  // namespace bounce

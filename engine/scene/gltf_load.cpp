@@ -427,7 +427,7 @@ class GltfBuilder {
     return static_cast<float>(scale);
   }
 
-  void addLight(int index, const glm::mat4& world, const std::string& what) {
+  void addLight(int index, const glm::mat4& world, Mobility mobility, const std::string& what) {
     checkIndex(index, model_.lights, what + " KHR_lights_punctual light");
     const tinygltf::Light& gl = model_.lights[static_cast<std::size_t>(index)];
     Light light;
@@ -478,6 +478,7 @@ class GltfBuilder {
         fail(what + ": light extras.bounce.bake must be \"all\" or \"indirect\"");
       light.bakeDirect = mode == "all";
     }
+    light.mobility = mobility;
     scene_.lights.push_back(light);
   }
 
@@ -571,7 +572,7 @@ class GltfBuilder {
       if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
         const tinygltf::Value& light = it->second.Get("light");
         if (!light.IsInt()) fail(what + ": KHR_lights_punctual.light is not an index");
-        addLight(light.Get<int>(), world, what);
+        addLight(light.Get<int>(), world, mob, what);
       }
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
         stack.push_back({*c, world, mob, scale});

@@ -90,6 +90,12 @@ struct Light {
   // with its indirect light, and the renderer does not draw it live. Otherwise (the default) the
   // lightmap holds only its indirect light.
   bool bakeDirect = false;
+  // glTF node extras.bounce.mobility (inherited from the parent node; default static). A static
+  // light does not move: the bake holds its visibility per lightmap texel (shadows of the static
+  // scene, bake_folder/light_visibility.h) and its indirect light. A dynamic one may move: it is
+  // shadowed by shadow maps alone and the bake holds none of its light (the lightmap would be
+  // wrong once it moved), as Unreal's movable lights.
+  Mobility mobility = Mobility::Static;
   // glTF's `range` is ignored: bounce's lights follow the inverse-square law without cut-off.
 };
 

@@ -10,7 +10,8 @@
 //                 "direction": [x, y, z],          (the way light travels; spot, directional)
 //                 "intensity": [r, g, b],          (W/sr; point, spot)
 //                 "irradiance": [r, g, b],         (W/m²; directional)
-//                 "inner_cone": a, "outer_cone": b}],  (radians; spot)
+//                 "inner_cone": a, "outer_cone": b,  (radians; spot)
+//                 "mobility": "static" | "dynamic"}],  (default static; scene.h Light::mobility)
 //     "emitters": [{"name": "...", "radiance": [r, g, b],     (W/(sr·m²), emitted by the front)
 //                   "albedo": [r, g, b], "double_sided": false,  (default 0.8, false)
 //                   "bake": "indirect" | "all",  ("all": its direct light is baked too)
@@ -84,6 +85,14 @@ Light lightOf(const std::filesystem::path& path, const json& entry) {
   }
   light.innerConeAngle = numberOf(path, entry, "inner_cone", light.innerConeAngle);
   light.outerConeAngle = numberOf(path, entry, "outer_cone", light.outerConeAngle);
+  if (entry.contains("mobility")) {
+    const json& mobility = entry["mobility"];
+    const std::string value = mobility.is_string() ? mobility.get<std::string>() : "";
+    if (value != "static" && value != "dynamic")
+      throw LoadError(path,
+                      "light '" + light.name + "': \"mobility\" must be \"static\" or \"dynamic\"");
+    light.mobility = value == "dynamic" ? Mobility::Dynamic : Mobility::Static;
+  }
   return light;
 }
 

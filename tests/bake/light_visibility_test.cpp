@@ -1,12 +1,14 @@
-// The static area lights' baked visibility (baker/bake/light_visibility_bake.h) against
+// The static lights' baked visibility (baker/bake/light_visibility_bake.h) against
 // independent quadrature: V = ∫ E·vis / ∫ E over a light, with vis decided by an exact
 // segment–rectangle test on a dense grid (not the ray kernel), and the "every other light" slot
 // against Σ E_l V_l / Σ E_l with each E_l by quadrature.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bake/light_visibility_bake.h"
+#include "image/luminance.h"
 #include "ray/ray_kernel.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
@@ -118,7 +120,7 @@ TEST(LightVisibility, VisibleFractionIsTheShadowedOverTheUnshadowedIrradiance) {
   settings.samplesPerLight = 4096;
   VisibilityBakeReport report;
   const BakedVisibility baked =
-      bakeLightVisibility(s->lights, *s->kernel, onePoint(x, n), settings, report);
+      bakeLightVisibility(s->lights, {}, *s->kernel, onePoint(x, n), settings, report);
   ASSERT_EQ(baked.texels.size(), 1u);
   EXPECT_EQ(baked.texels[0].light[0], 0u);
   EXPECT_EQ(baked.texels[0].light[1], kNoLight);
@@ -158,7 +160,7 @@ TEST(LightVisibility, BeyondTheSlotsTheOtherLightsShareTheirIrradianceWeightedFr
   settings.samplesPerLight = 1024;
   VisibilityBakeReport report;
   const BakedVisibility baked =
-      bakeLightVisibility(s->lights, *s->kernel, onePoint(x, n), settings, report);
+      bakeLightVisibility(s->lights, {}, *s->kernel, onePoint(x, n), settings, report);
   const TexelVisibility& t = baked.texels[0];
   EXPECT_EQ(t.light[0], 0u);
   EXPECT_EQ(t.light[1], 1u);
@@ -169,6 +171,92 @@ TEST(LightVisibility, BeyondTheSlotsTheOtherLightsShareTheirIrradianceWeightedFr
   EXPECT_NEAR(t.visible[3], rest, 0.01) << "exact " << rest;
   EXPECT_EQ(report.texelsOverSlots, 1u);
   EXPECT_NEAR(report.otherLightsShare, (e[3] + e[4]) / (e[0] + e[1] + e[2] + e[3] + e[4]), 0.01);
+}
+
+// A texel of nine points in a row across the shadow edges of a half-plane blocker, under a
+// point, a spot and a directional light (static), a dim area light, and two lights that must
+// not be named (one that moves, one whose direct light is baked). Each punctual light's V is
+// Σ w_k·vis_k / Σ w_k over the points with the irradiance kernel w = I·falloff·cosθ/r² or
+// E⊥·cosθ, vis decided by the exact segment–rectangle test; the map names it lightCount + its
+// index in Scene::lights.
+TEST(LightVisibility, PunctualLightsVisibleFractionIsTheirIrradianceWeightedShareOfTheTexel) {
+  const Rectangle dim{{0.75f, 1.0f, 0.75f}, {0.1f, 0, 0}, {0, 0, 0.1f}};
+  const Rectangle blocker{{-1.0f, 0.5f, -1.0f}, {0, 0, 2.0f}, {1.0f, 0, 0}};  // x < 0, y = 0.5
+  auto s = litScene({dim}, {glm::vec3(1.0f)}, {blocker});
+  Light point;
+  point.type = LightType::Point;
+  point.position = {0.1f, 1.0f, 0.0f};
+  point.intensity = glm::vec3(2.0f, 1.0f, 0.5f);
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = {-0.1f, 1.2f, 0.05f};
+  spot.direction = glm::normalize(glm::vec3(0.1f, -1.0f, 0.0f));
+  spot.intensity = glm::vec3(1.5f);
+  spot.innerConeAngle = 0.05f;
+  spot.outerConeAngle = 0.4f;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.0f));
+  sun.irradiance = glm::vec3(1.0f);
+  Light moving = point, baked = point;
+  moving.position.x = 0.3f;
+  moving.mobility = Mobility::Dynamic;
+  baked.position.x = -0.3f;
+  baked.bakeDirect = true;
+  const std::vector<Light> lights{point, moving, spot, baked, sun};
+
+  TexelCoverage texel;
+  texel.width = texel.height = 1;
+  texel.first = {0, 9};
+  texel.coveredArea = {1.0f};
+  const glm::vec3 up(0, 1, 0);
+  for (int k = 0; k < 9; ++k)
+    texel.points.push_back({{-0.187f + 0.05f * k, 0.0f, 0.01f * k}, up, up, {0.5f, 0.5f}, 0});
+
+  VisibilityBakeSettings settings;
+  VisibilityBakeReport report;
+  const BakedVisibility map =
+      bakeLightVisibility(s->lights, lights, *s->kernel, texel, settings, report);
+  ASSERT_EQ(map.lightCount, 1u);
+  ASSERT_EQ(map.punctualCount, 5u);
+  const TexelVisibility& t = map.texels[0];
+  auto slotOf = [&](uint16_t light) {
+    for (int k = 0; k < kVisibilitySlots; ++k)
+      if (t.light[k] == light) return k;
+    return -1;
+  };
+  EXPECT_EQ(slotOf(map.punctualIndex(1)), -1) << "the light that moves is not baked";
+  EXPECT_EQ(slotOf(map.punctualIndex(3)), -1) << "the baked-direct light is not baked";
+  EXPECT_EQ(t.light[3], 0u) << "the dim area light brings the least";
+  for (const std::size_t l : {std::size_t{0}, std::size_t{2}, std::size_t{4}}) {
+    const Light& light = lights[l];
+    double sumW = 0.0, sumVisible = 0.0;
+    for (const TexelPoint& x : texel.points) {
+      const glm::dvec3 p(x.position);
+      const bool directional = light.type == LightType::Directional;
+      const glm::dvec3 to =
+          directional ? p - 100.0 * glm::dvec3(light.direction) : glm::dvec3(light.position);
+      const glm::dvec3 d = to - p;
+      const double r = glm::length(d), cosX = d.y / r;
+      double w = cosX * luminance(directional ? light.irradiance : light.intensity);
+      if (!directional) w /= r * r;
+      if (light.type == LightType::Spot) {
+        const double cosTheta = glm::dot(-d / r, glm::dvec3(light.direction));
+        const double f =
+            std::clamp((cosTheta - std::cos(0.4)) / (std::cos(0.05) - std::cos(0.4)), 0.0, 1.0);
+        w *= f * f;
+      }
+      sumW += w;
+      if (!crosses(p, to, blocker)) sumVisible += w;
+    }
+    const double v = sumVisible / sumW;
+    const int slot = slotOf(map.punctualIndex(l));
+    ASSERT_GE(slot, 0) << "light " << l << " is named";
+    EXPECT_NEAR(t.visible[slot], v, 1e-5) << "light " << l;
+    EXPECT_GT(v, 0.05) << "light " << l << ": the row crosses its shadow edge";
+    EXPECT_LT(v, 0.95) << "light " << l << ": the row crosses its shadow edge";
+  }
+  EXPECT_EQ(report.punctualLights, 5u);
 }
 
 // Texels without points take a neighbour's record, their chart's first.

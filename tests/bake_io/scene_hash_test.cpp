@@ -195,7 +195,11 @@ TEST(SceneHash, EveryLightFieldOfEveryLightType) {
                           {"irradiance", Expect::Changes, eachComponent(&Light::irradiance)},
                           {"innerConeAngle", Expect::Changes, bumpFloat(&Light::innerConeAngle)},
                           {"outerConeAngle", Expect::Changes, bumpFloat(&Light::outerConeAngle)},
-                          {"bakeDirect", Expect::Changes, {flip(&Light::bakeDirect)}}},
+                          {"bakeDirect", Expect::Changes, {flip(&Light::bakeDirect)}},
+                          {"mobility", Expect::Changes, {[](Light& l) {
+                             l.mobility = l.mobility == Mobility::Static ? Mobility::Dynamic
+                                                                         : Mobility::Static;
+                           }}}},
                          "lights");
 }
 

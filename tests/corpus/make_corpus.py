@@ -671,23 +671,26 @@ if os.path.isdir(VALID):
               vpls=vpls_with(56, "<f", float("nan")))
     bake_case("vpls_path_decreasing", "error", "is smaller than the previous VPL's",
               vpls=vpls_with(64, "<I", 0xFFFFFFFF))
-    # visibility.bin (docs/bake_folder.md): header 24 bytes (magic, version at 8, width 12,
-    # height 16, light count L at 20), then per texel 4 x u16 light, 4 x f32 V (24 bytes). The
-    # scene has L = 1 static area light (the panel). Texel 0's slot 0 is at 24, its V at 32.
+    # visibility.bin (docs/bake_folder.md): header 28 bytes (magic, version at 8, width 12,
+    # height 16, area light count L at 20, punctual light count P at 24), then per texel
+    # 4 x u16 light, 4 x f32 V (24 bytes). The scene has L = 1 static area light (the panel) and
+    # P = 1 point light (index 1). Texel 0's slot 0 is at 28, its V at 36.
     def vis_with(offset, fmt, *values):
         b = bytearray(vis)
         struct.pack_into(fmt, b, offset, *values)
         return bytes(b)
 
     def vis_texel(width, height):  # a well-formed file of another size: every slot empty, V = 1
-        return (b"BNCVISIB" + struct.pack("<IiiI", 1, width, height, 1) +
+        return (b"BNCVISIB" + struct.pack("<IiiII", 2, width, height, 1, 1) +
                 (struct.pack("<4H", *[0xFFFF] * 4) + struct.pack("<4f", *[1.0] * 4)) * (width * height))
 
     bake_case("visibility_bad_magic", "error", "visibility.bin: bad magic: not a bounce visibility file",
               visibility_bin=b"BNCVISIX" + vis[8:])
-    bake_case("visibility_version_9", "error", "visibility.bin: format version 9, this build reads version 1: rebake",
+    bake_case("visibility_version_9", "error", "visibility.bin: format version 9, this build reads version 2: rebake",
               visibility_bin=vis_with(8, "<I", 9))
-    bake_case("visibility_header_cut", "error", "visibility.bin: truncated: 10 bytes, the header needs 24",
+    bake_case("visibility_version_1", "error", "visibility.bin: format version 1, this build reads version 2: rebake",
+              visibility_bin=vis_with(8, "<I", 1))
+    bake_case("visibility_header_cut", "error", "visibility.bin: truncated: 10 bytes, the header needs 28",
               visibility_bin=vis[:10])
     bake_case("visibility_cut", "error", "visibility.bin: %dx%d texels need %d bytes, the file has %d" % (struct.unpack_from("<ii", vis, 12) + (len(vis), len(vis) - 24)),
               visibility_bin=vis[:-24])
@@ -695,15 +698,19 @@ if os.path.isdir(VALID):
               visibility_bin=vis + b"\0")
     bake_case("visibility_other_size", "error", "visibility.bin: is 2x2, layout.bin says %dx%d" % struct.unpack_from("<ii", layout, 12),
               visibility_bin=vis_texel(2, 2))
-    bake_case("visibility_light_out_of_range", "error", "visibility.bin: texel 0: light 1 of 1",
-              visibility_bin=vis_with(24, "<H", 1))
+    bake_case("visibility_light_out_of_range", "error", "visibility.bin: texel 0: light 2 of 2",
+              visibility_bin=vis_with(28, "<H", 2))
     bake_case("visibility_light_twice", "error", "visibility.bin: texel 0: names light 0 twice",
-              visibility_bin=vis_with(24, "<2H2f", 0, 0, 0.5, 0.5))
+              visibility_bin=vis_with(28, "<2H2f", 0, 0, 0.5, 0.5))
     for name, v in (("nan", float("nan")), ("1_5", 1.5), ("negative", -0.1)):
         bake_case("visibility_v_" + name, "error", "visibility.bin: texel 0: visible fraction is not in [0, 1]",
-                  visibility_bin=vis_with(32, "<f", v))
+                  visibility_bin=vis_with(36, "<f", v))
     bake_case("visibility_light_count_2", "error", "visibility.bin: holds 2 static area lights, ",
               visibility_bin=vis_with(20, "<I", 2))
+    bake_case("visibility_punctual_count_3", "error", "visibility.bin: holds 3 punctual lights, ",
+              visibility_bin=vis_with(24, "<I", 3))
+    bake_case("visibility_lights_over_65533", "error", "visibility.bin: 1 area and 65533 punctual lights: at most 65533 in all",
+              visibility_bin=vis_with(24, "<I", 65533))
     # Seeds of fuzz_bake (tests/fuzz/fuzz_bake.cpp): a byte picking the file, then its content.
     for i, f in enumerate(BAKE_FILES):
         write("bake_fuzz_seeds/valid_%s" % f.replace(".", "_"), bytes([i]) + bake_file(f), None, None)

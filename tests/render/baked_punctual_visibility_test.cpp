@@ -1,0 +1,115 @@
+// The renderer's baked visibility of static punctual lights (shaders/lights.glsl,
+// punctualVisibility) against closed forms, on synthetic bakes: a floor texel's V scales the
+// light's exact irradiance I·cosθ/r² (the frame without a bake is that irradiance exactly);
+// V is the smaller of the baked one and the shadow map's; a light that moves (mobility dynamic)
+// or was moved since the bake (setLight) ignores the bake.
+#include <gtest/gtest.h>
+
+#include "lightmap_scenes.h"
+#include "shadow_scenes.h"
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 32;
+
+// A 1 m floor at y = 0 (atlas u = x + ½, v = z + ½) under a point light 0.7 m up, off-centre so
+// that cosθ/r² varies over the floor; seen from 1 m above.
+Scene floorUnderLamp(Mobility mobility) {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.6f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+  Light lamp = pointAt({0.15f, 0.7f, -0.1f}, 2.0f);
+  lamp.mobility = mobility;
+  scene.lights.push_back(lamp);
+  return scene;
+}
+
+// A bake with a black lightmap, no area lights and every texel naming the lamp (punctual
+// light 0, visibility index 0) with V = `v`.
+Bake lampBake(const Scene& scene, float v) {
+  Bake bake;
+  bake.layout.width = bake.layout.height = kSize;
+  bake.layout.texelSize = 1.0f / kSize;
+  const Mesh& floor = scene.meshes[scene.instances[0].mesh];
+  InstanceLightmapUv region{0, {}};
+  for (uint32_t index : floor.indices)
+    region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
+  bake.layout.instances = {region};
+  bake.irradiance = Image(kSize, kSize);
+  bake.manifest = minimalManifest(scene);
+  BakedVisibility visibility;
+  visibility.width = visibility.height = kSize;
+  visibility.lightCount = 0;
+  visibility.punctualCount = 1;
+  TexelVisibility texel;
+  texel.light[0] = visibility.punctualIndex(0);
+  texel.visible[0] = v;
+  visibility.texels.assign(kSize * kSize, texel);
+  bake.visibility = visibility;
+  return bake;
+}
+
+struct Frames {
+  Image open, baked;
+};
+
+// The direct frame without a bake and with `bake`, shadow maps on or off; `moveTo`, when set,
+// moves the lamp there (ForwardRenderer::setLight) before both frames.
+Frames frames(const Scene& scene, const Bake& bake, bool shadowMaps,
+              std::optional<glm::vec3> moveTo = std::nullopt) {
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Direct;
+  settings.shadows.enabled = shadowMaps;
+  Frames f;
+  for (const Bake* b : {static_cast<const Bake*>(nullptr), &bake}) {
+    ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, b);
+    if (moveTo) {
+      Light moved = scene.lights[0];
+      moved.position = *moveTo;
+      renderer.setLight(0, moved);
+    }
+    (b ? f.baked : f.open) = renderer.renderImage(downCamera(1.0f), kSize, kSize);
+  }
+  return f;
+}
+
+// The ratio baked / open over the floor (the frame's border rows left out), expected everywhere.
+void expectRatio(const Frames& f, float expected, const char* what) {
+  int checked = 0;
+  for (int y = 2; y < kSize - 2; ++y)
+    for (int x = 2; x < kSize - 2; ++x) {
+      const float open = f.open.at(x, y).g;
+      ASSERT_GT(open, 0.0f) << what << " at " << x << "," << y;
+      EXPECT_NEAR(f.baked.at(x, y).g / open, expected, 1e-3f) << what << " at " << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 500) << what;
+}
+
+TEST(BakedPunctualVisibility, ATexelsVisibleFractionScalesTheLampsExactIrradiance) {
+  const Scene scene = floorUnderLamp(Mobility::Static);
+  for (const float v : {0.0f, 0.3f, 1.0f}) {
+    const Bake bake = lampBake(scene, v);
+    expectRatio(frames(scene, bake, false), v, "shadow maps off");
+    // Nothing casts a shadow: the lamp's cube sees the floor lit, so V = min(1, V_baked).
+    expectRatio(frames(scene, bake, true), v, "shadow maps on");
+  }
+}
+
+TEST(BakedPunctualVisibility, ALightThatMovesOrWasMovedIgnoresTheBake) {
+  const Scene dynamicLamp = floorUnderLamp(Mobility::Dynamic);
+  expectRatio(frames(dynamicLamp, lampBake(dynamicLamp, 0.3f), false), 1.0f, "mobility dynamic");
+  const Scene staticLamp = floorUnderLamp(Mobility::Static);
+  const Bake bake = lampBake(staticLamp, 0.3f);
+  expectRatio(frames(staticLamp, bake, false, glm::vec3(-0.1f, 0.8f, 0.2f)), 1.0f, "moved");
+  // Moved back to where the bake saw it, the bake holds again.
+  expectRatio(frames(staticLamp, bake, false, staticLamp.lights[0].position), 0.3f, "moved back");
+}
+
+}  // namespace
+}  // namespace bounce::test
