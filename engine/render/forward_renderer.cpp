@@ -170,6 +170,16 @@ void ForwardRenderer::setBake(const Bake& bake) {
         "too few fragment texture units");
   p.lights.setBakedDirectInLightmap(true);
   p.lights.setBakedVisibility(p.lightmap.bakedLightCount(), p.lightmap.bakedPunctualCount());
+  std::size_t bakedWithoutMap = 0;
+  for (std::size_t i = 0; i < p.lights.size(); ++i)
+    if (p.lights.bakedIndex(i) >= 0 &&
+        (i >= p.shadows.lightSlots().size() || p.shadows.lightSlots()[i] < 0))
+      ++bakedWithoutMap;
+  if (bakedWithoutMap > 0)
+    warnings_.push_back(std::to_string(bakedWithoutMap) +
+                        " of the punctual lights without a shadow map are shadowed on static "
+                        "surfaces by the bake's visibility (dynamic objects neither cast nor "
+                        "receive their shadows)");
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {
     const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifest);
