@@ -158,6 +158,7 @@ bool onTriangle(const WorldTriangle& b, const glm::dvec3& x) {
 struct CrossingPlane {
   glm::dvec3 n{0.0};
   double d = 0.0;
+  glm::dvec3 u{0.0};          // unit direction of the line, along T's plane and this one
   double c0 = 0.0, c1 = 0.0;  // T's chord along u
   // The line (T's plane and this one, each to 1e-4) that T's neighbours on it share.
   std::array<int64_t, 8> line{};
@@ -319,13 +320,67 @@ std::vector<CrossingPlane> crossingPlanes(const WorldTriangle& w, const Triangle
     auto it = std::find_if(planes.begin(), planes.end(), same);
     if (it == planes.end()) {
       const auto q = [](double x) { return static_cast<int64_t>(std::llround(x * 1e4)); };
-      it = planes.insert(planes.end(), CrossingPlane{n, d, c0, c1, {}, {}, {}});
+      it = planes.insert(planes.end(), CrossingPlane{n, d, u, c0, c1, {}, {}, {}});
       it->line = {q(wn.x), q(wn.y), q(wn.z), q(wd), q(n.x), q(n.y), q(n.z), q(d)};
     }
     it->covered.emplace_back(from, to);
     it->crossers.push_back(i);
   }
   return planes;
+}
+
+// `piece` with a vertex added on each edge along a cut plane wherever a crossing begins or ends
+// inside it (a wall's end at a doorway), so that each edge is either crossed or not along all of
+// its length. Points on one edge are computed from its endpoints in one order whichever piece
+// asks, so the pieces on both sides of the edge share them exactly.
+std::vector<Bary> withCrossingEnds(const WorldTriangle& t, const std::vector<Bary>& piece,
+                                   const std::vector<CrossingPlane>& planes) {
+  std::vector<Bary> ring;
+  for (std::size_t k = 0; k < piece.size(); ++k) {
+    const Bary& a = piece[k];
+    const Bary& b = piece[(k + 1) % piece.size()];
+    ring.push_back(a);
+    const glm::dvec3 pa = at(t, a), pb = at(t, b);
+    const double length = glm::length(pb - pa);
+    for (const CrossingPlane& plane : planes) {
+      if (std::abs(glm::dot(plane.n, pa) - plane.d) > kOnPlane ||
+          std::abs(glm::dot(plane.n, pb) - plane.d) > kOnPlane)
+        continue;
+      const bool flip = b < a;
+      const Bary& lo = flip ? b : a;
+      const Bary& hi = flip ? a : b;
+      const double s0 = glm::dot(plane.u, at(t, lo)), s1 = glm::dot(plane.u, at(t, hi));
+      if (s0 == s1) continue;
+      // The ends of the union of the crossings' intervals.
+      std::vector<std::pair<double, double>> sorted = plane.covered;
+      std::sort(sorted.begin(), sorted.end());
+      std::vector<double> ends;
+      double from = 0.0, to = -1e300;
+      for (const auto& [c0, c1] : sorted) {
+        if (c0 > to + kOnPlane) {
+          if (to > -1e300) ends.push_back(from), ends.push_back(to);
+          from = c0;
+        }
+        to = std::max(to, c1);
+      }
+      if (to > -1e300) ends.push_back(from), ends.push_back(to);
+      std::vector<double> params;
+      for (const double e : ends) {
+        const double f = (e - s0) / (s1 - s0);
+        if (f * length > kOnPlane && (1.0 - f) * length > kOnPlane) params.push_back(f);
+      }
+      // Added in order from a to b.
+      std::sort(params.begin(), params.end());
+      if (flip) std::reverse(params.begin(), params.end());
+      for (const double f : params) {
+        Bary x{};
+        for (int c = 0; c < 3; ++c) x[c] = lo[c] == hi[c] ? lo[c] : lo[c] + f * (hi[c] - lo[c]);
+        ring.push_back(x);
+      }
+      break;  // an edge lies on one crossing plane
+    }
+  }
+  return ring;
 }
 
 }  // namespace
@@ -393,11 +448,22 @@ CrossingCuts cutAtCrossings(Scene& scene) {
         for (const auto& piece : pieces) split(w, piece, plane.n, plane.d, halves);
         pieces = std::move(halves);
       }
-      // Each convex piece as a fan from its first corner; the first triangle replaces t.
+      // Each convex piece as a fan from its first corner, or from its centre where crossings
+      // end along its edges; the first triangle replaces t.
       std::vector<std::array<Bary, 3>> triangles;
-      for (const auto& piece : pieces)
-        for (std::size_t k = 1; k + 1 < piece.size(); ++k)
-          triangles.push_back({piece[0], piece[k], piece[k + 1]});
+      for (const auto& piece : pieces) {
+        const std::vector<Bary> ring = withCrossingEnds(w, piece, planes);
+        if (ring.size() == piece.size()) {
+          for (std::size_t k = 1; k + 1 < piece.size(); ++k)
+            triangles.push_back({piece[0], piece[k], piece[k + 1]});
+          continue;
+        }
+        Bary centre{0, 0, 0};
+        for (const Bary& b : piece)
+          for (int c = 0; c < 3; ++c) centre[c] += b[c] / static_cast<double>(piece.size());
+        for (std::size_t k = 0; k < ring.size(); ++k)
+          triangles.push_back({centre, ring[k], ring[(k + 1) % ring.size()]});
+      }
       if (triangles.size() > 1) ++result.cutTriangles;
       result.addedTriangles += triangles.size() - 1;
       // Vertices first: they interpolate t's original corners, which the first piece replaces.
