@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "scene/load.h"
+#include "scene/loaders.h"
 #include "scene/world_geometry.h"
 
 namespace bounce {
@@ -36,8 +37,10 @@ Extent measure(const Scene& scene) {
 
 TEST(McGuireCornellBox, OriginalLoadsWithItsLight) {
   const Scene scene = loadScene(kMcGuire + "CornellBox-Original.obj");
-  // The file has 18 `f` lines, all quads: 36 triangles.
-  EXPECT_EQ(scene.triangleCount(), 36u);
+  // The file has 18 `f` lines, all quads: 36 triangles (loadScene then splits the floor where
+  // the boxes stand on it, scene/crossing_cuts.h).
+  EXPECT_EQ(loadSceneAsWritten(kMcGuire + "CornellBox-Original.obj").triangleCount(), 36u);
+  EXPECT_GE(scene.triangleCount(), 36u);
   int emissive = 0;
   for (const Material& m : scene.materials) {
     if (!m.isEmissive()) continue;
