@@ -91,9 +91,12 @@ TEST(McGuireCornellBox, SphereVariantKeepsItsNormals) {
 
 // The conference room: all 331,179 triangles of the shared scene (its README) load, with
 // finite unit normals. The load time is reported (not asserted) as the property load_seconds.
+// As written: loadScene would go on to cut surfaces where others cross them (crossing_cuts.h),
+// with a rule in metres that this file, in other units, does not meet (its wrapper
+// content/conference/conference_panels.json scales it).
 TEST(Conference, LoadsAllTriangles) {
   const auto start = std::chrono::steady_clock::now();
-  const Scene scene = loadScene(BOUNCE_SHARED_SCENES "/conference/conference.obj");
+  const Scene scene = loadSceneAsWritten(BOUNCE_SHARED_SCENES "/conference/conference.obj");
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RecordProperty("load_seconds", std::to_string(seconds));
