@@ -34,6 +34,7 @@ WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
   const Mesh& mesh = scene.meshes.at(instance.mesh);
   WorldMesh world;
   world.indices = mesh.indices;
+  world.cutEdges = mesh.cutEdges;
   world.positions.reserve(mesh.positions.size());
   for (const glm::vec3& p : mesh.positions)
     world.positions.emplace_back(instance.transform * glm::vec4(p, 1.0f));

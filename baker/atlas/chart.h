@@ -28,6 +28,7 @@ struct Chart {
 struct WorldMesh {
   std::vector<glm::vec3> positions;  // metres, one per mesh vertex
   std::vector<uint32_t> indices;     // the mesh's, 3 per triangle (winding as in the mesh)
+  std::vector<uint8_t> cutEdges;     // the mesh's (Mesh::cutEdges): charts never cross bits 0-2
   std::size_t triangleCount() const { return indices.size() / 3; }
   glm::vec3 corner(std::size_t triangle, int k) const {
     return positions[indices[3 * triangle + k]];

@@ -68,6 +68,14 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     return v;
   };
   std::vector<uint32_t> faceTriangle;  // OpenMesh face index → mesh triangle
+  std::set<std::pair<int, int>> cut;   // welded vertex pairs (lower first) of cut edges
+  const auto edgeKey = [](HalfEdgeMesh::VertexHandle a, HalfEdgeMesh::VertexHandle b) {
+    return std::pair<int, int>(std::min(a.idx(), b.idx()), std::max(a.idx(), b.idx()));
+  };
+  const auto isCut = [&](HalfEdgeMesh::HalfedgeHandle h) {
+    return !cut.empty() &&
+           cut.count(edgeKey(halfEdges.from_vertex_handle(h), halfEdges.to_vertex_handle(h))) > 0;
+  };
   // OpenMesh reports each refused face on its error stream; refusals are handled below.
   const bool omerrWasEnabled = omerr().is_enabled();
   omerr().disable();
@@ -86,6 +94,10 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     // A face OpenMesh refuses (a third face on an edge, a vertex whose fan would not be a
     // disc, or a flipped neighbour) is retried with one corner, then two, then all three on
     // vertices of its own: it keeps as many neighbours as the half-edge structure allows.
+    // A cut edge (a wall's foot on this floor, Mesh::cutEdges) bounds every chart.
+    if (!mesh.cutEdges.empty())
+      for (int k = 0; k < 3; ++k)
+        if (mesh.cutEdges[t] & (1u << k)) cut.insert(edgeKey(v[k], v[(k + 1) % 3]));
     auto face = halfEdges.add_face(v[0], v[1], v[2]);
     for (const int own : {1, 2, 4, 3, 5, 6, 7}) {
       if (face.is_valid()) break;
@@ -130,7 +142,7 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
         faceChart[f] = c;
         for (auto h : halfEdges.fh_range(halfEdges.face_handle(f))) {
           const auto g = halfEdges.opposite_face_handle(h);
-          if (!g.is_valid() || faceChart[g.idx()] >= 0) continue;
+          if (!g.is_valid() || faceChart[g.idx()] >= 0 || isCut(h)) continue;
           const double alignment = glm::dot(normal[g.idx()], axes[c]);
           if (alignment < cosCone) continue;
           if (glm::dot(normal[g.idx()], normal[f]) < cosCrease) continue;
@@ -190,7 +202,7 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     for (const int f : chartFaces[c])
       for (auto h : halfEdges.fh_range(halfEdges.face_handle(f))) {
         const auto g = halfEdges.opposite_face_handle(h);
-        if (!g.is_valid() || faceChart[g.idx()] == c) continue;
+        if (!g.is_valid() || faceChart[g.idx()] == c || isCut(h)) continue;
         if (glm::dot(normal[g.idx()], normal[f]) < cosCrease) continue;
         shared[faceChart[g.idx()]] += static_cast<double>(halfEdges.calc_edge_length(h));
       }
@@ -223,7 +235,7 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
   for (std::size_t f = 0; f < faceChart.size(); ++f)
     for (auto h : halfEdges.fh_range(halfEdges.face_handle(static_cast<int>(f)))) {
       const auto g = halfEdges.opposite_face_handle(h);
-      if (!g.is_valid()) continue;
+      if (!g.is_valid() || isCut(h)) continue;  // charts never merge across a cut
       const int a = finalIndex[faceChart[f]], b = finalIndex[faceChart[g.idx()]];
       if (a < b) contact[{a, b}] += static_cast<double>(halfEdges.calc_edge_length(h));
     }

@@ -4,9 +4,9 @@
 // and the fold across the edge is below `creaseAngle`. So a flat wall is one chart, a box is six,
 // and a curved surface splits into charts no wider than the cone (each a height field over its
 // seed plane, which the flattening needs). Then the fragments growth leaves between charts join
-// a larger neighbour while the normals of both stay within `mergeHalfAngle` of one axis. Then the
-// fragments growth leaves between charts join a larger neighbour while the normals of both stay
-// within `mergeHalfAngle` of one axis.
+// a larger neighbour while the normals of both stay within `mergeHalfAngle` of one axis. No chart
+// grows, merges or reports a contact across a cut edge (WorldMesh::cutEdges, where a wall
+// crosses the surface: scene/crossing_cuts.h).
 #pragma once
 
 #include <cstdint>

@@ -165,6 +165,7 @@ std::array<int64_t, 3> quantize(glm::vec3 p) {
 struct EdgeSide {
   glm::vec2 uv0, uv1;  // texel space, at the edge's first and second key point
   glm::vec3 n0, n1;
+  bool crossed = false;  // another surface crosses this one here (Mesh::cutEdges bit k + 3)
 };
 
 }  // namespace
@@ -208,6 +209,7 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
       auto q0 = quantize(geometry.positions[v0]), q1 = quantize(geometry.positions[v1]);
       EdgeSide side{region.cornerUv[c] * size, region.cornerUv[next] * size, geometry.normals[v0],
                     geometry.normals[v1]};
+      side.crossed = !mesh.cutEdges.empty() && (mesh.cutEdges[t] & (8u << k)) != 0;
       if (q1 < q0) {
         std::swap(q0, q1);
         std::swap(side.uv0, side.uv1);
@@ -222,6 +224,7 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
     for (std::size_t i = 0; i < sides.size(); ++i) {
       for (std::size_t j = i + 1; j < sides.size(); ++j) {
         const EdgeSide &a = sides[i], &b = sides[j];
+        if (a.crossed || b.crossed) continue;  // a wall between them: the light differs
         if (glm::dot(a.n0, b.n0) < 0.99f || glm::dot(a.n1, b.n1) < 0.99f) continue;
         const float apart = std::max(glm::length(a.uv0 - b.uv0), glm::length(a.uv1 - b.uv1));
         if (apart < 1e-3f) continue;  // the same atlas edge: bilinear already agrees

@@ -38,7 +38,8 @@ struct Seam {
 };
 
 // Edges of lightmapped triangles whose endpoints share world positions (to 1e-5 m) and shading
-// normals (cos ≥ 0.99) with another triangle's edge but whose atlas UVs differ.
+// normals (cos ≥ 0.99) with another triangle's edge but whose atlas UVs differ; never where
+// another surface crosses this one (Mesh::cutEdges: a wall's foot between the two sides).
 std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
                             const LightmapLayout& layout);
 

@@ -17,7 +17,7 @@ namespace {
 // tests/bake_io/scene_hash_test.cpp, and update the count here and there.
 static_assert(aggregateFieldCount<Texture>() == 4, "Texture changed: extend the scene hash");
 static_assert(aggregateFieldCount<Material>() == 6, "Material changed: extend the scene hash");
-static_assert(aggregateFieldCount<Mesh>() == 7, "Mesh changed: extend the scene hash");
+static_assert(aggregateFieldCount<Mesh>() == 8, "Mesh changed: extend the scene hash");
 static_assert(aggregateFieldCount<Instance>() == 5, "Instance changed: extend the scene hash");
 static_assert(aggregateFieldCount<Light>() == 10, "Light changed: extend the scene hash");
 static_assert(aggregateFieldCount<Scene>() == 8, "Scene changed: extend the scene hash");
@@ -79,6 +79,11 @@ uint64_t hashMeshes(const std::vector<Mesh>& meshes) {
     h.u64(mesh.indices.size());
     for (uint32_t i : mesh.indices) h.u64(i);
     h.u64(mesh.material);
+    // The charts follow the cuts (scene/crossing_cuts.h); scenes without any hash as before.
+    if (!mesh.cutEdges.empty()) {
+      h.u64(mesh.cutEdges.size());
+      for (const uint8_t c : mesh.cutEdges) h.u64(c);
+    }
   }
   return h.state();
 }

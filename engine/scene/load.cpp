@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "scene/closed_shells.h"
+#include "scene/crossing_cuts.h"
 #include "scene/loaders.h"
 
 namespace bounce {
@@ -41,6 +42,8 @@ Scene loadScene(const std::filesystem::path& path) {
         std::to_string(shells.turned) + " of " + std::to_string(shells.closedShells) +
         " closed shells had triangles wound towards their unlit side (every light source is on "
         "the other side): turned, so that the renderer draws and the lightmap holds the lit side");
+  // After the shells are turned: the cut edges are numbered by the final corner order.
+  cutAtCrossings(scene);
   return scene;
 }
 

@@ -52,6 +52,11 @@ struct Mesh {
   std::vector<glm::vec2> uv1;     // lightmap UVs (unique, non-overlapping); empty until unwrapped
   std::vector<uint32_t> indices;  // 3 per triangle
   uint32_t material = 0;          // index into Scene::materials
+  // Where other static geometry crosses this surface (scene/crossing_cuts.h): one byte per
+  // triangle, or empty when nothing does. Bit k (k = 0, 1, 2): the edge from corner k to corner
+  // (k + 1) mod 3 bounds a lightmap chart. Bit k + 3: another surface meets or passes through
+  // this one along that edge, so its two sides see different light and no filter joins them.
+  std::vector<uint8_t> cutEdges;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -101,6 +101,7 @@ Scene richScene() {
   quad.uv0 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   quad.uv1 = {{0.1f, 0.1f}, {0.4f, 0.1f}, {0.4f, 0.4f}, {0.1f, 0.4f}};
   quad.indices = {0, 2, 1, 0, 3, 2};
+  quad.cutEdges = {0x12, 0};  // edge 1 of triangle 0 cut and crossed (scene/crossing_cuts.h)
   Mesh tri;
   tri.name = "tri";
   tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -108,6 +109,7 @@ Scene richScene() {
   tri.uv0 = {{0, 0}, {1, 0}, {0, 1}};
   tri.uv1 = {{0.5f, 0.5f}, {0.9f, 0.5f}, {0.5f, 0.9f}};
   tri.indices = {0, 1, 2};
+  tri.cutEdges = {0x01};
   tri.material = 1;
   s.meshes = {quad, tri};
   Material white{"white", glm::vec3(0.8f), std::nullopt, glm::vec3(0.0f), false, false};
@@ -233,15 +235,21 @@ TEST(SceneHash, EveryTextureFieldAndTexel) {
 }
 
 TEST(SceneHash, EveryMeshFieldAndElement) {
-  checkEveryField<Mesh>("Mesh", &Scene::meshes,
-                        {{"name", Expect::Keeps, {rename(&Mesh::name)}},
-                         {"positions", Expect::Changes, eachElement(&Mesh::positions, 3)},
-                         {"normals", Expect::Changes, eachElement(&Mesh::normals, 3)},
-                         {"uv0", Expect::Changes, eachElement(&Mesh::uv0, 3)},
-                         {"uv1", Expect::Changes, eachElement(&Mesh::uv1, 3)},
-                         {"indices", Expect::Changes, eachElement(&Mesh::indices, 3)},
-                         {"material", Expect::Changes, {plusOne(&Mesh::material)}}},
-                        "meshes");
+  checkEveryField<Mesh>(
+      "Mesh", &Scene::meshes,
+      {{"name", Expect::Keeps, {rename(&Mesh::name)}},
+       {"positions", Expect::Changes, eachElement(&Mesh::positions, 3)},
+       {"normals", Expect::Changes, eachElement(&Mesh::normals, 3)},
+       {"uv0", Expect::Changes, eachElement(&Mesh::uv0, 3)},
+       {"uv1", Expect::Changes, eachElement(&Mesh::uv1, 3)},
+       {"indices", Expect::Changes, eachElement(&Mesh::indices, 3)},
+       {"material", Expect::Changes, {plusOne(&Mesh::material)}},
+       // The charts follow the cuts: every bit, and their presence, counts.
+       {"cutEdges",
+        Expect::Changes,
+        {[](Mesh& m) { m.cutEdges.at(0) ^= 0x01; }, [](Mesh& m) { m.cutEdges.at(0) ^= 0x08; },
+         [](Mesh& m) { m.cutEdges.push_back(0); }, [](Mesh& m) { m.cutEdges.clear(); }}}},
+      "meshes");
 }
 
 // Where a dynamic instance stands is no part of the bake (bounce-bake bakes without it): moving

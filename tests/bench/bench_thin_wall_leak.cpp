@@ -3,14 +3,16 @@
 // and two side-wall quads that run through a dividing wall (a box t thick), as slabs and walls
 // of real levels do. A 10 W/sr point light hangs in the lit room; nothing can reach the dark
 // room but through the wall, so every pixel of it is exactly 0 in the path tracer. For each wall
-// thickness and texel size: a default bake (bakeScene, the texels asked), then the renderer's
-// full and indirect frames from a camera in the dark room facing the wall, and the lit room's
-// mean luminance from the mirror camera. Prints one CSV line per case: the dark room's largest
-// pixel and its 99th percentile, as fractions of the lit room's mean (goal: every pixel under
-// 1%).
+// thickness and texel size (the surfaces cut where the wall crosses them, as loadScene does;
+// --uncut: not, as before the cut): a default bake (bakeScene, the texels asked), then the
+// renderer's full and indirect frames from a camera in the dark room facing the wall, and the lit
+// room's mean luminance from the mirror camera. Prints one CSV line per case: the dark room's
+// largest pixel and its 99th percentile, as fractions of the lit room's mean (goal: every pixel
+// under 1%).
 //
 //   bench_thin_wall_leak [--thickness M,...] [--texel-size M,...] [--size PIXELS] [--spp N]
 //                        [--image-dir DIR]   (each case's dark-room frames, 4 EV brighter)
+//                        [--uncut]           (no cuts where the wall crosses the surfaces)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -25,33 +27,11 @@
 #include "indirect_accuracy.h"
 #include "shadow_scenes.h"
 #include "test_scenes.h"
+#include "thin_wall_scene.h"
 
 namespace {
 
 using namespace bounce;
-
-Material matte(const char* name, float albedo) {
-  Material m;
-  m.name = name;
-  m.albedo = glm::vec3(albedo);
-  return m;
-}
-
-// x < −t/2: the lit room, x > t/2: the dark one; both 2 m deep (z ∈ [−1, 1]), 2.5 m high.
-Scene twoRooms(float t) {
-  Scene scene;
-  const Material white = matte("wall", 0.75f), floor = matte("floor", 0.5f);
-  const float h = 2.5f;
-  test::addQuad(scene, {-2, 0, 1}, {4, 0, 0}, {0, 0, -2}, floor);  // the floor, up, under the wall
-  test::addQuad(scene, {-2, h, -1}, {4, 0, 0}, {0, 0, 2}, white);  // the ceiling, down, over it
-  test::addQuad(scene, {-2, 0, -1}, {4, 0, 0}, {0, h, 0}, white);  // z = −1, facing +z, through it
-  test::addQuad(scene, {2, 0, 1}, {-4, 0, 0}, {0, h, 0}, white);  // z = +1, facing −z, through it
-  test::addQuad(scene, {-2, 0, 1}, {0, 0, -2}, {0, h, 0}, white);  // x = −2, facing +x
-  test::addQuad(scene, {2, 0, -1}, {0, 0, 2}, {0, h, 0}, white);   // x = +2, facing −x
-  test::addBox(scene, {-t / 2, 0, -1}, {t / 2, h, 1}, white);      // the dividing wall
-  scene.lights.push_back(test::pointAt({-1.0f, 2.0f, 0.3f}, 10.0f));
-  return scene;
-}
 
 struct Leak {
   double largest = 0.0, p99 = 0.0;  // of the dark room's pixels, / the lit room's mean
@@ -77,12 +57,14 @@ int main(int argc, char** argv) {
   std::vector<float> thicknesses = {0.005f, 0.02f, 0.05f}, texels = {0.025f, 0.05f, 0.1f};
   int size = 96, spp = 1024;
   std::string imageDir;
+  bool uncut = false;
   CLI::App app{"Light that crosses a wall thinner than a texel, into a dark room."};
   app.add_option("--thickness", thicknesses, "dividing wall thicknesses, m")->delimiter(',');
   app.add_option("--texel-size", texels, "lightmap texel sizes, m")->delimiter(',');
   app.add_option("--size", size, "frame width = height, pixels");
   app.add_option("--spp", spp, "most samples per texel");
   app.add_option("--image-dir", imageDir, "write the dark room's full and indirect frames here");
+  app.add_flag("--uncut", uncut, "bake the surfaces as written, not cut at the wall");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto context = gl::createOSMesaContext();
@@ -95,7 +77,7 @@ int main(int argc, char** argv) {
         "lit_mean\n");
     for (const float t : thicknesses)
       for (const float texel : texels) {
-        const Scene scene = twoRooms(t);
+        const Scene scene = uncut ? test::thinWallRoomsAsWritten(t) : test::thinWallRooms(t);
         SceneBakeSettings settings = test::lightmapOnlySettings();
         settings.texelSize = texel;
         settings.spp = spp;

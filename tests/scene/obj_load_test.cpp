@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "scene/load.h"
+#include "scene/loaders.h"
 #include "scene/world_geometry.h"
 
 namespace bounce {
@@ -36,8 +37,10 @@ Extent measure(const Scene& scene) {
 
 TEST(McGuireCornellBox, OriginalLoadsWithItsLight) {
   const Scene scene = loadScene(kMcGuire + "CornellBox-Original.obj");
-  // The file has 18 `f` lines, all quads: 36 triangles.
-  EXPECT_EQ(scene.triangleCount(), 36u);
+  // The file has 18 `f` lines, all quads: 36 triangles (loadScene then splits the floor where
+  // the boxes stand on it, scene/crossing_cuts.h).
+  EXPECT_EQ(loadSceneAsWritten(kMcGuire + "CornellBox-Original.obj").triangleCount(), 36u);
+  EXPECT_GE(scene.triangleCount(), 36u);
   int emissive = 0;
   for (const Material& m : scene.materials) {
     if (!m.isEmissive()) continue;
@@ -88,9 +91,12 @@ TEST(McGuireCornellBox, SphereVariantKeepsItsNormals) {
 
 // The conference room: all 331,179 triangles of the shared scene (its README) load, with
 // finite unit normals. The load time is reported (not asserted) as the property load_seconds.
+// As written: loadScene would go on to cut surfaces where others cross them (crossing_cuts.h),
+// with a rule in metres that this file, in other units, does not meet (its wrapper
+// content/conference/conference_panels.json scales it).
 TEST(Conference, LoadsAllTriangles) {
   const auto start = std::chrono::steady_clock::now();
-  const Scene scene = loadScene(BOUNCE_SHARED_SCENES "/conference/conference.obj");
+  const Scene scene = loadSceneAsWritten(BOUNCE_SHARED_SCENES "/conference/conference.obj");
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RecordProperty("load_seconds", std::to_string(seconds));
