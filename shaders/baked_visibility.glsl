@@ -49,6 +49,25 @@ float texelVisibility(vec4 lights, vec4 visible, float light) {
   return other;
 }
 
+// V of punctual light `light` from one texel's slots where it is named, else `shared` (its
+// "every other light" slot's V when `useShared`, else 1). The shared V is exact only for the
+// others' sum with each light weighted by it, not as a bound on one light's own V.
+float texelPunctualVisibility(vec4 lights, vec4 visible, float light, bool useShared) {
+  float other = 1.0;
+  for (int s = 0; s < 4; ++s) {
+    if (lights[s] == light) return visible[s];
+    if (lights[s] == VISIBILITY_OTHER_LIGHTS) other = visible[s];
+  }
+  return useShared ? other : 1.0;
+}
+
+float bakedPunctualVisibility(BakedVisibilityTexels t, int light, bool useShared) {
+  float v = 0.0;
+  for (int k = 0; k < 4; ++k)
+    v += t.weight[k] * texelPunctualVisibility(t.lights[k], t.visible[k], float(light), useShared);
+  return v;
+}
+
 float bakedVisibility(BakedVisibilityTexels t, int light) {
   float v = 0.0;
   for (int k = 0; k < 4; ++k)

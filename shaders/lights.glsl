@@ -27,11 +27,13 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
 }
 
 // V of `light` at p: its shadow map's, and on a baked static surface the smaller of that and
-// its baked visible fraction.
+// its baked visible fraction where the texels name it. A light with a map ignores the texels'
+// shared "every other light" slot (a mix of other lights' V, no bound on its own); a light
+// without one takes it, as the area lights do.
 float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTexels baked) {
   float v = lightVisibility(light, p, ng);
   if (uHasBakedVisibility && light.bakedIndex >= 0)
-    v = min(v, bakedVisibility(baked, light.bakedIndex));
+    v = min(v, bakedPunctualVisibility(baked, light.bakedIndex, light.shadowSlot < 0));
   return v;
 }
 

@@ -1,8 +1,8 @@
 // The renderer's baked visibility of static punctual lights (shaders/lights.glsl,
 // punctualVisibility) against closed forms, on synthetic bakes: a floor texel's V scales the
 // light's exact irradiance I·cosθ/r² (the frame without a bake is that irradiance exactly);
-// V is the smaller of the baked one and the shadow map's; a light that moves (mobility dynamic)
-// or was moved since the bake (setLight) ignores the bake.
+// V is the smaller of the baked one and the shadow map's (the shared slot only without a map);
+// a light that moves (mobility dynamic) or was moved since the bake (setLight) ignores the bake.
 #include <gtest/gtest.h>
 
 #include "lightmap_scenes.h"
@@ -29,8 +29,8 @@ Scene floorUnderLamp(Mobility mobility) {
 }
 
 // A bake with a black lightmap, no area lights and every texel naming the lamp (punctual
-// light 0, visibility index 0) with V = `v`.
-Bake lampBake(const Scene& scene, float v) {
+// light 0, visibility index 0) with V = `v`, or with `shared` only its "every other light" slot.
+Bake lampBake(const Scene& scene, float v, bool shared = false) {
   Bake bake;
   bake.layout.width = bake.layout.height = kSize;
   bake.layout.texelSize = 1.0f / kSize;
@@ -46,7 +46,7 @@ Bake lampBake(const Scene& scene, float v) {
   visibility.lightCount = 0;
   visibility.punctualCount = 1;
   TexelVisibility texel;
-  texel.light[0] = visibility.punctualIndex(0);
+  texel.light[0] = shared ? kOtherLights : visibility.punctualIndex(0);
   texel.visible[0] = v;
   visibility.texels.assign(kSize * kSize, texel);
   bake.visibility = visibility;
@@ -99,6 +99,15 @@ TEST(BakedPunctualVisibility, ATexelsVisibleFractionScalesTheLampsExactIrradianc
     // Nothing casts a shadow: the lamp's cube sees the floor lit, so V = min(1, V_baked).
     expectRatio(frames(scene, bake, true), v, "shadow maps on");
   }
+}
+
+// The shared slot's V mixes other lights' visibility (exact only for their weighted sum): a lamp
+// with a shadow map ignores it, one without takes it as the area lights do.
+TEST(BakedPunctualVisibility, TheSharedSlotShadowsOnlyALampWithoutAMap) {
+  const Scene scene = floorUnderLamp(Mobility::Static);
+  const Bake bake = lampBake(scene, 0.2f, true);
+  expectRatio(frames(scene, bake, true), 1.0f, "with its cube");
+  expectRatio(frames(scene, bake, false), 0.2f, "without a map");
 }
 
 TEST(BakedPunctualVisibility, ALightThatMovesOrWasMovedIgnoresTheBake) {
