@@ -62,6 +62,9 @@ struct DenoiseGuide {
   std::vector<uint32_t> label;      // chart label, 0 = skip
   std::vector<float> relativeError;
   float texelSize = 0.0f;  // metres
+  // A pass whose step spans more than this on the surface is skipped (irradiance gradients have
+  // a world-space scale).
+  float maxStepMetres = 0.61f;
 };
 void denoise(Image& image, const DenoiseGuide& guide);
 

@@ -51,7 +51,7 @@ struct IrradianceSettings {
 inline constexpr int kIrradianceBatch = 16;
 // The error estimate is trusted from two batches on (at 16 samples its own relative
 // uncertainty, 1/√(2(n−1)) ≈ 18%, stops too many texels early on a lucky estimate).
-inline constexpr uint32_t kMinAdaptiveSpp = 32;
+inline constexpr uint32_t kMinAdaptiveSpp = 128;
 
 struct TexelIrradiance {
   Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered
