@@ -116,9 +116,11 @@ TEST(FurnaceFrame, DefaultBakeIsWithinThreePercentEverywhere) {
   const FrameError e = frameError(frame);
   std::printf(
       "default furnace %dx%d atlas, texel %.4f m: bias %+.4f, mean |rel| %.4f, worst %.4f at "
-      "(%d, %d), pixels over 1%%: %d, over 3%%: %d of %d; texel error mean %.4f\n",
+      "(%d, %d), pixels over 1%%: %d, over 3%%: %d of %d; texel error mean %.4f; %.1f spp, "
+      "irradiance %.2f s\n",
       baked.layout.width, baked.layout.height, baked.layout.texelSize, e.bias, e.mean, e.worst,
-      e.worstX, e.worstY, e.over1, e.over3, kSize * kSize, baked.manifest.estimatedError.mean);
+      e.worstX, e.worstY, e.over1, e.over3, kSize * kSize, baked.manifest.estimatedError.mean,
+      baked.manifest.samples.perTexelMean, baked.manifest.measured.seconds.irradiance);
   EXPECT_LE(e.worst, 0.03) << "at (" << e.worstX << ", " << e.worstY << ")";
   EXPECT_LE(std::abs(e.bias), 0.01);
 }
