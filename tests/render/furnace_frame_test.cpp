@@ -107,8 +107,8 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
 // Issue 15: the default bake (10% target error per texel) must put every pixel of the furnace
 // within 3% of the exact value, at CI size (4096 texels, 7.6 cm). 3% is the issue's bound. The
 // noise at this size: texels carry 6.7% estimated relative error before the denoiser (≈ 300 spp);
-// after it the pixels' mean |rel| is 0.3% and the worst of 4096 2.5%, so the bound holds with
-// room for another seed, and fails with the old filter (worst 6.0%) or the old stop from 32
+// after it the pixels' mean |rel| is 0.3% and the worst of 4096 2.5% (this seed; others not
+// measured), and the test fails with the old filter (worst 6.0%) or the old stop from 32
 // samples (bias −1.7%, worst 5.0%).
 TEST(FurnaceFrame, DefaultBakeIsWithinThreePercentEverywhere) {
   const auto [scene, camera] = furnace();
