@@ -236,15 +236,22 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
 }
 
 void denoise(Image& image, const DenoiseGuide& guide) {
-  static constexpr float kStop = 1.5f;
-  static constexpr float kMaxStepMetres = 0.05f;
+  static constexpr float kStop = 2.0f;
   static constexpr std::array<float, 5> kB3 = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
   const int w = image.width, h = image.height;
+  // Variance of each texel's luminance, (W/m²)²: the sampler's estimate, then carried through
+  // each pass as a weighted mean's variance, Σ w_j²·var_j / (Σ w_j)² (independent texels), so a
+  // later, wider pass only merges differences that the noise left after the earlier ones cannot
+  // explain.
+  std::vector<float> variance(image.pixels.size(), 0.0f);
+  for (std::size_t i = 0; i < variance.size(); ++i) {
+    const float sigma = guide.relativeError[i] * luminance(image.pixels[i]);
+    variance[i] = sigma * sigma;
+  }
   Image next = image;
-  for (const int step : {1, 2, 4}) {
-    // Irradiance gradients have a world-space scale: a pass whose step spans more than
-    // kMaxStepMetres blurs them (measured: 2.2 cm texels, docs/baker.md), so it is skipped.
-    if (step > 1 && static_cast<float>(step) * guide.texelSize > kMaxStepMetres) break;
+  std::vector<float> nextVariance = variance;
+  for (const int step : {1, 2, 4, 8}) {
+    if (step > 1 && static_cast<float>(step) * guide.texelSize > guide.maxStepMetres) break;
     // Position tolerance grows with the step so that the kernel's reach is not cut off.
     const float sigmaPosition = static_cast<float>(step) * guide.texelSize;
     const float invTwoSigma2 =
@@ -254,12 +261,11 @@ void denoise(Image& image, const DenoiseGuide& guide) {
         const std::size_t i = image.index(x, y);
         if (guide.label[i] == 0) continue;
         const float li = luminance(image.pixels[i]);
-        const float sigmaI = guide.relativeError[i] * li;
         // A texel no light reaches (every sample exactly 0) is exact: nothing to denoise, and
         // light from a neighbour across a thin wall must not blur into it.
-        if (li == 0.0f && sigmaI == 0.0f) continue;
+        if (li == 0.0f && variance[i] == 0.0f) continue;
         glm::vec3 sum(0.0f);
-        float weightSum = 0.0f;
+        float weightSum = 0.0f, weight2Variance = 0.0f;
         for (int dy = -2; dy <= 2; ++dy) {
           for (int dx = -2; dx <= 2; ++dx) {
             const int nx = x + dx * step, ny = y + dy * step;
@@ -274,8 +280,7 @@ void denoise(Image& image, const DenoiseGuide& guide) {
             // Luminance edge-stopping at kStop combined standard errors: a difference the noise
             // cannot explain is a real gradient (a shadow, a corner) and is kept.
             const float lj = luminance(image.pixels[j]);
-            const float sigmaJ = guide.relativeError[j] * lj;
-            const float sigma2 = kStop * kStop * (sigmaI * sigmaI + sigmaJ * sigmaJ);
+            const float sigma2 = kStop * kStop * (variance[i] + variance[j]);
             const float dl = li - lj;
             if (sigma2 > 0.0f)
               weight *= std::exp(-dl * dl / (2.0f * sigma2));
@@ -283,12 +288,17 @@ void denoise(Image& image, const DenoiseGuide& guide) {
               weight = 0.0f;
             sum += weight * image.pixels[j];
             weightSum += weight;
+            weight2Variance += weight * weight * variance[j];
           }
         }
-        if (weightSum > 0.0f) next.pixels[i] = sum / weightSum;
+        if (weightSum > 0.0f) {
+          next.pixels[i] = sum / weightSum;
+          nextVariance[i] = weight2Variance / (weightSum * weightSum);
+        }
       }
     }
     image = next;
+    variance = nextVariance;
   }
 }
 

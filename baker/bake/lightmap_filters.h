@@ -51,18 +51,22 @@ float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations =
 // Largest |bilinear(side a) − bilinear(side b)| (luminance) over the seams' points, W/m².
 float largestSeamJump(const Image& image, const std::vector<Seam>& seams);
 
-// Edge-aware à-trous denoiser (up to 3 passes of a 5×5 B3-spline kernel, steps 1, 2, 4; a step
-// longer than 5 cm on the surface is skipped), guided per
-// texel by world position (σ = step × texel size), normal (cos³²) and chart label; never mixes
-// texels of different labels, and weighs luminance differences by a Gaussian of 1.5 combined
-// standard errors (σ = relativeError × value), so differences the noise cannot explain stay.
-// Texels with label 0 are left alone and never used.
+// Edge-aware à-trous denoiser (up to 4 passes of a 5×5 B3-spline kernel, steps 1, 2, 4, 8; a
+// step longer than maxStepMetres on the surface is skipped), guided per texel by world position
+// (σ = step × texel size), normal (cos³²) and chart label; never mixes texels of different
+// labels, and weighs luminance differences by a Gaussian of 2 combined standard errors, each
+// texel's variance being (relativeError × value)² at first and then the variance of the weighted
+// mean it became, carried through the passes: differences the remaining noise cannot explain
+// stay. Texels with label 0 are left alone and never used.
 struct DenoiseGuide {
   std::vector<glm::vec3> position;  // world, metres (mean of the texel's points)
   std::vector<glm::vec3> normal;    // unit
   std::vector<uint32_t> label;      // chart label, 0 = skip
   std::vector<float> relativeError;
   float texelSize = 0.0f;  // metres
+  // A pass whose step spans more than this on the surface is skipped (irradiance gradients have
+  // a world-space scale).
+  float maxStepMetres = 0.61f;
 };
 void denoise(Image& image, const DenoiseGuide& guide);
 

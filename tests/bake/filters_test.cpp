@@ -1,6 +1,9 @@
 // Dilation, chart labels, seam stitching and the denoiser on small images.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "bake/lightmap_filters.h"
 #include "trace/sampling.h"
 
@@ -105,6 +108,44 @@ TEST(Denoiser, SmoothsNoiseWithinAChartButNeverAcrossCharts) {
     }
   }
   EXPECT_LT(after, 0.25 * noisy);
+}
+
+// A light edge whose step is well beyond the noise is kept: one 48×16 chart (2 cm texels) lit
+// E = 1 W/m² on the left half and 2 W/m² on the right, each texel with 10% Gaussian noise (the
+// default target error). The step, 1 W/m², is 4.5 combined standard errors of two texels across
+// it (√(0.1² + 0.2²) = 0.22 W/m²). Averaged along the edge (16 texels), the column on each side
+// of it has a standard error of 10%/4 = 2.5% before denoising; a filter without the luminance
+// weight would pull it ~25% towards the other side. Bound: within 5% of its side's value.
+TEST(Denoiser, KeepsALightEdgeWellBeyondTheNoise) {
+  const int w = 48, h = 16;
+  Image image(w, h);
+  DenoiseGuide guide;
+  guide.texelSize = 0.02f;
+  guide.position.resize(w * h);
+  guide.normal.assign(w * h, glm::vec3(0, 0, 1));
+  guide.label.assign(w * h, 1);
+  guide.relativeError.assign(w * h, 0.1f);
+  std::mt19937 random(7);
+  std::normal_distribution<float> noise(0.0f, 0.1f);
+  auto truth = [](int x) { return x < 24 ? 1.0f : 2.0f; };
+  double noisy = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = image.index(x, y);
+      guide.position[i] = glm::vec3(0.02f * x, 0.02f * y, 0);
+      image.pixels[i] = glm::vec3(truth(x) * (1.0f + noise(random)));
+      noisy += std::pow(image.pixels[i].x / truth(x) - 1.0, 2);
+    }
+  denoise(image, guide);
+  double after = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) after += std::pow(image.at(x, y).x / truth(x) - 1.0, 2);
+  for (const int x : {23, 24}) {
+    double column = 0.0;
+    for (int y = 0; y < h; ++y) column += image.at(x, y).x / h;
+    EXPECT_NEAR(column / truth(x), 1.0, 0.05) << "column " << x;
+  }
+  EXPECT_LT(after, 0.25 * noisy);  // and the noise away from the edge is smoothed
 }
 
 }  // namespace
