@@ -306,7 +306,10 @@ std::vector<CrossingPlane> crossingPlanes(const WorldTriangle& w, const Triangle
     if (std::abs(glm::dot(b.n, w.n)) > kParallelCosine || sharesAnEdge(w, b)) continue;
     // Canonical orientations, so that the crossers of one plane group together and the
     // receivers of one plane share their lines.
-    auto [n, d] = canonical(b.n, b.d);
+    // Plain variables, not a structured binding: clang 14 cannot capture those in a lambda.
+    const std::pair<glm::dvec3, double> crosser = canonical(b.n, b.d);
+    const glm::dvec3 n = crosser.first;
+    const double d = crosser.second;
     const auto [wn, wd] = canonical(w.n, w.d);
     const glm::dvec3 u = glm::normalize(glm::cross(wn, n));
     double s0, s1, c0, c1;
