@@ -92,7 +92,7 @@ vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTe
     int slot = areaShadowSlot(int(rows.x));
     if (uHasBakedVisibility && l < uBakedLightCount) {
       // The static occluders are baked; the dynamic ones come from their own cubes.
-      e *= bakedVisibility(baked, l);
+      e *= bakedVisibility(baked, l, true);
       if (uAreaDynamicShadows && slot >= 0) e *= areaVisibility(slot, p, ng, true);
     } else if (slot >= 0) {
       e *= areaVisibility(slot, p, ng, false);

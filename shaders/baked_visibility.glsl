@@ -39,20 +39,11 @@ BakedVisibilityTexels bakedVisibilityTexels(vec2 atlasUv, vec2 size) {
   return t;
 }
 
-// V of static light `light` from one texel's slots.
-float texelVisibility(vec4 lights, vec4 visible, float light) {
-  float other = 1.0;
-  for (int s = 0; s < 4; ++s) {
-    if (lights[s] == light) return visible[s];
-    if (lights[s] == VISIBILITY_OTHER_LIGHTS) other = visible[s];
-  }
-  return other;
-}
-
-// V of punctual light `light` from one texel's slots where it is named, else `shared` (its
-// "every other light" slot's V when `useShared`, else 1). The shared V is exact only for the
-// others' sum with each light weighted by it, not as a bound on one light's own V.
-float texelPunctualVisibility(vec4 lights, vec4 visible, float light, bool useShared) {
+// V of static light `light` from one texel's slots: its own slot's V where the texel names it,
+// else the "every other light" slot's V when `useShared` (else 1: the light brought the texel
+// nothing). The shared V is exact for the others' sum, each light weighted by it, not a bound
+// on one light's own V: a punctual light with a shadow map does not use it (lights.glsl).
+float texelVisibility(vec4 lights, vec4 visible, float light, bool useShared) {
   float other = 1.0;
   for (int s = 0; s < 4; ++s) {
     if (lights[s] == light) return visible[s];
@@ -61,16 +52,9 @@ float texelPunctualVisibility(vec4 lights, vec4 visible, float light, bool useSh
   return useShared ? other : 1.0;
 }
 
-float bakedPunctualVisibility(BakedVisibilityTexels t, int light, bool useShared) {
+float bakedVisibility(BakedVisibilityTexels t, int light, bool useShared) {
   float v = 0.0;
   for (int k = 0; k < 4; ++k)
-    v += t.weight[k] * texelPunctualVisibility(t.lights[k], t.visible[k], float(light), useShared);
-  return v;
-}
-
-float bakedVisibility(BakedVisibilityTexels t, int light) {
-  float v = 0.0;
-  for (int k = 0; k < 4; ++k)
-    v += t.weight[k] * texelVisibility(t.lights[k], t.visible[k], float(light));
+    v += t.weight[k] * texelVisibility(t.lights[k], t.visible[k], float(light), useShared);
   return v;
 }

@@ -33,7 +33,7 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
 float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTexels baked) {
   float v = lightVisibility(light, p, ng);
   if (uHasBakedVisibility && light.bakedIndex >= 0)
-    v = min(v, bakedPunctualVisibility(baked, light.bakedIndex, light.shadowSlot < 0));
+    v = min(v, bakedVisibility(baked, light.bakedIndex, light.shadowSlot < 0));
   return v;
 }
 
