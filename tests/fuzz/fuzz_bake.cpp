@@ -59,20 +59,24 @@ const ValidBake& valid() {
   std::abort();
 }
 
-// The renderer indexes its static area lights by these and scales their irradiance by V.
+// The renderer indexes its static lights by these and scales their irradiance by V.
 void checkVisibility(const bounce::BakedVisibility& visibility,
                      const bounce::LightmapLayout& layout, const bounce::Scene& scene) {
   if (visibility.width != layout.width || visibility.height != layout.height ||
       visibility.texels.size() !=
           static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height))
     finding("visibility size disagrees with the layout");
-  const std::size_t lights = bounce::sceneAreaLights(scene).staticCount();
-  if (visibility.lightCount != lights) finding("visibility light count is not the scene's");
+  const std::size_t areaLights = bounce::sceneAreaLights(scene).staticCount();
+  if (visibility.lightCount != areaLights) finding("visibility light count is not the scene's");
+  if (visibility.punctualCount != scene.lights.size())
+    finding("visibility punctual light count is not the scene's");
+  // Indices name the static area lights, then the punctual ones (bake_folder/light_visibility.h).
+  const std::size_t lights = areaLights + scene.lights.size();
   for (const bounce::TexelVisibility& texel : visibility.texels)
     for (int s = 0; s < bounce::kVisibilitySlots; ++s) {
       const uint16_t l = texel.light[s];
       if (l != bounce::kNoLight && l != bounce::kOtherLights && l >= lights)
-        finding("visibility names a light index >= the static area-light count");
+        finding("visibility names a light index >= the static area and punctual lights");
       if (!std::isfinite(texel.visible[s]) || texel.visible[s] < 0.0f || texel.visible[s] > 1.0f)
         finding("visible fraction V not finite or outside [0, 1]");
     }
