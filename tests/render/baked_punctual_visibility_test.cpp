@@ -34,10 +34,7 @@ Bake lampBake(const Scene& scene, float v, bool shared = false) {
   Bake bake;
   bake.layout.width = bake.layout.height = kSize;
   bake.layout.texelSize = 1.0f / kSize;
-  const Mesh& floor = scene.meshes[scene.instances[0].mesh];
-  InstanceLightmapUv region{0, {}};
-  for (uint32_t index : floor.indices)
-    region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
+  const InstanceLightmapUv region = unitFloorRegion(scene);
   bake.layout.instances = {region};
   bake.irradiance = Image(kSize, kSize);
   bake.manifest = minimalManifest(scene);

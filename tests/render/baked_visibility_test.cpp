@@ -33,10 +33,7 @@ Bake visibilityBake(const Scene& scene, Record record) {
   Bake bake;
   bake.layout.width = bake.layout.height = kSize;
   bake.layout.texelSize = 1.0f / kSize;
-  const Mesh& floor = scene.meshes[scene.instances[0].mesh];
-  InstanceLightmapUv region{0, {}};
-  for (uint32_t index : floor.indices)
-    region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
+  const InstanceLightmapUv region = unitFloorRegion(scene);
   // The panel is lightmapped too (it is static), with a region of its own in the last texel.
   InstanceLightmapUv panel{1, {}};
   for (std::size_t i = 0; i < scene.meshes[1].indices.size(); ++i)

@@ -60,6 +60,16 @@ inline uint32_t addInstance(Scene& scene, Mesh mesh, const Material& material,
 
 // A hand-made manifest for a bake held in memory: format version and the scene's hash (writeBake
 // also needs the atlas size and regions of the layout: manifestFor).
+// The atlas region of a floor in the square |x|, |z| ≤ ½ m (instance 0 of `scene`), laid out
+// u = x + ½, v = z + ½: a texel's world position follows from its atlas position.
+inline InstanceLightmapUv unitFloorRegion(const Scene& scene) {
+  const Mesh& floor = scene.meshes[scene.instances[0].mesh];
+  InstanceLightmapUv region{0, {}};
+  for (uint32_t index : floor.indices)
+    region.cornerUv.push_back({floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f});
+  return region;
+}
+
 inline BakeManifest minimalManifest(const Scene& scene) {
   BakeManifest manifest;
   manifest.sceneHash = sceneContentHash(scene);
