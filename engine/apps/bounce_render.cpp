@@ -16,6 +16,7 @@
 #include "gl/shader.h"
 #include "image/image_io.h"
 #include "render/forward_renderer.h"
+#include "render/punctual_shadow_budget.h"
 #include "render/view.h"
 #include "scene/framing.h"
 #include "scene/instance_move.h"
@@ -165,6 +166,11 @@ int run(const Options& options) {
                  grid.clusters, static_cast<double>(grid.punctualEntries) / grid.clusters,
                  static_cast<double>(grid.areaEntries) / grid.clusters, grid.maxPunctual,
                  grid.maxArea, static_cast<double>(settings.lightCulling.irradianceFloor));
+  if (std::count(renderer.punctualShadowSlots().begin(), renderer.punctualShadowSlots().end(), -1) >
+      0)
+    std::fprintf(
+        stderr, "bounce-render: %s\n",
+        bounce::describePunctualShadowMaps(scene.lights, renderer.punctualShadowSlots()).c_str());
   if (renderer.areaShadowSlots() > 0)
     std::fprintf(
         stderr, "bounce-render: %s\n",

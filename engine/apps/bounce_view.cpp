@@ -46,6 +46,7 @@
 #include "image/image_io.h"
 #include "render/fly_camera.h"
 #include "render/forward_renderer.h"
+#include "render/punctual_shadow_budget.h"
 #include "render/reference_compare_pass.h"
 #include "render/tonemap_pass.h"
 #include "render/view.h"
@@ -577,7 +578,7 @@ class Viewer {
   // The area-light cube budget, logged whenever its choice changes (the camera or a dynamic
   // instance moved): which lights have a cube, what the rest bring.
   void reportAreaShadowChoice() {
-    const bounce::AreaShadowChoice& choice = renderer_.areaShadowChoice();
+    const bounce::ShadowChoice& choice = renderer_.areaShadowChoice();
     if (renderer_.areaShadowSlots() == 0 ||
         (choice.lights == reportedLights_ && choice.unshadowed == reportedUnshadowed_))
       return;
@@ -585,6 +586,18 @@ class Viewer {
     reportedUnshadowed_ = choice.unshadowed;
     std::fprintf(stderr, "bounce-view: %s\n",
                  bounce::describeAreaShadowChoice(choice, renderer_.areaShadowSlots()).c_str());
+  }
+
+  // The punctual lights' maps, logged whenever a light gains or loses one (a kind with more
+  // lights than maps gives them to those that bring the most to the view).
+  void reportPunctualShadowMaps() {
+    const std::span<const int> slots = renderer_.punctualShadowSlots();
+    std::vector<bool> now;
+    for (const int slot : slots) now.push_back(slot >= 0);
+    if (now == reportedMaps_ || std::find(now.begin(), now.end(), false) == now.end()) return;
+    reportedMaps_ = now;
+    std::fprintf(stderr, "bounce-view: %s\n",
+                 bounce::describePunctualShadowMaps(scene_.lights, slots).c_str());
   }
 
   void draw() {
@@ -600,6 +613,7 @@ class Viewer {
     }
     renderer_.render(fly_->camera(), *target_);
     reportAreaShadowChoice();
+    reportPunctualShadowMaps();
     if (comparing()) {
       if (!compared_ || compared_->width() != size.x || compared_->height() != size.y)
         compared_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
@@ -661,6 +675,7 @@ class Viewer {
   std::vector<std::string> bakeNotes_;
   std::vector<uint32_t> reportedLights_;  // the area-light cube choice last logged
   std::size_t reportedUnshadowed_ = static_cast<std::size_t>(-1);
+  std::vector<bool> reportedMaps_;  // which punctual lights had a map when last logged
   bounce::gl::Window window_;
   bounce::ForwardRenderer renderer_;
   bounce::TonemapPass tonemap_;

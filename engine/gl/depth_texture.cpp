@@ -48,6 +48,13 @@ DepthTexture2D::~DepthTexture2D() {
 DepthTexture2D::DepthTexture2D(DepthTexture2D&& other) noexcept
     : id_(std::exchange(other.id_, 0)), width_(other.width_), height_(other.height_) {}
 
+DepthTexture2D& DepthTexture2D::operator=(DepthTexture2D&& other) noexcept {
+  std::swap(id_, other.id_);
+  width_ = other.width_;
+  height_ = other.height_;
+  return *this;
+}
+
 void DepthTexture2D::bind(int unit) const {
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
   glBindTexture(GL_TEXTURE_2D, id_);
@@ -73,6 +80,12 @@ DepthCubeMap::~DepthCubeMap() {
 
 DepthCubeMap::DepthCubeMap(DepthCubeMap&& other) noexcept
     : id_(std::exchange(other.id_, 0)), size_(other.size_) {}
+
+DepthCubeMap& DepthCubeMap::operator=(DepthCubeMap&& other) noexcept {
+  std::swap(id_, other.id_);
+  size_ = other.size_;
+  return *this;
+}
 
 void DepthCubeMap::bind(int unit) const {
   glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));

@@ -14,7 +14,8 @@ class DepthTexture2D {
   DepthTexture2D(int width, int height);
   ~DepthTexture2D();
   DepthTexture2D(DepthTexture2D&& other) noexcept;
-  DepthTexture2D& operator=(DepthTexture2D&&) = delete;
+  // The moved-from texture takes this one's name and deletes it.
+  DepthTexture2D& operator=(DepthTexture2D&& other) noexcept;
   DepthTexture2D(const DepthTexture2D&) = delete;
   DepthTexture2D& operator=(const DepthTexture2D&) = delete;
 
@@ -35,7 +36,7 @@ class DepthCubeMap {
   explicit DepthCubeMap(int size);
   ~DepthCubeMap();
   DepthCubeMap(DepthCubeMap&& other) noexcept;
-  DepthCubeMap& operator=(DepthCubeMap&&) = delete;
+  DepthCubeMap& operator=(DepthCubeMap&& other) noexcept;
   DepthCubeMap(const DepthCubeMap&) = delete;
   DepthCubeMap& operator=(const DepthCubeMap&) = delete;
 

@@ -48,21 +48,8 @@ float largestIrradiance(const AreaLightSet& set, std::size_t light, glm::vec3 p)
   return std::min(static_cast<float>(glm::length(sum)), std::numbers::pi_v<float> * radiance);
 }
 
-std::vector<glm::vec3> viewSamplePoints(const Frustum& frustum, const Box& box, int perAxis) {
-  std::vector<glm::vec3> points;
-  if (box.empty() || perAxis <= 0) return points;
-  const glm::vec3 cell = (box.upper - box.lower) / static_cast<float>(perAxis);
-  for (int i = 0; i < perAxis; ++i)
-    for (int j = 0; j < perAxis; ++j)
-      for (int k = 0; k < perAxis; ++k) {
-        const glm::vec3 p = box.lower + cell * (glm::vec3(i, j, k) + 0.5f);
-        if (frustum.overlaps(Box{p, p})) points.push_back(p);
-      }
-  return points;
-}
-
 std::vector<float> areaLightContributions(const AreaLightSet& set,
-                                          const AreaShadowReceivers& receivers) {
+                                          const AreaShadowReceivers& receivers, float floor) {
   std::vector<float> contribution(set.lights.size(), 0.0f);
   for (std::size_t l = 0; l < set.lights.size(); ++l) {
     const AreaLight& light = set.lights[l];
@@ -80,45 +67,16 @@ std::vector<float> areaLightContributions(const AreaLightSet& set,
         c = std::max(c, largestIrradiance(set, l, p));
       }
     }
-    if (l >= receivers.bakedVisibilityLights && !receivers.viewPoints.empty()) {
-      double sum = 0.0;
-      for (const glm::vec3& p : receivers.viewPoints) sum += largestIrradiance(set, l, p);
-      c = std::max(c, static_cast<float>(sum / static_cast<double>(receivers.viewPoints.size())));
-    }
-    contribution[l] = c;
+    const ShadowReceivers::Stats view =
+        l >= receivers.bakedVisibilityLights
+            ? receivers.viewStats([&](glm::vec3 p) { return largestIrradiance(set, l, p); })
+            : ShadowReceivers::Stats{};
+    contribution[l] = shadowContribution(c, view, floor);
   }
   return contribution;
 }
 
-AreaShadowChoice chooseShadowedAreaLights(std::span<const float> contributions, int slots,
-                                          float floor, std::span<const uint32_t> previous) {
-  AreaShadowChoice choice;
-  std::vector<uint32_t> order;
-  for (uint32_t l = 0; l < contributions.size(); ++l) {
-    choice.totalContribution += contributions[l];
-    if (contributions[l] >= floor && contributions[l] > 0.0f) order.push_back(l);
-  }
-  // A light holding a slot ranks 10% higher: a rival must bring clearly more to take it.
-  const auto rank = [&](uint32_t l) {
-    const bool held = std::find(previous.begin(), previous.end(), l) != previous.end();
-    return contributions[l] * (held ? 1.1f : 1.0f);
-  };
-  std::stable_sort(order.begin(), order.end(),
-                   [&](uint32_t a, uint32_t b) { return rank(a) > rank(b); });
-  const std::size_t kept = std::min(order.size(), static_cast<std::size_t>(std::max(slots, 0)));
-  choice.lights.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(kept));
-  for (std::size_t i = kept; i < order.size(); ++i) {
-    ++choice.unshadowed;
-    choice.unshadowedContribution += contributions[order[i]];
-    choice.largestUnshadowed = std::max(choice.largestUnshadowed, contributions[order[i]]);
-  }
-  // Largest contribution first (the 10% rule only decides membership).
-  std::stable_sort(choice.lights.begin(), choice.lights.end(),
-                   [&](uint32_t a, uint32_t b) { return contributions[a] > contributions[b]; });
-  return choice;
-}
-
-std::string describeAreaShadowChoice(const AreaShadowChoice& choice, int slots) {
+std::string describeAreaShadowChoice(const ShadowChoice& choice, int slots) {
   const auto number = [](double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);

@@ -16,8 +16,7 @@
 // Φ Lambert's vector irradiance (per unit radiance: ½ Σ_edges θ_e·Γ_e); its largest value over n
 // is L·|Φ|, never more than π·L. Lights with C_l at or above the renderer's irradiance floor
 // (light_culling.h: below it a light is not shaded at all) compete for the slots, largest
-// first; a light that holds a slot keeps it against a rival bringing less than 10% more (no
-// flicker between near-equal lights as the camera moves).
+// first (chooseShadowedLights, shadow_choice.h).
 #pragma once
 
 #include <cstdint>
@@ -27,7 +26,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/frustum.h"
+#include "render/shadow_choice.h"
 #include "scene/area_lights.h"
 #include "scene/box.h"
 
@@ -43,17 +42,8 @@ constexpr int areaShadowSlotCapacity(int maxArrayLayers) {
   return maxArrayLayers / 6 < kMaxAreaShadows ? maxArrayLayers / 6 : kMaxAreaShadows;
 }
 
-// Where the cubes are read, world metres.
-struct AreaShadowReceivers {
-  struct Dynamic {
-    Box box;
-    uint32_t instance = 0;  // its own lights are not ranked at its box (it is lit by them, not
-                            // shadowed: its surface is the light)
-  };
-  std::vector<Dynamic> dynamics;
-  // Points standing for the visible static surfaces (viewSamplePoints); empty when none reads
-  // the all-caster cubes.
-  std::vector<glm::vec3> viewPoints;
+// Where the cubes are read (shadow_choice.h), and which lights static surfaces read them for.
+struct AreaShadowReceivers : ShadowReceivers {
   // Lights [0, n) have baked visibility on every static surface: the view points do not rank
   // them (static surfaces never read their cubes).
   std::size_t bakedVisibilityLights = 0;
@@ -66,30 +56,13 @@ struct AreaShadowReceivers {
 // single-sided light.
 float largestIrradiance(const AreaLightSet& set, std::size_t light, glm::vec3 p);
 
-// perAxis³ grid points of `box` (cell centres) that lie inside `frustum`: the visible volume.
-std::vector<glm::vec3> viewSamplePoints(const Frustum& frustum, const Box& box, int perAxis = 4);
-
-// C_l of every light of `set` (W/m², see above), in the set's order.
+// C_l of every light of `set` (W/m², see above; 0 for a light under `floor` everywhere the
+// cubes are read, shadowContribution), in the set's order.
 std::vector<float> areaLightContributions(const AreaLightSet& set,
-                                          const AreaShadowReceivers& receivers);
-
-struct AreaShadowChoice {
-  std::vector<uint32_t> lights;  // the shadowed lights, largest contribution first
-  // Lights at or above the floor left without a cube (the slots ran out) and their summed
-  // contribution; every light's summed contribution. W/m².
-  std::size_t unshadowed = 0;
-  double unshadowedContribution = 0.0;
-  double totalContribution = 0.0;
-  float largestUnshadowed = 0.0f;  // the strongest of them, W/m²
-};
-
-// At most `slots` lights with contribution ≥ `floor` (W/m²), largest first; `previous` holds
-// the lights that had a cube (they win ties up to 10%).
-AreaShadowChoice chooseShadowedAreaLights(std::span<const float> contributions, int slots,
-                                          float floor, std::span<const uint32_t> previous = {});
+                                          const AreaShadowReceivers& receivers, float floor = 0.0f);
 
 // One sentence for the renderer's log: how many lights have a cube of how many slots, and what
 // the lights left without one bring (count, summed and largest contribution, share).
-std::string describeAreaShadowChoice(const AreaShadowChoice& choice, int slots);
+std::string describeAreaShadowChoice(const ShadowChoice& choice, int slots);
 
 }  // namespace bounce

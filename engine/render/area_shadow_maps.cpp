@@ -4,6 +4,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/texture.h"
+#include "render/shadow_receivers.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -28,36 +29,10 @@ void AreaShadowMaps::add(const GpuScene& scene) {
 
 AreaShadowReceivers AreaShadowMaps::receivers(const GpuScene& scene, const ViewVolume& view) const {
   AreaShadowReceivers where;
-  const std::span<const GpuInstance> instances = scene.instances();
-  // A dynamic instance near the view: its box meets the visible volume's box (a caster just
-  // outside the frustum may still throw its shadow into it).
-  for (std::size_t i = 0; i < instances.size(); ++i)
-    if (instances[i].mobility == Mobility::Dynamic &&
-        !intersect(instances[i].worldBox, view.box).empty())
-      where.dynamics.push_back({instances[i].worldBox, static_cast<uint32_t>(i)});
   // Static surfaces read the all-caster cubes of every light without baked visibility.
-  // Their surfaces lie in the static, non-emitting instances' boxes: points of each box's
-  // visible part stand for them (a light's mean over the air of the view would count the space
-  // around the light itself).
-  if (allCastersNeeded_ && bakedVisibilityLights_ < scene.areaLights().lights.size())
-    for (const GpuInstance& instance : instances) {
-      if (instance.mobility != Mobility::Static ||
-          scene.materials()[instance.material].emission != glm::vec3(0.0f))
-        continue;
-      const Box visible = intersect(instance.worldBox, view.box);
-      if (visible.empty() || !view.frustum.overlaps(visible)) continue;
-      for (const glm::vec3& p : viewSamplePoints(view.frustum, visible, 3))
-        where.viewPoints.push_back(p);
-    }
-  // Every frame costs lights × points polygon evaluations: a scene of many instances keeps an
-  // even spread of at most kMaxViewPoints.
-  constexpr std::size_t kMaxViewPoints = 512;
-  if (where.viewPoints.size() > kMaxViewPoints) {
-    std::vector<glm::vec3> spread;
-    for (std::size_t k = 0; k < kMaxViewPoints; ++k)
-      spread.push_back(where.viewPoints[k * where.viewPoints.size() / kMaxViewPoints]);
-    where.viewPoints = std::move(spread);
-  }
+  static_cast<ShadowReceivers&>(where) = shadowReceivers(
+      scene, view, allCastersNeeded_ && bakedVisibilityLights_ < scene.areaLights().lights.size(),
+      view.eye);
   where.bakedVisibilityLights = bakedVisibilityLights_;
   where.bakedDirectSkipped = bakedDirectSkipped_;
   return where;
@@ -134,8 +109,9 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
   for (const Cube& cube : cubes_)
     if (cube.occupied) held.push_back(static_cast<uint32_t>(cube.index));
   const std::vector<float> contribution =
-      areaLightContributions(scene.areaLights(), receivers(scene, view));
-  choice_ = chooseShadowedAreaLights(contribution, slots_, floor, held);
+      areaLightContributions(scene.areaLights(), receivers(scene, view), floor);
+  // The floor is in the contributions: a light under it everywhere the cubes are read has 0.
+  choice_ = chooseShadowedLights(contribution, slots_, 0.0f, held);
   assign(scene, choice_.lights);
 
   const Box sceneBox = scene.bounds();

@@ -32,7 +32,7 @@ class AreaShadowMaps {
   // Readies the cubes of `scene`'s area lights (which lights get one is chosen per frame).
   void add(const GpuScene& scene);
   // Chooses the lights for this view and the dynamic instances where they stand
-  // (chooseShadowedAreaLights over `floor`, W/m², the renderer's irradiance floor; a light
+  // (chooseShadowedLights over `floor`, W/m², the renderer's irradiance floor; a light
   // keeps its slot while chosen), then renders the faces that may reach the view and are not
   // already up to date (the others are cleared to the far plane: soft-shadow taps may stray
   // into them from a visible receiver). A face is redrawn when its slot got another light, an
@@ -55,7 +55,7 @@ class AreaShadowMaps {
   // With a bake, lights with AreaLight::bakeDirect are not drawn: they need no cube.
   void setBakedDirectSkipped(bool skipped) { bakedDirectSkipped_ = skipped; }
   // The last frame's choice (which lights have a cube, what the rest bring) and the slots.
-  const AreaShadowChoice& lastChoice() const { return choice_; }
+  const ShadowChoice& lastChoice() const { return choice_; }
   int slots() const { return slots_; }
 
  private:
@@ -83,7 +83,7 @@ class AreaShadowMaps {
   std::optional<gl::DepthValueSampler> sampler_;
   int resolution_ = 0;  // texels per face side, every slot's
   int slots_ = 0;       // most cubes at once (areaShadowSlotCapacity, at most the lights)
-  AreaShadowChoice choice_;
+  ShadowChoice choice_;
   std::vector<glm::mat4> drawnModels_;  // every instance's model when the faces were drawn
   int emitterVersion_ = -1;
   std::size_t bakedVisibilityLights_ = 0;

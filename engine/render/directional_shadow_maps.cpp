@@ -24,7 +24,10 @@ int DirectionalShadowMaps::add(const Light& light) {
 ShadowDrawCount DirectionalShadowMaps::render(const GpuScene& scene, const Camera& camera,
                                               float aspect, gl::DepthTarget& target) {
   ShadowDrawCount count;
-  if (!light_) return count;
+  if (!light_ || released_) {
+    cascades_.clear();
+    return count;
+  }
   const Box box = scene.bounds();
   const Bounds bounds{box.lower, box.upper, box.empty()};
   camera_ = camera;

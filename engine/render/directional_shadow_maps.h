@@ -1,7 +1,7 @@
 // Directional-light shadows: cascaded orthographic depth maps fitted to the camera's frustum
 // each frame (render/cascades.h), the cascades as the four tiles of one depth atlas read by
-// shaders/shadow_directional.glsl. One directional light is shadowed: the first in the scene
-// (a warning says when more exist).
+// shaders/shadow_directional.glsl. One directional light is shadowed at a time: the first in the
+// scene until the shadow pass chooses the one that brings the most (punctual_shadow_budget.h).
 #pragma once
 
 #include <optional>
@@ -22,8 +22,15 @@ class DirectionalShadowMaps {
 
   // Gives `light` (directional) the cascades; returns 0, or −1 when another light has them.
   int add(const Light& light);
-  // The light with the cascades turned or changed (the next render fits them again).
+  // The light with the cascades turned or changed, or another light takes them (the next
+  // render fits them again). The cascades must exist (add).
   void setLight(const Light& light) { light_ = light; }
+  // No light has the cascades: they are not rendered (uCascadeCount 0).
+  void release() { released_ = true; }
+  void assign(const Light& light) {
+    light_ = light;
+    released_ = false;
+  }
   // Fits the cascades to `camera` (image aspect `aspect`) and renders them.
   ShadowDrawCount render(const GpuScene& scene, const Camera& camera, float aspect,
                          gl::DepthTarget& target);
@@ -37,6 +44,7 @@ class DirectionalShadowMaps {
   ShadowSettings settings_;
   CascadeSettings cascadeSettings_;
   std::optional<Light> light_;
+  bool released_ = false;
   std::optional<gl::Program> depth_;
   std::optional<gl::DepthTexture2D> atlas_;
   std::vector<Cascade> cascades_;

@@ -94,7 +94,11 @@ ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
   return passes_->shadows.lastFrame();
 }
 
-const AreaShadowChoice& ForwardRenderer::areaShadowChoice() const {
+std::span<const int> ForwardRenderer::punctualShadowSlots() const {
+  return passes_->shadows.lightSlots();
+}
+
+const ShadowChoice& ForwardRenderer::areaShadowChoice() const {
   return passes_->shadows.areaShadowChoice();
 }
 
@@ -177,9 +181,9 @@ void ForwardRenderer::setBake(const Bake& bake) {
       ++bakedWithoutMap;
   if (bakedWithoutMap > 0)
     warnings_.push_back(std::to_string(bakedWithoutMap) +
-                        " of the punctual lights without a shadow map are shadowed on static "
-                        "surfaces by the bake's visibility (dynamic objects neither cast nor "
-                        "receive their shadows)");
+                        " punctual lights have no shadow map in a frame (more lights than maps; "
+                        "which do is chosen per frame): static surfaces take their shadows from "
+                        "the bake's visibility, dynamic objects neither cast nor receive them");
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   if (bake.vpls && !bake.vpls->empty()) {
     const std::optional<float> fromManifest = manifestVplClampDistance(bake.manifest);
@@ -291,10 +295,13 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   // Without culling every light is shaded everywhere: any light that brings light competes.
-  const float areaFloor =
+  const float floor =
       settings_.lightCulling.enabled ? settings_.lightCulling.irradianceFloor : 0.0f;
-  p.shadows.render(p.scene, ViewVolume(cameraViewProjection, p.scene.bounds()),
-                   cascadeCamera_ ? *cascadeCamera_ : camera, aspect, areaFloor);
+  ViewVolume view(cameraViewProjection, p.scene.bounds());
+  view.eye = camera.position();
+  if (p.shadows.render(p.scene, p.lights, view, cascadeCamera_ ? *cascadeCamera_ : camera, aspect,
+                       floor))
+    p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   followDynamicMoves();
   p.vpls.renderShadows(p.scene);
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,

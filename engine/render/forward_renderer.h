@@ -144,7 +144,10 @@ class ForwardRenderer {
   // The last frame's area-light shadow budget: which lights had a cube, how many that reach
   // where cubes are read had none and what they bring (area_shadow_budget.h); the most cubes
   // the driver's texture units allow at once.
-  const AreaShadowChoice& areaShadowChoice() const;
+  const ShadowChoice& areaShadowChoice() const;
+  // Each punctual light's shadow-map slot among its kind's this frame, −1 for none
+  // (render/punctual_shadow_budget.h).
+  std::span<const int> punctualShadowSlots() const;
   int areaShadowSlots() const;
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }

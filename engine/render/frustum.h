@@ -31,6 +31,7 @@ struct ViewVolume {
   bool mayReach(const glm::mat4& lightViewProjection, const Box& sceneBox) const;
   Frustum frustum;
   Box box;
+  glm::vec3 eye{0.0f};  // the camera's position, world metres (shadow budgets weigh by it)
 };
 
 }  // namespace bounce

@@ -5,13 +5,36 @@
 
 namespace bounce {
 
+namespace {
+
+int cubeResolution(const ShadowSettings& settings, const Light& light, const Box& sceneBox) {
+  return settings.resolution > 0
+             ? settings.resolution
+             : defaultShadowResolution(light.position, sceneBox, 2.0f, 256, 1024);
+}
+
+}  // namespace
+
 int PointShadowMaps::add(const Light& light, const Box& sceneBox) {
   if (static_cast<int>(cubes_.size()) == kMaxPointShadows) return -1;
-  int resolution = settings_.resolution;
-  if (resolution <= 0)
-    resolution = defaultShadowResolution(light.position, sceneBox, 2.0f, 256, 1024);
+  const int resolution = cubeResolution(settings_, light, sceneBox);
   cubes_.push_back({light, gl::DepthCubeMap(resolution), resolution, 1.0f});
   return static_cast<int>(cubes_.size()) - 1;
+}
+
+void PointShadowMaps::assign(int slot, const Light& light, const Box& sceneBox) {
+  if (slot == static_cast<int>(cubes_.size())) {
+    add(light, sceneBox);
+    return;
+  }
+  Cube& cube = cubes_.at(static_cast<std::size_t>(slot));
+  const int resolution = cubeResolution(settings_, light, sceneBox);
+  if (resolution != cube.resolution) {
+    cube.texture = gl::DepthCubeMap(resolution);
+    cube.resolution = resolution;
+  }
+  cube.light = light;
+  cube.used = true;
 }
 
 ShadowDrawCount PointShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
@@ -19,6 +42,7 @@ ShadowDrawCount PointShadowMaps::render(const GpuScene& scene, const ViewVolume&
   const Box sceneBox = scene.bounds();
   ShadowDrawCount count;
   for (Cube& cube : cubes_) {
+    if (!cube.used) continue;
     for (int face = 0; face < 6; ++face) {
       const ShadowView faceView =
           cubeFaceShadowView(cube.light.position, face, sceneBox, cube.resolution);

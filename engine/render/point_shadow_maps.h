@@ -20,6 +20,11 @@ class PointShadowMaps {
   // Gives `light` (a point light) a cube; returns its slot, or −1 when all kMaxPointShadows are
   // taken.
   int add(const Light& light, const Box& sceneBox);
+  // Cube `slot` (at most one past the last) shadows `light` from now on: the budget gave it
+  // another light (punctual_shadow_budget.h). Its texture is remade if its resolution changes.
+  void assign(int slot, const Light& light, const Box& sceneBox);
+  // Cube `slot` shadows no light: it is not rendered.
+  void release(int slot) { cubes_.at(static_cast<std::size_t>(slot)).used = false; }
   // The light of cube `slot` moved or changed (its faces follow on the next render).
   void setLight(int slot, const Light& light) {
     cubes_.at(static_cast<std::size_t>(slot)).light = light;
@@ -35,6 +40,7 @@ class PointShadowMaps {
     gl::DepthCubeMap texture;
     int resolution = 0;
     float far = 1.0f;
+    bool used = true;
   };
   ShadowSettings settings_;
   std::vector<Cube> cubes_;

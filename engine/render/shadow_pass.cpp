@@ -1,6 +1,10 @@
 #include "render/shadow_pass.h"
 
+#include <algorithm>
+
 #include "gl/draw_state.h"
+#include "render/punctual_shadow_budget.h"
+#include "render/shadow_receivers.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -16,6 +20,7 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
       directional_(settings, shaderDir),
       area_(settings) {
   if (!settings.enabled) return;
+  // Until the first frame chooses, the maps go to the first lights of each kind.
   const Box sceneBox = scene.bounds();
   int unshadowed = 0;
   for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -25,12 +30,67 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
     if (light.type == LightType::Directional) lightSlot_[i] = directional_.add(light);
     if (lightSlot_[i] < 0) ++unshadowed;
   }
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const LightType type = lights.light(i).type;
+    int& kind = type == LightType::Spot    ? slots_.spot
+                : type == LightType::Point ? slots_.point
+                                           : slots_.directional;
+    kind = std::max(kind, lightSlot_[i] + 1);
+  }
   area_.add(scene);
+  crowded_ = unshadowed > 0;
   if (unshadowed > 0)
-    warnings.push_back(std::to_string(unshadowed) + " lights beyond the first " +
+    warnings.push_back(std::to_string(unshadowed) + " punctual lights more than the maps (" +
                        std::to_string(kMaxSpotShadows) + " spot, " +
                        std::to_string(kMaxPointShadows) +
-                       " point and 1 directional light cast no shadows");
+                       " point, 1 directional): each frame the maps go to the lights that bring "
+                       "the most light to the view and its dynamic objects; the others cast no "
+                       "shadow map's shadows");
+}
+
+bool ShadowPass::choosePunctualMaps(const GpuScene& scene, const PunctualLights& lights,
+                                    const ViewVolume& view, float floor) {
+  // Every light has its map: nothing to choose (and no view points to find each frame).
+  if (!crowded_) return false;
+  std::vector<Light> current;
+  std::vector<glm::vec3> power;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    current.push_back(lights.light(i));
+    power.push_back(lights.drawnPower(i));
+  }
+  const std::vector<float> contribution = punctualLightContributions(
+      current, power, shadowReceivers(scene, view, true, view.eye), floor);
+  const std::vector<int> slot =
+      assignPunctualShadowSlots(current, contribution, slots_, 0.0f, lightSlot_);
+  if (slot == lightSlot_) return false;
+  const Box sceneBox = scene.bounds();
+  std::vector<bool> spotUsed(static_cast<std::size_t>(slots_.spot), false);
+  std::vector<bool> pointUsed(static_cast<std::size_t>(slots_.point), false);
+  bool directionalUsed = false;
+  for (std::size_t i = 0; i < current.size(); ++i) {
+    if (slot[i] < 0) continue;
+    const Light& light = current[i];
+    const bool moved = slot[i] != lightSlot_[i];
+    if (light.type == LightType::Spot) {
+      spotUsed[static_cast<std::size_t>(slot[i])] = true;
+      if (moved) spot_.assign(slot[i], light, sceneBox);
+    }
+    if (light.type == LightType::Point) {
+      pointUsed[static_cast<std::size_t>(slot[i])] = true;
+      if (moved) point_.assign(slot[i], light, sceneBox);
+    }
+    if (light.type == LightType::Directional) {
+      directionalUsed = true;
+      if (moved) directional_.assign(light);
+    }
+  }
+  for (std::size_t s = 0; s < spotUsed.size(); ++s)
+    if (!spotUsed[s]) spot_.release(static_cast<int>(s));
+  for (std::size_t s = 0; s < pointUsed.size(); ++s)
+    if (!pointUsed[s]) point_.release(static_cast<int>(s));
+  if (!directionalUsed && slots_.directional > 0) directional_.release();
+  lightSlot_ = slot;
+  return true;
 }
 
 void ShadowPass::setLight(std::size_t index, const Light& light) {
@@ -41,15 +101,17 @@ void ShadowPass::setLight(std::size_t index, const Light& light) {
   if (light.type == LightType::Directional) directional_.setLight(light);
 }
 
-void ShadowPass::render(const GpuScene& scene, const ViewVolume& view, const Camera& camera,
-                        float aspect, float areaFloor) {
+bool ShadowPass::render(const GpuScene& scene, const PunctualLights& lights, const ViewVolume& view,
+                        const Camera& camera, float aspect, float floor) {
   lastFrame_ = {};
-  if (!settings_.enabled) return;
+  if (!settings_.enabled) return false;
+  const bool slotsChanged = choosePunctualMaps(scene, lights, view, floor);
   lastFrame_ += spot_.render(scene, view, depth_, target_);
   lastFrame_ += point_.render(scene, view, depth_, target_);
   lastFrame_ += directional_.render(scene, camera, aspect, target_);
-  lastFrame_ += area_.render(scene, view, areaFloor, depth_, target_);
+  lastFrame_ += area_.render(scene, view, floor, depth_, target_);
   gl::checkErrors("shadow pass");
+  return slotsChanged;
 }
 
 void ShadowPass::bind(gl::Program& forward) const {

@@ -3,7 +3,9 @@
 // directional: cascades fitted to the camera, directional_shadow_maps.h; area lights: cubes for
 // soft shadows, area_shadow_maps.h), then hands the maps to the lit pass. Which light has which map
 // is lightSlots()[i], stored with the light in the light table (render/light_table.h): the slot
-// among its kind's maps, or −1 (unshadowed).
+// among its kind's maps, or −1 (unshadowed). A kind with more lights than maps gives them each
+// frame to the lights that bring the most light where the maps are read
+// (punctual_shadow_budget.h; the area cubes: area_shadow_budget.h).
 #pragma once
 
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include "render/gpu_scene.h"
 #include "render/point_shadow_maps.h"
 #include "render/punctual_lights.h"
+#include "render/punctual_shadow_budget.h"
 #include "render/spot_shadow_maps.h"
 
 namespace bounce {
@@ -27,10 +30,11 @@ class ShadowPass {
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
 
   // `view`: what the camera can see; maps that cannot reach it are not rendered. `camera` and
-  // the image's `aspect`: what the directional cascades are fitted to. `areaFloor` (W/m²): an
-  // area light bringing less where the cubes are read gets no cube (area_shadow_budget.h).
-  void render(const GpuScene& scene, const ViewVolume& view, const Camera& camera, float aspect,
-              float areaFloor);
+  // the image's `aspect`: what the directional cascades are fitted to. `floor` (W/m²): a light
+  // bringing less where the maps are read gets none (shadow_choice.h). `lights`: the punctual
+  // lights as drawn now. Returns true when lightSlots() changed (the light table holds them).
+  bool render(const GpuScene& scene, const PunctualLights& lights, const ViewVolume& view,
+              const Camera& camera, float aspect, float floor);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
@@ -42,17 +46,25 @@ class ShadowPass {
     area_.setBakedDirectSkipped(bakedDirectSkipped);
   }
   // Which area lights have a cube this frame and what the others bring; the most cubes at once.
-  const AreaShadowChoice& areaShadowChoice() const { return area_.lastChoice(); }
+  const ShadowChoice& areaShadowChoice() const { return area_.lastChoice(); }
   int areaShadowSlots() const { return area_.slots(); }
   // Punctual light `index` moved, turned or changed power (its kind stays): its map follows.
   void setLight(std::size_t index, const Light& light);
-  // Per punctual light: its map's slot among its kind's maps, −1 for none.
+  // Per punctual light: its map's slot among its kind's maps, −1 for none (the first lights of
+  // each kind until the first render chooses).
   std::span<const int> lightSlots() const { return lightSlot_; }
   // What the last render() drew (culling's effect).
   const ShadowDrawCount& lastFrame() const { return lastFrame_; }
 
  private:
+  // Gives this frame's maps to the punctual lights (punctual_shadow_budget.h); true when a
+  // light's slot changed.
+  bool choosePunctualMaps(const GpuScene& scene, const PunctualLights& lights,
+                          const ViewVolume& view, float floor);
+
   ShadowSettings settings_;
+  PunctualShadowSlots slots_;  // maps of each kind: at most the kind's maximum and its lights
+  bool crowded_ = false;       // some kind has more lights than maps
   gl::Program depth_;
   gl::DepthTarget target_;
   std::vector<int> lightSlot_;  // per punctual light: its map's slot in its kind, −1 for none

@@ -12,11 +12,26 @@ int SpotShadowMaps::add(const Light& light, const Box& sceneBox) {
   return static_cast<int>(maps_.size()) - 1;
 }
 
+void SpotShadowMaps::assign(int slot, const Light& light, const Box& sceneBox) {
+  if (slot == static_cast<int>(maps_.size())) {
+    add(light, sceneBox);
+    return;
+  }
+  Map& map = maps_.at(static_cast<std::size_t>(slot));
+  const ShadowView view = spotShadowViewFor(light, sceneBox, settings_);
+  if (view.resolution != map.view.resolution)
+    map.texture = gl::DepthTexture2D(view.resolution, view.resolution);
+  map.light = light;
+  map.view = view;
+  map.used = true;
+}
+
 ShadowDrawCount SpotShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
                                        gl::Program& depthProgram, gl::DepthTarget& target) {
   const Box sceneBox = scene.bounds();
   ShadowDrawCount count;
   for (Map& map : maps_) {
+    if (!map.used) continue;
     // Dynamic instances move: the reach (far) follows the scene's current bounds.
     map.view =
         spotShadowView(map.light, sceneBox, map.view.resolution, settings_.filterRadius + 2.0f);

@@ -18,6 +18,11 @@ class SpotShadowMaps {
 
   // Gives `light` (a spot) a map; returns its slot, or −1 when all kMaxSpotShadows are taken.
   int add(const Light& light, const Box& sceneBox);
+  // Map `slot` (at most one past the last) shadows `light` from now on: the budget gave it
+  // another light (punctual_shadow_budget.h). Its texture is remade if its resolution changes.
+  void assign(int slot, const Light& light, const Box& sceneBox);
+  // Map `slot` shadows no light: it is not rendered.
+  void release(int slot) { maps_.at(static_cast<std::size_t>(slot)).used = false; }
   // The light of map `slot` moved or changed (its view follows on the next render).
   void setLight(int slot, const Light& light) {
     maps_.at(static_cast<std::size_t>(slot)).light = light;
@@ -33,6 +38,7 @@ class SpotShadowMaps {
     Light light;
     gl::DepthTexture2D texture;
     ShadowView view;
+    bool used = true;
   };
   ShadowSettings settings_;
   std::vector<Map> maps_;

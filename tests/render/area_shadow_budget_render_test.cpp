@@ -63,7 +63,7 @@ TEST(AreaShadowBudgetFrame, ADynamicBoxUnderAWeakLampAmongStrongDistantPanelsCas
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings);
   const Image rendered = boxDownsample(
       renderer.renderImage(camera, kWidth * kSupersample, kHeight * kSupersample), kSupersample);
-  const AreaShadowChoice& choice = renderer.areaShadowChoice();
+  const ShadowChoice& choice = renderer.areaShadowChoice();
   std::printf("%s\n", describeAreaShadowChoice(choice, renderer.areaShadowSlots()).c_str());
   EXPECT_EQ(choice.lights.size(), 3u);  // the lamp and the two panels over the floor
   EXPECT_EQ(choice.unshadowed, 0u);     // the panels facing away bring nothing here

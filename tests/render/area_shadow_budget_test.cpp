@@ -90,11 +90,11 @@ TEST(AreaShadowBudget, AWeakLampOverTheDynamicBoxWinsOverStrongDistantPanels) {
   for (const std::size_t panel : {0u, 1u, 2u}) EXPECT_LT(c[panel], 0.2 * c[3]);
 
   const float floor = 0.01f;  // W/m²
-  const AreaShadowChoice one = chooseShadowedAreaLights(c, 1, floor);
+  const ShadowChoice one = chooseShadowedLights(c, 1, floor);
   EXPECT_EQ(one.lights, (std::vector<uint32_t>{3}));
   EXPECT_EQ(one.unshadowed, 4u);  // every other light reaches the box above the floor
   EXPECT_NEAR(one.unshadowedContribution, c[0] + c[1] + c[2] + c[4], 1e-6);
-  const AreaShadowChoice three = chooseShadowedAreaLights(c, 3, floor);
+  const ShadowChoice three = chooseShadowedLights(c, 3, floor);
   ASSERT_EQ(three.lights.size(), 3u);
   EXPECT_EQ(three.lights[0], 3u);
 }
@@ -104,24 +104,24 @@ TEST(AreaShadowBudget, TheChoiceFollowsTheBoxToTheOtherLamp) {
   const float floor = 0.01f;
   const std::vector<float> underA =
       areaLightContributions(scene.set, LampsAndPanels::boxAt(LampsAndPanels::kUnderLampA));
-  const AreaShadowChoice first = chooseShadowedAreaLights(underA, 1, floor);
+  const ShadowChoice first = chooseShadowedLights(underA, 1, floor);
   ASSERT_EQ(first.lights, (std::vector<uint32_t>{3}));
   const std::vector<float> underB =
       areaLightContributions(scene.set, LampsAndPanels::boxAt(LampsAndPanels::kUnderLampB));
   // Lamp A held the slot; lamp B now brings far more than 10% more, so it takes it.
-  EXPECT_EQ(chooseShadowedAreaLights(underB, 1, floor, first.lights).lights,
+  EXPECT_EQ(chooseShadowedLights(underB, 1, floor, first.lights).lights,
             (std::vector<uint32_t>{4}));
   // A light the box does not reach above the floor gets no slot, however many are free.
-  const AreaShadowChoice strict = chooseShadowedAreaLights(underB, 5, 0.5f * underB[4]);
+  const ShadowChoice strict = chooseShadowedLights(underB, 5, 0.5f * underB[4]);
   EXPECT_EQ(strict.lights, (std::vector<uint32_t>{4}));
   EXPECT_EQ(strict.unshadowed, 0u);
 }
 
 TEST(AreaShadowBudget, AHeldSlotIsKeptAgainstARivalLessThanTenPercentStronger) {
   const std::vector<float> c = {1.0f, 1.05f, 2.0f};
-  EXPECT_EQ(chooseShadowedAreaLights(c, 2, 0.0f).lights, (std::vector<uint32_t>{2, 1}));
+  EXPECT_EQ(chooseShadowedLights(c, 2, 0.0f).lights, (std::vector<uint32_t>{2, 1}));
   const std::vector<uint32_t> held = {0, 2};
-  EXPECT_EQ(chooseShadowedAreaLights(c, 2, 0.0f, held).lights, (std::vector<uint32_t>{2, 0}));
+  EXPECT_EQ(chooseShadowedLights(c, 2, 0.0f, held).lights, (std::vector<uint32_t>{2, 0}));
 }
 
 // The visible volume ranks lights without baked visibility, not those with it.
