@@ -39,8 +39,12 @@ void main() {
   // Single-sided back faces are culled, so a back face here is double-sided: shade its side.
   vec3 n = normalize(vNormal);
   if (!gl_FrontFacing) n = -n;
-  // The triangle's own (geometric) normal on the shaded side, for the shadow bias.
-  vec3 ng = cross(dFdx(vWorldPosition), dFdy(vWorldPosition));
+  // The triangle's own (geometric) normal on the shaded side, for the shadow bias. From the
+  // pixel-centre position: a centroid value moves within the pixel at a triangle's edge, so its
+  // screen derivatives there mix positions along the edge and tilt the normal anywhere (under
+  // 4x MSAA the bias then pushed lookups through a 2 cm wall: lit pixels along the dark room's
+  // corners in bench_thin_wall_leak).
+  vec3 ng = cross(dFdx(vWorldPositionAtCentre), dFdy(vWorldPositionAtCentre));
   ng = dot(ng, ng) > 0.0 ? normalize(ng) : n;
   if (dot(ng, n) < 0.0) ng = -ng;
   vec3 albedo = uAlbedo;
