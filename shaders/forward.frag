@@ -27,6 +27,7 @@ in vec2 vUv;
 centroid in vec2 vLightmapUv;
 in vec3 vWorldPositionAtCentre;  // the same at the pixel centre, for screen derivatives
 in vec2 vLightmapUvAtCentre;
+flat in vec2 vTriangleLightmapUv[3];  // the triangle's three lightmap coordinates
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)
@@ -34,6 +35,25 @@ uniform bool uHasAlbedoTexture;
 uniform sampler2D uAlbedoTexture;  // linear RGB texels
 
 out vec4 fragRadiance;
+
+// The point of triangle (a, b, c) nearest to p (p itself inside; degenerate triangles too).
+vec2 closestOnSegment(vec2 p, vec2 a, vec2 b) {
+  vec2 ab = b - a;
+  float t = dot(ab, ab) > 0.0 ? clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+vec2 closestPointInTriangle(vec2 p, vec2 a, vec2 b, vec2 c) {
+  float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  float wa = (b.x - p.x) * (c.y - p.y) - (b.y - p.y) * (c.x - p.x);
+  float wb = (c.x - p.x) * (a.y - p.y) - (c.y - p.y) * (a.x - p.x);
+  float wc = area - wa - wb;
+  bool inside = area > 0.0 ? (wa >= 0.0 && wb >= 0.0 && wc >= 0.0)
+                           : area < 0.0 && wa <= 0.0 && wb <= 0.0 && wc <= 0.0;
+  if (inside) return p;
+  vec2 ab = closestOnSegment(p, a, b), bc = closestOnSegment(p, b, c), ca = closestOnSegment(p, c, a);
+  vec2 best = dot(p - ab, p - ab) < dot(p - bc, p - bc) ? ab : bc;
+  return dot(p - ca, p - ca) < dot(p - best, p - best) ? ca : best;
+}
 
 void main() {
   // Single-sided back faces are culled, so a back face here is double-sided: shade its side.
@@ -47,6 +67,10 @@ void main() {
   vec3 ng = cross(dFdx(vWorldPositionAtCentre), dFdy(vWorldPositionAtCentre));
   ng = dot(ng, ng) > 0.0 ? normalize(ng) : n;
   if (dot(ng, n) < 0.0) ng = -ng;
+  // Every lightmap lookup reads at the centroid's coordinate clamped into the triangle
+  // (forward.geom says why), so its bilinear taps stay on the triangle's chart and its ring.
+  vec2 lightmapUv = closestPointInTriangle(vLightmapUv, vTriangleLightmapUv[0],
+                                           vTriangleLightmapUv[1], vTriangleLightmapUv[2]);
   vec3 albedo = uAlbedo;
   if (uHasAlbedoTexture) albedo = clamp(albedo * texture(uAlbedoTexture, vUv).rgb, 0.0, 1.0);
   // The inspection views that are no light at all (uniform branches: derivatives stay defined).
@@ -62,12 +86,12 @@ void main() {
   if (modeUsesDirectLight()) {
     LightList lights = clusterLights(vWorldPosition);
     BakedVisibilityTexels baked;
-    if (uHasBakedVisibility) baked = bakedVisibilityTexels(vLightmapUv, uLightmapSize);
+    if (uHasBakedVisibility) baked = bakedVisibilityTexels(lightmapUv, uLightmapSize);
     direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked) +
              areaIrradiance(lights, vWorldPosition, n, ng, baked);
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
   fragRadiance =
-      vec4(shadeForMode(albedo, direct, uEmission, vLightmapUv, vplClamped, vplRemoved), 1.0);
+      vec4(shadeForMode(albedo, direct, uEmission, lightmapUv, vplClamped, vplRemoved), 1.0);
 }

@@ -10,23 +10,18 @@ uniform mat4 uModel;         // object → world
 uniform mat3 uNormalMatrix;  // inverse transpose of uModel's linear part
 uniform mat4 uViewProjection;
 
-centroid out vec3 vWorldPosition;
-centroid out vec3 vNormal;
-out vec2 vUv;
-centroid out vec2 vLightmapUv;
-// The same two at the pixel centre (not centroid): their screen derivatives, which centroid
-// sampling would bend at triangle edges, give the texel-density view (view_modes.glsl).
-out vec3 vWorldPositionAtCentre;
-out vec2 vLightmapUvAtCentre;
+// To forward.geom, which hands them on per triangle.
+out vec3 vsWorldPosition;
+out vec3 vsNormal;
+out vec2 vsUv;
+out vec2 vsLightmapUv;
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
-  vWorldPosition = world.xyz;
+  vsWorldPosition = world.xyz;
   // Unit per corner before interpolation, as the path tracer's world normals are.
-  vNormal = normalize(uNormalMatrix * aNormal);
-  vUv = aUv;
-  vLightmapUv = aLightmapUv;
-  vWorldPositionAtCentre = world.xyz;
-  vLightmapUvAtCentre = aLightmapUv;
+  vsNormal = normalize(uNormalMatrix * aNormal);
+  vsUv = aUv;
+  vsLightmapUv = aLightmapUv;
   gl_Position = uViewProjection * world;
 }

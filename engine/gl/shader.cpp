@@ -62,29 +62,37 @@ std::filesystem::path shaderDirectory() {
                     candidates[1].string() + " (set BOUNCE_SHADER_DIR)");
 }
 
-Program::Program(const std::filesystem::path& vertexFile,
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile)
+    : Program(vertexFile, {}, fragmentFile) {}
+
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
                  const std::filesystem::path& fragmentFile) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
-  GLuint fragment = 0;
+  std::vector<GLuint> stages;
+  const auto release = [&] {
+    for (const GLuint stage : stages) glDeleteShader(stage);
+  };
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    stages.push_back(compile(GL_VERTEX_SHADER, vertexFile));
+    if (!geometryFile.empty()) stages.push_back(compile(GL_GEOMETRY_SHADER, geometryFile));
+    stages.push_back(compile(GL_FRAGMENT_SHADER, fragmentFile));
   } catch (...) {
-    glDeleteShader(vertex);
+    release();
     throw;
   }
   id_ = glCreateProgram();
-  glAttachShader(id_, vertex);
-  glAttachShader(id_, fragment);
+  for (const GLuint stage : stages) glAttachShader(id_, stage);
   glLinkProgram(id_);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  release();
   GLint ok = GL_FALSE;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
     const std::string log = infoLog(id_, true);
     glDeleteProgram(id_);
     id_ = 0;
-    throw ShaderError(vertexFile.string() + " + " + fragmentFile.string() + ": link error\n" + log);
+    const std::string files = vertexFile.string() +
+                              (geometryFile.empty() ? "" : " + " + geometryFile.string()) + " + " +
+                              fragmentFile.string();
+    throw ShaderError(files + ": link error\n" + log);
   }
 }
 

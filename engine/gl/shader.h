@@ -24,6 +24,9 @@ class Program {
  public:
   // Compiles and links; throws ShaderError with "file:line: message" lines from the driver.
   Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile);
+  // With a geometry shader between them (none when `geometryFile` is empty).
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
+          const std::filesystem::path& fragmentFile);
   ~Program();
   Program(Program&& other) noexcept;
   Program& operator=(Program&& other) noexcept;

@@ -6,7 +6,8 @@
 namespace bounce {
 
 ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
-    : program_(shaderDir / "forward.vert", shaderDir / "forward.frag") {}
+    : program_(shaderDir / "forward.vert", shaderDir / "forward.geom", shaderDir / "forward.frag") {
+}
 
 void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
                        const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,

@@ -95,6 +95,39 @@ TEST(ThinWallLeak, NoLightmapLightInTheBilinearLookupBeyondAWallThinnerThanATexe
   EXPECT_EQ(dark, lit);
 }
 
+// The same rooms drawn by the renderer with 4 samples a pixel, from a camera in the dark room
+// facing the wall, at frames whose pixels span a texel or more: every pixel of the dark room's
+// full frame under 1% of the lit room's mean (the path tracer's answer is exactly 0). At the
+// corners where the floor and ceiling meet the side walls a pixel is partly covered by two
+// triangles; each is shaded at a point its samples choose, and its lightmap lookup must stay on
+// its own chart. Measured before the lookups were clamped into their triangle (forward.geom):
+// 32% at 24 pixels, 36% at 16, 8.9% at 32 (llvmpipe).
+TEST(ThinWallLeak, NoLightmapLightAtTheDarkRoomsMultisampledEdgePixels) {
+  const Scene scene = test::thinWallRooms(0.02f);
+  SceneBakeSettings settings = test::lightmapOnlySettings();
+  settings.texelSize = 0.1f;
+  settings.spp = 64;
+  const Bake bake = bakeScene(scene, settings).folder;
+  test::testContext();
+  RendererSettings full;
+  full.mode = RenderMode::Full;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), full, &bake);
+  const Camera dark = test::lookingAt({1.9f, 1.2f, 0.0f}, {0.0f, 0.8f, 0.0f}, 1.4f);
+  const Camera lit = test::lookingAt({-1.9f, 1.2f, 0.0f}, {0.0f, 0.8f, 0.0f}, 1.4f);
+  for (const int size : {16, 24, 32}) {
+    double litMean = 0.0;
+    const Image litFrame = renderer.renderImage(lit, size, size, 4);
+    for (const glm::vec3& p : litFrame.pixels) litMean += luminance(p);
+    litMean /= static_cast<double>(litFrame.pixels.size());
+    ASSERT_GT(litMean, 0.0);
+    const Image darkFrame = renderer.renderImage(dark, size, size, 4);
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        EXPECT_LE(luminance(darkFrame.at(x, y)), 0.01 * litMean)
+            << "pixel " << x << "," << y << " of the " << size << "-pixel frame";
+  }
+}
+
 // Charts never hold triangles on both sides of the wall: each chart's triangles lie on one side
 // (centroids x < −t/2, inside [−t/2, t/2], or x > t/2) on the floor, ceiling and side walls.
 TEST(AtlasCrossingCuts, NoChartOfTheCrossedSurfacesHoldsBothSidesOfTheWall) {

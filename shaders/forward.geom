@@ -1,0 +1,41 @@
+#version 330 core
+// Each triangle unchanged, plus its three lightmap coordinates, flat: forward.frag clamps its
+// lightmap lookups into the triangle. A fragment that covers only some of a pixel's samples is
+// shaded at its centroid, which should lie inside the triangle; llvmpipe's centroid values at
+// 4x MSAA edges do not (they read texels of other charts: the thin-wall rooms' corner pixels
+// showed 31% of the lit room's mean), and a pixel-centre value can lie half a pixel outside,
+// several texels where texels are smaller than pixels. The clamp holds on any driver.
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in vec3 vsWorldPosition[];
+in vec3 vsNormal[];
+in vec2 vsUv[];
+in vec2 vsLightmapUv[];
+
+centroid out vec3 vWorldPosition;
+centroid out vec3 vNormal;
+out vec2 vUv;
+centroid out vec2 vLightmapUv;
+// The same two at the pixel centre (not centroid): their screen derivatives, which centroid
+// sampling would bend at triangle edges, give the geometric normal and the texel-density view.
+out vec3 vWorldPositionAtCentre;
+out vec2 vLightmapUvAtCentre;
+flat out vec2 vTriangleLightmapUv[3];
+
+void main() {
+  for (int i = 0; i < 3; ++i) {
+    gl_Position = gl_in[i].gl_Position;
+    vWorldPosition = vsWorldPosition[i];
+    vNormal = vsNormal[i];
+    vUv = vsUv[i];
+    vLightmapUv = vsLightmapUv[i];
+    vWorldPositionAtCentre = vsWorldPosition[i];
+    vLightmapUvAtCentre = vsLightmapUv[i];
+    vTriangleLightmapUv[0] = vsLightmapUv[0];
+    vTriangleLightmapUv[1] = vsLightmapUv[1];
+    vTriangleLightmapUv[2] = vsLightmapUv[2];
+    EmitVertex();
+  }
+  EndPrimitive();
+}
