@@ -35,7 +35,9 @@ Box frustumBox(const glm::mat4& viewProjection) {
 }
 
 ViewVolume::ViewVolume(const glm::mat4& cameraViewProjection, const Box& sceneBox)
-    : frustum(cameraViewProjection), box(intersect(frustumBox(cameraViewProjection), sceneBox)) {}
+    : frustum(cameraViewProjection),
+      box(intersect(frustumBox(cameraViewProjection), sceneBox)),
+      clipToWorld(glm::inverse(cameraViewProjection)) {}
 
 bool ViewVolume::mayReach(const glm::mat4& lightViewProjection, const Box& sceneBox) const {
   if (!Frustum(lightViewProjection).overlaps(box)) return false;

@@ -31,7 +31,8 @@ struct ViewVolume {
   bool mayReach(const glm::mat4& lightViewProjection, const Box& sceneBox) const;
   Frustum frustum;
   Box box;
-  glm::vec3 eye{0.0f};  // the camera's position, world metres (shadow budgets weigh by it)
+  glm::vec3 eye{0.0f};          // the camera's position, world metres (shadow budgets weigh by it)
+  glm::mat4 clipToWorld{1.0f};  // the inverse of the camera's view-projection
 };
 
 }  // namespace bounce

@@ -14,7 +14,9 @@ namespace bounce {
 // (a light's mean over the air of the view would count the space around the light itself), at
 // most 512 in an even spread, each weighted by the screen its cell's surface takes from `eye`
 // (the camera, world metres): a cell of the 3³ grid is taken to hold surface of its largest
-// face's area, so a wall near the camera counts more than a chair across the room.
+// face's area, so a wall near the camera counts more than a chair across the room. Where no
+// grid point falls in the view (a close-up between them), the points where rays through a 5 × 5
+// grid of the image first meet a visible static instance's box stand in, weighted alike.
 ShadowReceivers shadowReceivers(const GpuScene& scene, const ViewVolume& view, bool viewPoints,
                                 glm::vec3 eye);
 

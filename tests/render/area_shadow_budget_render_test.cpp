@@ -107,6 +107,33 @@ TEST(AreaShadowBudgetFrame, ADynamicBoxUnderAWeakLampAmongStrongDistantPanelsCas
   EXPECT_LE(disagree, static_cast<int>(floor.pixels) / 100);
 }
 
+// A close-up: the camera 4 cm over the floor in the static box's shadow, looking down, no bake
+// (static surfaces read the cubes). The points standing for the visible surfaces must find the
+// few square centimetres in view, or the lamp brings nothing "there" and gets no cube: the
+// floor would be lit where the box shades it. Each pixel with the cubes against the frame with
+// shadows off: the centre of the umbra keeps under 30% of its unshadowed light.
+TEST(AreaShadowBudgetFrame, ACloseUpOfAShadowKeepsItsCube) {
+  Scene scene;
+  addQuad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, matte("floor", glm::vec3(0.7f)));
+  addQuad(scene, {-0.55f, 0.8f, -0.4f}, {0.2f, 0, 0}, {0, 0, 0.2f}, glowing("lamp", 20));
+  addBox(scene, {0.0f, 0.0f, 0.0f}, {0.25f, 0.25f, 0.25f}, matte("box", glm::vec3(0.8f)));
+  // (0.33, 0, 0.1): the segment to every point of the lamp passes through the box.
+  const Camera closeUp = lookingAt({0.33f, 0.04f, 0.1f}, {0.33f, 0.0f, 0.1001f}, 0.5f);
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Direct;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings);
+  const Image shadowed = renderer.renderImage(closeUp, 16, 16);
+  settings.shadows.enabled = false;
+  ForwardRenderer unshadowed(scene, gl::shaderDirectory(), settings);
+  const Image lit = unshadowed.renderImage(closeUp, 16, 16);
+  const double v = luminance(shadowed.at(8, 8)) / luminance(lit.at(8, 8));
+  std::printf("close-up of the umbra: V = %.3f, %zu cubes\n", v,
+              renderer.areaShadowChoice().lights.size());
+  ASSERT_GT(luminance(lit.at(8, 8)), 0.0);
+  EXPECT_LT(v, 0.3);
+}
+
 // The cubes are drawn once and kept: a second frame from the same camera draws no face; moving
 // the dynamic box redraws them (it is a caster, and the scene's bounds set each map's reach).
 TEST(AreaShadowBudgetFrame, CubesAreRedrawnOnlyWhenTheirLightOrACasterChanges) {
