@@ -57,15 +57,8 @@ std::vector<float> areaLightContributions(const AreaLightSet& set,
     float c = 0.0f;
     for (const AreaShadowReceivers::Dynamic& dynamic : receivers.dynamics) {
       if (dynamic.instance == light.instance || dynamic.box.empty()) continue;
-      const Box& b = dynamic.box;
-      c = std::max(c, largestIrradiance(set, l, glm::clamp(light.centre, b.lower, b.upper)));
-      c = std::max(c, largestIrradiance(set, l, b.centre()));
-      for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? b.upper.x : b.lower.x,
-                          (corner & 2) ? b.upper.y : b.lower.y,
-                          (corner & 4) ? b.upper.z : b.lower.z);
-        c = std::max(c, largestIrradiance(set, l, p));
-      }
+      c = std::max(c, largestOverBox(dynamic.box, light.centre,
+                                     [&](glm::vec3 p) { return largestIrradiance(set, l, p); }));
     }
     const ShadowReceivers::Stats view =
         l >= receivers.bakedVisibilityLights

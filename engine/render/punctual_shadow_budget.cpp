@@ -35,17 +35,10 @@ std::vector<float> punctualLightContributions(std::span<const Light> lights,
     if (brightest(drawn) <= 0.0f) continue;
     float c = 0.0f;
     for (const ShadowReceivers::Dynamic& dynamic : receivers.dynamics) {
-      const Box& b = dynamic.box;
-      if (b.empty()) continue;
-      c = std::max(
-          c, largestPunctualIrradiance(light, drawn, glm::clamp(light.position, b.lower, b.upper)));
-      c = std::max(c, largestPunctualIrradiance(light, drawn, b.centre()));
-      for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? b.upper.x : b.lower.x,
-                          (corner & 2) ? b.upper.y : b.lower.y,
-                          (corner & 4) ? b.upper.z : b.lower.z);
-        c = std::max(c, largestPunctualIrradiance(light, drawn, p));
-      }
+      if (dynamic.box.empty()) continue;
+      c = std::max(c, largestOverBox(dynamic.box, light.position, [&](glm::vec3 p) {
+                     return largestPunctualIrradiance(light, drawn, p);
+                   }));
     }
     contribution[l] = shadowContribution(c, receivers.viewStats([&](glm::vec3 p) {
       return largestPunctualIrradiance(light, drawn, p);

@@ -57,6 +57,18 @@ struct ShadowReceivers {
 // at `p`: area/d², capped where d² < area (the patch fills the view).
 float viewPointWeight(glm::vec3 eye, glm::vec3 p, float area);
 
+// The largest f(p) over the points standing for `box` as a receiver: its 8 corners, its centre
+// and its point nearest `source` (a light's position or centre).
+template <class F>
+float largestOverBox(const Box& box, glm::vec3 source, F&& f) {
+  float largest = std::max(f(glm::clamp(source, box.lower, box.upper)), f(box.centre()));
+  for (int corner = 0; corner < 8; ++corner)
+    largest = std::max(largest, f(glm::vec3((corner & 1) ? box.upper.x : box.lower.x,
+                                            (corner & 2) ? box.upper.y : box.lower.y,
+                                            (corner & 4) ? box.upper.z : box.lower.z)));
+  return largest;
+}
+
 // perAxis³ grid points of `box` (cell centres) that lie inside `frustum`: the visible volume.
 std::vector<glm::vec3> viewSamplePoints(const Frustum& frustum, const Box& box, int perAxis = 4);
 
