@@ -18,7 +18,10 @@ constexpr int kWidthSteps = 6;
 class TakenTexels {
  public:
   TakenTexels(int width, int maxHeight)
-      : width_(width), maxHeight_(maxHeight), words_((width + 63) / 64 + 1) {}
+      : width_(width),
+        maxHeight_(maxHeight),
+        words_((width + 63) / 64 + 1),
+        summaryWords_((words_ + 63) / 64) {}
 
   // 64 texels of row y from column x on (bit i is column x + i).
   uint64_t run(int x, int y) const {
@@ -38,10 +41,19 @@ class TakenTexels {
   // The first free column ≥ x in row y (width_ when none).
   int nextFree(int x, int y) const {
     if (y >= rows()) return x;
-    while (x < width_) {
-      const uint64_t free = ~run(x, y);
-      if (free) return x + std::countr_zero(free);
-      x += 64;
+    const uint64_t* row = &bits_[static_cast<std::size_t>(y) * words_];
+    const int w = x >> 6;
+    if (const uint64_t free = ~row[w] & (~uint64_t{0} << (x & 63)))
+      return 64 * w + std::countr_zero(free);
+    // The next word with a free texel, from the row's summary of open words.
+    const uint64_t* open = &open_[static_cast<std::size_t>(y) * summaryWords_];
+    for (int k = w + 1; k < words_;) {
+      const uint64_t candidates = open[k >> 6] & (~uint64_t{0} << (k & 63));
+      if (candidates) {
+        const int next = 64 * (k >> 6) + std::countr_zero(candidates);
+        return 64 * next + std::countr_zero(~row[next]);
+      }
+      k = 64 * ((k >> 6) + 1);
     }
     return width_;
   }
@@ -55,6 +67,7 @@ class TakenTexels {
       if (ty >= rows()) {
         bits_.resize(static_cast<std::size_t>(ty + 1) * words_, 0);
         free_.resize(static_cast<std::size_t>(ty + 1), width_);
+        open_.resize(static_cast<std::size_t>(ty + 1) * summaryWords_, ~uint64_t{0});
       }
       for (int c = 0; c < grown.width; ++c) {
         const int tx = x - radius + c;
@@ -62,17 +75,24 @@ class TakenTexels {
           bits_[static_cast<std::size_t>(ty) * words_ + (tx >> 6)] |= uint64_t{1} << (tx & 63);
       }
       int taken = 0;
-      for (int k = 0; k < words_; ++k)
-        taken += std::popcount(bits_[static_cast<std::size_t>(ty) * words_ + k]);
+      for (int k = 0; k < words_; ++k) {
+        const uint64_t word = bits_[static_cast<std::size_t>(ty) * words_ + k];
+        taken += std::popcount(word);
+        if (word == ~uint64_t{0})
+          open_[static_cast<std::size_t>(ty) * summaryWords_ + (k >> 6)] &=
+              ~(uint64_t{1} << (k & 63));
+      }
       free_[static_cast<std::size_t>(ty)] = width_ - taken;
     }
   }
 
  private:
   int rows() const { return static_cast<int>(bits_.size() / words_); }
-  int width_, maxHeight_, words_;
+  int width_, maxHeight_, words_, summaryWords_;
   std::vector<uint64_t> bits_;
   std::vector<int> free_;  // per row, width_ less its taken texels
+  // Per row, bit k set while word k has a free texel (summaryWords_ words a row).
+  std::vector<uint64_t> open_;
 };
 
 struct Spot {
