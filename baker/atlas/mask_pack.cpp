@@ -11,7 +11,7 @@ namespace {
 // Atlas widths tried, as fractions of the square root of the padded rectangles' area (masks
 // interlock, so the best is often below it: 0.79 on the Conference Room).
 constexpr double kNarrowest = 0.6, kWidest = 1.2;
-constexpr int kWidthSteps = 6;
+constexpr int kWidthSteps = 3;
 
 // The atlas's taken texels: every placed chart's mask dilated by the padding. A chart fits where
 // its own mask meets none of them.
