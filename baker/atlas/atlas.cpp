@@ -7,9 +7,11 @@
 
 #include "atlas/chart_bundle.h"
 #include "atlas/chart_flatten.h"
+#include "atlas/chart_mask.h"
 #include "atlas/chart_merge.h"
 #include "atlas/chart_pack.h"
 #include "atlas/chart_segment.h"
+#include "atlas/mask_pack.h"
 #include "atlas/mesh_uv1.h"
 #include "atlas/texel_density.h"
 #include "atlas/uv_geometry.h"
@@ -89,6 +91,60 @@ glm::ivec2 toTexels(Chart& chart, float texelSize) {
   if (fit < 1.0f)
     for (glm::vec2& p : chart.cornerUv) p *= fit;
   return cells;
+}
+
+// A chart's corners turned by 90° inside its cells (rigid: a rotation and a whole-texel shift),
+// which become cells.y × cells.x.
+std::vector<glm::vec2> turnedCorners(const std::vector<glm::vec2>& cornerUv, glm::ivec2 cells) {
+  std::vector<glm::vec2> turned;
+  turned.reserve(cornerUv.size());
+  for (const glm::vec2 p : cornerUv) turned.emplace_back(static_cast<float>(cells.y) - p.y, p.x);
+  return turned;
+}
+
+// Where each chart goes: its corners plus `offset` (texels) in a width × height atlas.
+struct Placement {
+  int width = 0, height = 0;
+  std::vector<glm::ivec2> offset;
+};
+
+// The smaller of the two packings: rectangles (chart_pack.h) and texel masks (mask_pack.h).
+// Charts the mask packing turns get their turned corners. Nothing when neither fits.
+std::optional<Placement> placeCharts(std::vector<Chart>& charts,
+                                     const std::vector<glm::ivec2>& cells, int padding,
+                                     int maxSize) {
+  std::vector<glm::ivec2> rects;
+  for (const glm::ivec2 c : cells) rects.push_back(c + padding);
+  const std::optional<Packing> byRect = packRectangles(rects, maxSize);
+  // Each chart's masks turned by 0°, 90°, 180° and 270°.
+  std::vector<std::vector<ChartMask>> turns(charts.size());
+  for (std::size_t c = 0; c < charts.size(); ++c) {
+    std::vector<glm::vec2> corners = charts[c].cornerUv;
+    glm::ivec2 size = cells[c];
+    for (int k = 0; k < 4; ++k) {
+      turns[c].push_back(rasteriseChart(corners, size));
+      corners = turnedCorners(corners, size);
+      size = {size.y, size.x};
+    }
+  }
+  const std::optional<MaskPacking> byMask = packMasks(turns, padding, maxSize);
+  const auto area = [](int w, int h) { return static_cast<int64_t>(w) * h; };
+  if (byMask &&
+      (!byRect || area(byMask->width, byMask->height) < area(byRect->width, byRect->height))) {
+    for (std::size_t c = 0; c < charts.size(); ++c) {
+      glm::ivec2 size = cells[c];
+      for (int k = 0; k < byMask->turn[c]; ++k) {
+        charts[c].cornerUv = turnedCorners(charts[c].cornerUv, size);
+        size = {size.y, size.x};
+      }
+    }
+    return Placement{byMask->width, byMask->height, byMask->origin};
+  }
+  if (!byRect) return std::nullopt;
+  // padding/2 texels before each chart, the rest after it.
+  Placement placement{byRect->width, byRect->height, byRect->origin};
+  for (glm::ivec2& o : placement.offset) o += padding / 2;
+  return placement;
 }
 
 }  // namespace
@@ -182,9 +238,8 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
         charts.push_back(std::move(chart));
       }
     }
-    std::vector<glm::ivec2> rects;
-    for (const glm::ivec2 c : cells) rects.push_back(c + settings.padding);
-    const std::optional<Packing> packing = packRectangles(rects, settings.maxSize);
+    const std::optional<Placement> packing =
+        placeCharts(charts, cells, settings.padding, settings.maxSize);
     if (!packing) {
       // Coarser texels shrink every chart, down to one texel plus its padding each; when even
       // that does not fit, no texel size will.
@@ -208,7 +263,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
       atlas.notes.push_back(note.str());
     }
 
-    // Place the charts; padding/2 texels before each chart, the rest after it.
+    // Place the charts.
     LightmapLayout& layout = atlas.layout;
     layout.width = packing->width;
     layout.height = packing->height;
@@ -237,7 +292,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
           std::find_if(statics.begin(), statics.end(),
                        [&](const StaticInstance& s) { return s.instance == chart.instance; }) -
           statics.begin());
-      const glm::vec2 offset(packing->origin[c] + settings.padding / 2);
+      const glm::vec2 offset(packing->offset[c]);
       for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
         const uint32_t t = chart.triangles[k];
         atlas.triangleChart[slot][t] = static_cast<uint32_t>(c);
