@@ -55,6 +55,12 @@ Scene boxUnderAWeakLamp() {
 }
 
 TEST(AreaShadowBudgetFrame, ADynamicBoxUnderAWeakLampAmongStrongDistantPanelsCastsItsShadow) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 18 s under AddressSanitizer, most of it the path tracer's reference or the bake's
+  // samples; the same code runs under ASan in the smaller tests. CI's sanitizer stage keeps to
+  // its 30 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   const Scene scene = boxUnderAWeakLamp();
   const Camera camera = lookingAt({0.3f, 1.0f, 1.6f}, {0.0f, 0.0f, -0.1f}, 1.0f);
   testContext();

@@ -461,6 +461,12 @@ TEST_F(DynamicSphere, VplErrorBudgetAgainstThePathTracer) {
 // paths cut where the sphere blocks them (--dynamic-vpls cut) 13.9 / 11.2 / 21.3%: without the
 // light the sphere reflects (7-19% of its indirect light). Injected --dynamic-vpls cut: fails.
 TEST_F(DynamicSphere, RendererLightsTheSphereWithin10PercentOfThePathTracer) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 22 s under AddressSanitizer, most of it the path tracer's reference or the bake's
+  // samples; the same code runs under ASan in the smaller tests. CI's sanitizer stage keeps to
+  // its 30 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   for (std::size_t p = 0; p < std::size(kPositions); ++p) {
     const Placement& m = placements_[p];
     const Position& at = kPositions[p];

@@ -40,7 +40,8 @@ IndirectComparison compareMode(const Scene& scene, const Bake& bake, const Camer
 TEST(SunlitRoom, IndirectAndFullFramesWithinFivePercentOfThePathTracer) {
 #ifdef __SANITIZE_ADDRESS__
   // 67 s under AddressSanitizer, nearly all of it the 8192-spp references; the bake and the
-  // renderer it measures run under ASan in the smaller tests (FurnaceFrame, LightmapAccuracy).
+  // renderer it measures run under ASan in the smaller tests (FurnaceFrame.DefaultBake…,
+  // ThinWallLeak).
   GTEST_SKIP() << "an accuracy measurement: run in the release build";
 #endif
   const Scene scene =
