@@ -594,7 +594,9 @@ class Viewer {
     const std::span<const int> slots = renderer_.punctualShadowSlots();
     std::vector<bool> now;
     for (const int slot : slots) now.push_back(slot >= 0);
-    if (now == reportedMaps_ || std::find(now.begin(), now.end(), false) == now.end()) return;
+    // Logged on every change, but not at the start when every light has a map.
+    const bool allMapped = std::find(now.begin(), now.end(), false) == now.end();
+    if (now == reportedMaps_ || (reportedMaps_.empty() && allMapped)) return;
     reportedMaps_ = now;
     std::fprintf(stderr, "bounce-view: %s\n",
                  bounce::describePunctualShadowMaps(scene_.lights, slots).c_str());

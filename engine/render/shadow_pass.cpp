@@ -29,13 +29,11 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
     if (light.type == LightType::Point) lightSlot_[i] = point_.add(light, sceneBox);
     if (light.type == LightType::Directional) lightSlot_[i] = directional_.add(light);
     if (lightSlot_[i] < 0) ++unshadowed;
-  }
-  for (std::size_t i = 0; i < lights.size(); ++i) {
-    const LightType type = lights.light(i).type;
-    int& kind = type == LightType::Spot    ? slots_.spot
-                : type == LightType::Point ? slots_.point
-                                           : slots_.directional;
-    kind = std::max(kind, lightSlot_[i] + 1);
+    // The maps each kind has: one past the highest slot handed out.
+    int& maps = light.type == LightType::Spot    ? slots_.spot
+                : light.type == LightType::Point ? slots_.point
+                                                 : slots_.directional;
+    maps = std::max(maps, lightSlot_[i] + 1);
   }
   area_.add(scene);
   crowded_ = unshadowed > 0;
