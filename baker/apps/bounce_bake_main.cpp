@@ -32,6 +32,7 @@ struct Options {
   std::filesystem::path out;
   bounce::SceneBakeSettings bake;
   std::string backend = "embree";
+  std::string lightChoice = "place";
   std::string denoise = kDefaults.denoise ? "on" : "off";
   std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
@@ -79,6 +80,8 @@ int run(Options o) {
   const double loadSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.bake.backend = bounce::parseRayBackend(o.backend);
+  o.bake.lightChoice =
+      o.lightChoice == "power" ? bounce::LightChoice::ByPower : bounce::LightChoice::ByPlace;
   o.bake.denoise = o.denoise == "on";
   if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
   o.bake.resume = o.resume;
@@ -162,6 +165,11 @@ int main(int argc, char** argv) {
   app.add_option("--threads", o.bake.threads, "worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
   app.add_option("--backend", o.backend, "ray kernel")->check(CLI::IsMember({"embree", "bvh"}));
+  app.add_option(
+         "--light-choice", o.lightChoice,
+         "how next-event estimation picks its one light per path vertex: place (by a bound of what "
+         "each light brings there) or power (by power alone)")
+      ->check(CLI::IsMember({"place", "power"}));
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--png", o.png,

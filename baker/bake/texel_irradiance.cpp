@@ -70,6 +70,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   TraceSettings trace;
   trace.maxDepth = settings.maxDepth;
   trace.seed = settings.seed;
+  trace.lightChoice = settings.lightChoice;
   trace.paths = PathSet::IndirectOnly;
   const PathTracer indirect(scene, geometry, counting, trace);
   const Scene directScene = bakedDirectScene(scene);

@@ -27,6 +27,7 @@
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
 #include "trace/stage_progress.h"
+#include "trace/trace_settings.h"
 
 namespace bounce {
 
@@ -37,7 +38,8 @@ struct IrradianceSettings {
   float targetError = 0.0f;  // relative standard error to stop at; 0: always maxSpp
   int maxDepth = 64;         // most diffuse reflections along a path
   uint32_t seed = 0;
-  int threads = 0;  // 0: all cores
+  LightChoice lightChoice = LightChoice::ByPlace;  // next-event estimation's (trace_settings.h)
+  int threads = 0;                                 // 0: all cores
   // Where the rows of texels done are counted (total: the coverage's rows), and whether to stop
   // (then BakeCancelled is thrown after the rows in flight); null: neither.
   StageProgress* progress = nullptr;

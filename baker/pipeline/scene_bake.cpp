@@ -176,6 +176,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   settings.irradiance.targetError = o.targetError;
   settings.irradiance.maxDepth = o.maxDepth;
   settings.irradiance.seed = o.seed;
+  settings.irradiance.lightChoice = o.lightChoice;
   settings.irradiance.threads = o.threads;
   settings.denoise = o.denoise;
   const LightmapBake bake =

@@ -28,6 +28,7 @@ nlohmann::json bakeInputsJson(const SceneBakeSettings& s) {
           {"targetError", s.targetError},
           {"maxDepth", s.maxDepth},
           {"seed", s.seed},
+          {"lightChoice", s.lightChoice == LightChoice::ByPlace ? "place" : "power"},
           {"backend", s.backend == RayBackend::Embree ? "embree" : "bvh"},
           {"denoise", s.denoise},
           {"vpls", s.vpls},
@@ -61,6 +62,12 @@ SceneBakeSettings bakeSettingsFromInputs(const nlohmann::json& inputs, SceneBake
   get("vplError", s.vplError);
   get("tileSize", s.tileSize);
   s.backend = parseRayBackend(backend);
+  std::string choice = "power";
+  if (inputs.contains("lightChoice")) get("lightChoice", choice);
+  if (choice != "place" && choice != "power")
+    throw std::runtime_error("the bake inputs' \"lightChoice\" is \"" + choice +
+                             "\", not \"place\" or \"power\"");
+  s.lightChoice = choice == "place" ? LightChoice::ByPlace : LightChoice::ByPower;
   return s;
 }
 

@@ -12,6 +12,7 @@
 #include "bake/tile_exchange.h"
 #include "bake/tile_grid.h"
 #include "ray/ray_kernel.h"
+#include "trace/trace_settings.h"
 
 namespace bounce {
 
@@ -23,6 +24,9 @@ struct SceneBakeSettings {
   float targetError;       // relative standard error to stop a texel at; 0: always spp
   int maxDepth;
   uint32_t seed = 0;
+  // Next-event estimation's pick (trace/trace_settings.h). Bake inputs without it (journals of
+  // bakes before it existed) mean ByPower, the only pick then.
+  LightChoice lightChoice = LightChoice::ByPlace;
   int threads = 0;  // 0: all cores
   RayBackend backend = RayBackend::Embree;
   bool denoise;

@@ -68,6 +68,7 @@ LightSampler::LightSampler(const Scene& scene, const WorldGeometry& geometry,
     entries_.clear();
     return;
   }
+  if (vpls.empty()) addNearby(scene, emitters);
   cdf_.reserve(weights.size() + 1);
   cdf_.push_back(0.0);
   double running = 0.0;
@@ -77,6 +78,120 @@ LightSampler::LightSampler(const Scene& scene, const WorldGeometry& geometry,
     cdf_.push_back(i + 1 == weights.size() ? 1.0 : running / total);
     if (entries_[i].kind == LightKind::Area) areaPmf_ = pmf_.back();
   }
+}
+
+void LightSampler::addNearby(const Scene& scene, const EmitterTable& emitters) {
+  for (uint32_t c = 0; c < emitters.clusters().size(); ++c) {
+    const EmitterCluster& cluster = emitters.clusters()[c];
+    Nearby n;
+    n.kind = LightKind::Area;
+    n.index = c;
+    n.type = LightType::Point;
+    n.position = cluster.centre;
+    n.direction = glm::vec3(0.0f);
+    n.radius = cluster.radius;
+    n.radius2 = cluster.radius * cluster.radius;
+    n.power = static_cast<float>(cluster.power);
+    n.intensity = static_cast<float>(cluster.power / kPi);
+    if (n.power > 0.0f && std::isfinite(n.power) && isFinite(n.position)) nearby_.push_back(n);
+  }
+  for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const float power = punctualPower(light, sceneRadius_);
+    if (!(power > 0.0f)) continue;
+    Nearby n;
+    n.kind = LightKind::Punctual;
+    n.index = i;
+    n.type = light.type;
+    n.position = light.position;
+    const float len = glm::length(light.direction);
+    n.direction = len > 0.0f ? light.direction / len : glm::vec3(0.0f);
+    n.power = power;
+    if (light.type == LightType::Directional) {
+      n.intensity = luminance(light.irradiance);
+    } else {
+      n.intensity = luminance(light.intensity);
+    }
+    if (light.type == LightType::Spot) {
+      n.cosOuter = std::cos(std::clamp(light.outerConeAngle, 0.0f, kPi));
+    }
+    nearby_.push_back(n);
+  }
+  if (nearby_.size() > kMaxNearbyLights) nearby_.clear();
+}
+
+void LightSampler::nearbyWeights(glm::vec3 position, glm::vec3 normal, float* w, float& weightSum,
+                                 float& powerSum) const {
+  constexpr float kMinDistance2 = 1e-4f;  // (1 cm)², m²
+  weightSum = 0.0f;
+  powerSum = 0.0f;
+  for (std::size_t i = 0; i < nearby_.size(); ++i) {
+    const Nearby& n = nearby_[i];
+    float weight = 0.0f;
+    if (n.kind == LightKind::Punctual && n.type == LightType::Directional) {
+      if (glm::dot(normal, -n.direction) > 0.0f) weight = n.intensity;
+    } else {
+      const glm::vec3 toLight = n.position - position;
+      const float dist2 = glm::dot(toLight, toLight);
+      // Below the plane: every point of the light (the cluster's sphere) has n·(x − p) ≤ 0.
+      bool reaches = glm::dot(normal, toLight) > -n.radius;
+      if (n.kind == LightKind::Punctual && n.type == LightType::Spot) {
+        reaches = reaches && dist2 > 0.0f &&
+                  glm::dot(n.direction, -toLight) > n.cosOuter * std::sqrt(dist2);
+      }
+      if (reaches) weight = n.intensity / std::max({dist2, n.radius2, kMinDistance2});
+    }
+    if (!(weight > 0.0f) || !std::isfinite(weight)) weight = 0.0f;
+    w[i] = weight;
+    if (weight > 0.0f) {
+      weightSum += weight;
+      powerSum += n.power;
+    }
+  }
+}
+
+float LightSampler::nearbyPmf(std::size_t i, const float* w, float weightSum,
+                              float powerSum) const {
+  if (!(w[i] > 0.0f) || !(weightSum > 0.0f) || !std::isfinite(weightSum)) return 0.0f;
+  return (1.0f - kPowerShare) * (w[i] / weightSum) + kPowerShare * (nearby_[i].power / powerSum);
+}
+
+LightPick LightSampler::pickAt(float u, glm::vec3 position, glm::vec3 normal) const {
+  if (nearby_.empty()) return pick(u);
+  float w[kMaxNearbyLights];
+  float weightSum = 0.0f, powerSum = 0.0f;
+  nearbyWeights(position, normal, w, weightSum, powerSum);
+  LightPick p;
+  if (!(weightSum > 0.0f) || !std::isfinite(weightSum)) return p;  // pmf 0: nothing reaches
+  // Inverse CDF over the lights that reach; the last one that reaches takes what rounding
+  // leaves.
+  float below = 0.0f, pmf = 0.0f;
+  std::size_t last = nearby_.size();
+  for (std::size_t i = 0; i < nearby_.size(); ++i) {
+    const float pmfI = nearbyPmf(i, w, weightSum, powerSum);
+    if (!(pmfI > 0.0f)) continue;
+    if (last != nearby_.size()) below += pmf;
+    last = i;
+    pmf = pmfI;
+    if (u < below + pmf) break;
+  }
+  p.kind = nearby_[last].kind;
+  p.index = nearby_[last].index;
+  p.pmf = pmf;
+  p.remapped = std::clamp((u - below) / pmf, 0.0f, 0x1.fffffep-1f);
+  return p;
+}
+
+float LightSampler::clusterPmfAt(uint32_t cluster, glm::vec3 position, glm::vec3 normal) const {
+  if (nearby_.empty()) return 0.0f;
+  float w[kMaxNearbyLights];
+  float weightSum = 0.0f, powerSum = 0.0f;
+  nearbyWeights(position, normal, w, weightSum, powerSum);
+  // Clusters come first in nearby_, in cluster order; clusters with no power are absent.
+  for (std::size_t i = 0; i < nearby_.size() && nearby_[i].kind == LightKind::Area; ++i) {
+    if (nearby_[i].index == cluster) return nearbyPmf(i, w, weightSum, powerSum);
+  }
+  return 0.0f;
 }
 
 LightPick LightSampler::pick(float u) const {

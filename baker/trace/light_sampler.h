@@ -13,6 +13,22 @@
 //   virtual point  luminance(Φ) (a cosine emitter radiates its whole Φ into its hemisphere)
 // Lights whose power is zero or not finite are never picked. Any positive weights give an
 // unbiased estimator as long as the pmf used to divide is the one sampled from (pmf()).
+//
+// pickAt() chooses by place instead, for next-event estimation at a surface point p with unit
+// geometric normal n: among the area emitters' clusters (trace/emitters.h) and the punctual
+// lights, with weight w_i, a bound of the irradiance (W/m²) light i can bring to p, and zero
+// where it brings none for certain:
+//   cluster        (Φ/π) / max(d², r²)   Φ/π = Σ A·Le (× 2 double-sided) bounds its intensity
+//                                        (W/sr), d from p to its bounding sphere's centre, r
+//                                        its radius; 0 when the sphere lies below p's plane
+//   point          I / max(d², 1 cm²)    0 when the light is below p's plane
+//   spot           as point, and 0 outside the outer cone (where the falloff is 0)
+//   directional    E                     0 when it arrives from below p's plane
+// and pmf_i = (1 − α)·w_i/Σw + α·P_i/Σ P_j over the lights with w > 0 (P: power as above,
+// α = kPowerShare), so a light whose bound misleads (it is occluded, its cluster is wide) keeps
+// a share by power. The zeros are exact: the tracer's estimates from those lights are 0 there
+// (they test the same geometric normal). With virtual point lights, or more than
+// kMaxNearbyLights entries, pickAt() is pick().
 #pragma once
 
 #include <cstdint>
@@ -29,6 +45,9 @@
 namespace bounce {
 
 enum class LightKind : uint8_t { Area, Punctual, Virtual };
+
+inline constexpr std::size_t kMaxNearbyLights = 128;
+inline constexpr float kPowerShare = 0.1f;  // α above
 
 struct LightPick {
   LightKind kind = LightKind::Area;
@@ -50,6 +69,13 @@ class LightSampler {
   // Probability of picking the area emitter set (0 when there is none); the pmf of one emitter
   // triangle is areaPmf() × its EmitterTable pmf.
   float areaPmf() const { return areaPmf_; }
+  // Whether pickAt() chooses by place (above).
+  bool choosesByPlace() const { return !nearby_.empty(); }
+  // Picks by place at `position` (m) with unit geometric normal `normal`; Area picks name an
+  // emitter cluster (EmitterTable::clusters()) in `index`. pmf 0 when no light can reach it.
+  LightPick pickAt(float u, glm::vec3 position, glm::vec3 normal) const;
+  // The probability with which pickAt() at that point picks emitter cluster c.
+  float clusterPmfAt(uint32_t cluster, glm::vec3 position, glm::vec3 normal) const;
   // Radius R of the scene's bounding sphere (m) used for directional lights' power.
   float sceneRadius() const { return sceneRadius_; }
   // Luminance of the power of scene light i (W), as defined above; 0 when never picked.
@@ -60,6 +86,26 @@ class LightSampler {
     LightKind kind;
     uint32_t index;
   };
+  // A light pickAt() chooses among: an emitter cluster or a punctual light.
+  struct Nearby {
+    LightKind kind;
+    uint32_t index;          // cluster, or into Scene::lights
+    LightType type;          // Punctual only
+    glm::vec3 position;      // cluster centre or light position, m
+    glm::vec3 direction;     // unit direction the light travels (spot, directional)
+    float radius2 = 0.0f;    // cluster radius², m²
+    float radius = 0.0f;     // cluster radius, m
+    float cosOuter = -1.0f;  // spot
+    float intensity = 0.0f;  // luminance: W/sr bound (cluster, point, spot), W/m² (directional)
+    float power = 0.0f;      // luminance, W
+  };
+  void addNearby(const Scene& scene, const EmitterTable& emitters);
+  // Fills w (nearby_.size() entries) and returns the probabilities' two sums in the mixture.
+  void nearbyWeights(glm::vec3 position, glm::vec3 normal, float* w, float& weightSum,
+                     float& powerSum) const;
+  float nearbyPmf(std::size_t i, const float* w, float weightSum, float powerSum) const;
+
+  std::vector<Nearby> nearby_;
   std::vector<Entry> entries_;
   std::vector<double> cdf_;  // cdf_[i] = Σ_{j<i} pmf_j, cdf_.back() = 1
   std::vector<float> pmf_;

@@ -41,6 +41,7 @@ PathTracer::PathTracer(const Scene& scene, const WorldGeometry& geometry, const 
       vpls_(std::move(vpls)),
       lights_(scene, geometry, emitters_, vpls_) {
   settings_.maxDepth = std::max(settings_.maxDepth, 0);
+  byPlace_ = settings_.lightChoice == LightChoice::ByPlace && lights_.choosesByPlace();
   minReflections_ = settings_.paths == PathSet::IndirectOnly ? 2 : 0;
   maxReflections_ =
       settings_.paths == PathSet::DirectOnly ? std::min(1, settings_.maxDepth) : settings_.maxDepth;
@@ -65,14 +66,15 @@ glm::vec3 PathTracer::sampleLight(const SurfacePoint& point, SobolSampler& sampl
   const uint32_t base = sampler.dimension();
   sampler.setDimension(base + kDimLightPick);
   const glm::vec2 u = sampler.get2D();
-  const LightPick pick = lights_.pick(u.x);
+  const LightPick pick =
+      byPlace_ ? lights_.pickAt(u.x, point.position, point.geometricNormal) : lights_.pick(u.x);
   if (!(pick.pmf > 0.0f)) return glm::vec3(0.0f);
   switch (pick.kind) {
     case LightKind::Area:
       // BRDF-only estimates count area emitters only where bounce rays hit them.
       if (settings_.strategy == LightStrategy::BrdfOnly) return glm::vec3(0.0f);
       sampler.setDimension(base + kDimLightPoint);
-      return sampleAreaLight(point, {pick.remapped, u.y}, pick.pmf, sampler);
+      return sampleAreaLight(point, pick, u.y, sampler);
     case LightKind::Punctual:
       return deltaLight(point, scene_.lights[pick.index]) / pick.pmf;
     case LightKind::Virtual:
@@ -81,10 +83,14 @@ glm::vec3 PathTracer::sampleLight(const SurfacePoint& point, SobolSampler& sampl
   return glm::vec3(0.0f);
 }
 
-glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, glm::vec2 pick, float setPmf,
+glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, const LightPick& pick, float coin,
                                       SobolSampler& sampler) const {
   const glm::vec2 onTriangle = sampler.get2D();
-  const EmitterSample light = emitters_.sample(pick, onTriangle);
+  // A pick by place names a cluster; the pmf of the set times the triangle's within it.
+  const EmitterSample light =
+      byPlace_ ? emitters_.sampleCluster(pick.index, {pick.remapped, coin}, onTriangle)
+               : emitters_.sample({pick.remapped, coin}, onTriangle);
+  const float setPmf = pick.pmf;
 
   const glm::vec3 toLight = light.position - point.position;
   const float dist2 = glm::dot(toLight, toLight);
@@ -107,6 +113,13 @@ glm::vec3 PathTracer::sampleAreaLight(const SurfacePoint& point, glm::vec2 pick,
                            ? powerHeuristic(pdfLight, cosineHemispherePdf(cosSurface))
                            : 1.0f;
   return point.albedo * kInvPi * light.radiance * (cosSurface * weight / pdfLight);
+}
+
+float PathTracer::lightPdfArea(const SurfacePoint& point, uint32_t triangle) const {
+  if (!byPlace_) return lights_.areaPmf() * emitters_.pdfArea(triangle);
+  const EmitterTable::InCluster in = emitters_.inCluster(triangle);
+  if (!(in.pdfArea > 0.0f)) return 0.0f;
+  return lights_.clusterPmfAt(in.cluster, point.position, point.geometricNormal) * in.pdfArea;
 }
 
 glm::vec3 PathTracer::deltaLight(const SurfacePoint& point, const Light& light) const {
@@ -202,8 +215,9 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     if (maxComponent(next.emitted) > 0.0f && depth + 1 >= minReflections_ &&
         settings_.strategy != LightStrategy::LightOnly) {
       float weight = 1.0f;
-      // The light strategy's density includes the pick of the area set (trace/light_sampler.h).
-      const float pdfArea = lights_.areaPmf() * emitters_.pdfArea(next.triangle);
+      // The light strategy's density includes the pick of the area set or cluster
+      // (trace/light_sampler.h), made at `point`.
+      const float pdfArea = lightPdfArea(point, next.triangle);
       if (settings_.strategy == LightStrategy::Mis && pdfArea > 0.0f) {
         const glm::vec3 d = next.position - point.position;
         const float cosLight = glm::dot(next.geometricNormal, -wi);

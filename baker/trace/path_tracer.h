@@ -1,9 +1,9 @@
 // The unidirectional path tracer: Lambertian surfaces (BRDF ρ/π), cosine-weighted BRDF
-// sampling, next-event estimation to ONE light per vertex picked by power among the area
-// emitters, the point, spot and directional lights and (for checks) virtual point lights
-// (trace/light_sampler.h), MIS with the power heuristic (the pick pmf is part of the light
-// strategy's density), Russian roulette on path throughput.
-// GL-free; used by the reference renderer and by the lightmap baker.
+// sampling, next-event estimation to ONE light per vertex, picked by what each brings to the
+// vertex among the area emitters' clusters and the point, spot and directional lights (by power
+// when there are (for checks) virtual point lights: trace/light_sampler.h), MIS with the power
+// heuristic (the pick pmf is part of the light strategy's density), Russian roulette on path
+// throughput. GL-free; used by the reference renderer and by the lightmap baker.
 #pragma once
 
 #include <vector>
@@ -59,14 +59,17 @@ class PathTracer {
   // `throughput` is the path weight so far, `depth` the reflections before this vertex.
   glm::vec3 reflected(SurfacePoint point, glm::vec3 throughput, int depth, uint32_t baseDim,
                       SobolSampler& sampler) const;
-  // Next-event estimate of light after one reflection at `point` from one light picked by
-  // power, divided by its pick pmf (area emitters with MIS weight), not yet multiplied by the
-  // path throughput.
+  // Next-event estimate of light after one reflection at `point` from one light picked
+  // (LightSampler::pickAt), divided by its pick pmf (area emitters with MIS weight), not yet
+  // multiplied by the path throughput.
   glm::vec3 sampleLight(const SurfacePoint& point, SobolSampler& sampler) const;
-  // Reflected radiance from the area emitters, given the emitter pick numbers and the pmf of
-  // picking the area set.
-  glm::vec3 sampleAreaLight(const SurfacePoint& point, glm::vec2 pick, float setPmf,
+  // Reflected radiance from the area emitters picked (the set, or a cluster when the sampler
+  // chooses by place), `coin` tossing the emitter alias table's coin.
+  glm::vec3 sampleAreaLight(const SurfacePoint& point, const LightPick& pick, float coin,
                             SobolSampler& sampler) const;
+  // Area density (per m² of `triangle`, an emitter) with which next-event estimation at `point`
+  // samples a point on it: the pick's pmf times the triangle's within the set or cluster.
+  float lightPdfArea(const SurfacePoint& point, uint32_t triangle) const;
   // Reflected radiance from one delta light (exact: no sampling).
   glm::vec3 deltaLight(const SurfacePoint& point, const Light& light) const;
   glm::vec3 virtualLight(const SurfacePoint& point, const Vpl& vpl) const;
@@ -82,6 +85,7 @@ class PathTracer {
   EmitterTable emitters_;
   std::vector<Vpl> vpls_;
   LightSampler lights_;  // over emitters_, scene_.lights and vpls_
+  bool byPlace_;         // settings ask for it and lights_ can (LightSampler::choosesByPlace)
   int minReflections_;
   int maxReflections_;
 };

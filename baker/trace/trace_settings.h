@@ -22,12 +22,19 @@ enum class LightStrategy : uint8_t {
   BrdfOnly,   // emitters count only when a BRDF-sampled ray hits them
 };
 
+// How next-event estimation picks its one light per vertex (trace/light_sampler.h).
+enum class LightChoice : uint8_t {
+  ByPlace,  // by a bound of what each light brings to the vertex (the default)
+  ByPower,  // by power alone, wherever the vertex is
+};
+
 struct TraceSettings {
   int spp = 64;           // samples per pixel
   int maxDepth = 64;      // most diffuse reflections along a path (0: emitters seen directly)
   int rouletteDepth = 3;  // Russian roulette from this many reflections on
   PathSet paths = PathSet::All;
   LightStrategy strategy = LightStrategy::Mis;
+  LightChoice lightChoice = LightChoice::ByPlace;
   uint32_t seed = 0;
   int threads = 0;                          // 0: all cores (TBB's default)
   RayBackend backend = RayBackend::Embree;  // used by callers that build the kernel
