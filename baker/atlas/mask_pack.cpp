@@ -21,22 +21,20 @@ class TakenTexels {
       : width_(width),
         maxHeight_(maxHeight),
         words_((width + 63) / 64 + 1),
-        summaryWords_((words_ + 63) / 64) {}
+        summaryWords_((words_ + 63) / 64),
+        lowest_(static_cast<std::size_t>(width) + 1, 0) {}
 
-  // 64 texels of row y from column x on (bit i is column x + i).
-  uint64_t run(int x, int y) const {
-    if (y >= rows()) return 0;
+  // The highest taken column in [x0, x1] of row y, or -1 when all are free.
+  int lastTaken(int y, int x0, int x1) const {
+    if (y >= rows()) return -1;
     const uint64_t* row = &bits_[static_cast<std::size_t>(y) * words_];
-    const int w = x >> 6, s = x & 63;
-    if (s == 0) return row[w];
-    return (row[w] >> s) | (row[w + 1] << (64 - s));
-  }
-  bool fits(const ChartMask& mask, int x, int y) const {
-    for (int r = 0; r < mask.height; ++r)
-      for (int k = 0; k < mask.words; ++k)
-        if (run(x + 64 * k, y + r) & mask.bits[static_cast<std::size_t>(r) * mask.words + k])
-          return false;
-    return true;
+    for (int w = x1 >> 6; w >= x0 >> 6; --w) {
+      uint64_t word = row[w];
+      if (w == x1 >> 6) word &= ~uint64_t{0} >> (63 - (x1 & 63));
+      if (w == x0 >> 6) word &= ~uint64_t{0} << (x0 & 63);
+      if (word) return 64 * w + 63 - std::countl_zero(word);
+    }
+    return -1;
   }
   // The first free column ≥ x in row y (width_ when none).
   int nextFree(int x, int y) const {
@@ -57,8 +55,19 @@ class TakenTexels {
     }
     return width_;
   }
-  // Free texels in row y: a mask fits nowhere in rows with fewer free texels than it has there.
+  // Free texels in row y, and its longest run of free texels: a mask fits nowhere in rows with
+  // fewer free texels than it has there, nor with a shorter free run than its longest there.
   int freeIn(int y) const { return y < rows() ? free_[static_cast<std::size_t>(y)] : width_; }
+  int longestFreeIn(int y) const {
+    return y < rows() ? longest_[static_cast<std::size_t>(y)] : width_;
+  }
+  // The lowest row with a free run of `length` texels or more. Rows only fill, so the answer
+  // only rises and each length's search resumes where it stopped.
+  int lowestRowWith(int length) {
+    int& y = lowest_[static_cast<std::size_t>(length)];
+    while (y < rows() && longest_[static_cast<std::size_t>(y)] < length) ++y;
+    return y;
+  }
   // Marks `grown` (a mask dilated by `radius`) with its texel (radius, radius) at (x, y).
   void take(const ChartMask& grown, int radius, int x, int y) {
     for (int r = 0; r < grown.height; ++r) {
@@ -67,6 +76,7 @@ class TakenTexels {
       if (ty >= rows()) {
         bits_.resize(static_cast<std::size_t>(ty + 1) * words_, 0);
         free_.resize(static_cast<std::size_t>(ty + 1), width_);
+        longest_.resize(static_cast<std::size_t>(ty + 1), width_);
         open_.resize(static_cast<std::size_t>(ty + 1) * summaryWords_, ~uint64_t{0});
       }
       for (int c = 0; c < grown.width; ++c) {
@@ -83,17 +93,85 @@ class TakenTexels {
               ~(uint64_t{1} << (k & 63));
       }
       free_[static_cast<std::size_t>(ty)] = width_ - taken;
+      longest_[static_cast<std::size_t>(ty)] = longestRun(ty);
     }
   }
 
  private:
   int rows() const { return static_cast<int>(bits_.size() / words_); }
+  // The first taken column ≥ x in row y (width_ when none).
+  int nextTaken(int x, int y) const {
+    const uint64_t* row = &bits_[static_cast<std::size_t>(y) * words_];
+    for (int w = x >> 6; 64 * w < width_; ++w)
+      if (const uint64_t t = row[w] & (~uint64_t{0} << (w == x >> 6 ? x & 63 : 0)))
+        return std::min(width_, 64 * w + std::countr_zero(t));
+    return width_;
+  }
+  int longestRun(int y) const {
+    int longest = 0;
+    for (int x = nextFree(0, y); x < width_;) {
+      const int end = nextTaken(x, y);
+      longest = std::max(longest, end - x);
+      x = end < width_ ? nextFree(end, y) : width_;
+    }
+    return longest;
+  }
   int width_, maxHeight_, words_, summaryWords_;
   std::vector<uint64_t> bits_;
-  std::vector<int> free_;  // per row, width_ less its taken texels
+  std::vector<int> free_;     // per row, width_ less its taken texels
+  std::vector<int> longest_;  // per row, its longest run of free texels
+  std::vector<int> lowest_;   // per run length, no row below it has a free run that long
   // Per row, bit k set while word k has a free texel (summaryWords_ words a row).
   std::vector<uint64_t> open_;
 };
+
+// A mask as runs of set texels: it fits at (x, y) exactly when every run lies on free texels.
+struct Run {
+  int row, first, last;  // mask row, first and last column
+};
+struct MaskRuns {
+  std::vector<Run> runs;     // longest first: they collide most and skip furthest
+  std::vector<int> count;    // per mask row, its texels
+  std::vector<int> longest;  // per mask row, its longest run
+};
+
+MaskRuns runsOf(const ChartMask& mask) {
+  MaskRuns m;
+  m.count.assign(static_cast<std::size_t>(mask.height), 0);
+  m.longest.assign(static_cast<std::size_t>(mask.height), 0);
+  for (int r = 0; r < mask.height; ++r)
+    for (int x = 0; x < mask.width; ++x) {
+      if (!mask.at(x, r)) continue;
+      const int first = x;
+      while (x + 1 < mask.width && mask.at(x + 1, r)) ++x;
+      m.runs.push_back({r, first, x});
+      m.count[static_cast<std::size_t>(r)] += x - first + 1;
+      m.longest[static_cast<std::size_t>(r)] =
+          std::max(m.longest[static_cast<std::size_t>(r)], x - first + 1);
+    }
+  std::stable_sort(m.runs.begin(), m.runs.end(),
+                   [](const Run& a, const Run& b) { return a.last - a.first > b.last - b.first; });
+  return m;
+}
+
+// The leftmost x in [x, lastX] where every run of the mask lies on free texels of rows from y
+// on, or lastX + 1. A run meeting a taken texel t rules out every x that puts t inside it and
+// every x that puts its first texel on the taken texels after t, so x jumps past them.
+int leftmostFit(const TakenTexels& taken, const std::vector<Run>& runs, int y, int x, int lastX) {
+  std::size_t i = 0, clear = 0;  // the last `clear` runs tested are free at x
+  while (clear < runs.size() && x <= lastX) {
+    const Run& run = runs[i];
+    const int t = taken.lastTaken(y + run.row, x + run.first, x + run.last);
+    if (t < 0) {
+      ++clear;
+      i = (i + 1) % runs.size();
+    } else {
+      x = taken.nextFree(t + 1, y + run.row) - run.first;
+      clear = 0;
+    }
+  }
+  return x;
+}
 
 struct Spot {
   int x = 0, y = 0;
@@ -102,40 +180,31 @@ struct Spot {
 
 // The lowest, then leftmost, position where `mask` fits with its texels in columns
 // [lo, width - hi) and rows ≥ lo, below maxTop - hi.
-Spot lowestFit(const TakenTexels& taken, const ChartMask& mask, int width, int lo, int hi,
-               int maxTop) {
-  // A texel the mask surely has: its first set texel, which must land on a free one.
-  int ax = 0, ay = 0;
-  for (int i = 0; i < mask.width * mask.height; ++i)
-    if (mask.at(i % mask.width, i / mask.width)) {
-      ax = i % mask.width;
-      ay = i / mask.width;
-      break;
-    }
-  std::vector<int> count(static_cast<std::size_t>(mask.height), 0);  // texels per mask row
-  for (int r = 0; r < mask.height; ++r)
-    for (int k = 0; k < mask.words; ++k)
-      count[static_cast<std::size_t>(r)] +=
-          std::popcount(mask.bits[static_cast<std::size_t>(r) * mask.words + k]);
+Spot lowestFit(TakenTexels& taken, const ChartMask& mask, const MaskRuns& m, int width, int lo,
+               int hi, int maxTop) {
   const auto roomFor = [&](int y) {
     for (int r = 0; r < mask.height; ++r)
-      if (taken.freeIn(y + r) < count[static_cast<std::size_t>(r)]) return false;
+      if (taken.longestFreeIn(y + r) < m.longest[static_cast<std::size_t>(r)] ||
+          taken.freeIn(y + r) < m.count[static_cast<std::size_t>(r)])
+        return false;
     return true;
   };
   const int lastX = width - hi - mask.width;
-  for (int y = lo; y + mask.height + hi <= maxTop; ++y) {
+  if (lastX < lo) return {};
+  int firstY = lo;  // below it, some mask row meets no free run as long as its own
+  for (int r = 0; r < mask.height; ++r)
+    if (m.longest[static_cast<std::size_t>(r)] > 0)
+      firstY = std::max(firstY, taken.lowestRowWith(m.longest[static_cast<std::size_t>(r)]) - r);
+  for (int y = firstY; y + mask.height + hi <= maxTop; ++y) {
     if (!roomFor(y)) continue;
-    for (int x = lo; x <= lastX; ++x) {
-      x = taken.nextFree(x + ax, y + ay) - ax;
-      if (x > lastX) break;
-      if (taken.fits(mask, x, y)) return {x, y, true};
-    }
+    if (const int x = leftmostFit(taken, m.runs, y, lo, lastX); x <= lastX) return {x, y, true};
   }
   return {};
 }
 
 std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& turns,
                                     const std::vector<std::vector<ChartMask>>& grown,
+                                    const std::vector<std::vector<MaskRuns>>& runs,
                                     const std::vector<std::size_t>& order, int padding, int width,
                                     int maxHeight) {
   const int lo = padding / 2, hi = padding - padding / 2;
@@ -151,7 +220,7 @@ std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& t
       const ChartMask& mask = turns[c][k];
       // A lower top than the best so far needs y < bestTop - height.
       const int maxTop = best.found ? std::min(maxHeight, bestTop - 1 + hi) : maxHeight;
-      const Spot s = lowestFit(taken, mask, width, lo, hi, maxTop);
+      const Spot s = lowestFit(taken, mask, runs[c][k], width, lo, hi, maxTop);
       if (s.found && (!best.found || s.y + mask.height < bestTop)) {
         best = s;
         bestTurn = static_cast<int>(k);
@@ -173,12 +242,14 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
                                      int maxSize) {
   if (turns.empty()) return MaskPacking{1, 1, {}, {}};
   std::vector<std::vector<ChartMask>> grown(turns.size());
+  std::vector<std::vector<MaskRuns>> runs(turns.size());
   double area = 0.0;
   int narrowest = 1;  // the widest chart's narrowest width, with the padding
   for (std::size_t c = 0; c < turns.size(); ++c) {
     int w = turns[c][0].width;
     for (const ChartMask& mask : turns[c]) {
       grown[c].push_back(dilateMask(mask, padding));
+      runs[c].push_back(runsOf(mask));
       w = std::min(w, mask.width);
     }
     const ChartMask& m = turns[c][0];
@@ -204,7 +275,8 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
         maxSize, std::max(narrowest,
                           static_cast<int>(std::ceil(
                               side * (kNarrowest + (kWidest - kNarrowest) * step / kWidthSteps)))));
-    std::optional<MaskPacking> packing = packInto(turns, grown, order, padding, width, maxSize);
+    std::optional<MaskPacking> packing =
+        packInto(turns, grown, runs, order, padding, width, maxSize);
     if (packing) {
       const auto cost = [](const MaskPacking& p) {
         return static_cast<double>(p.width) * p.height;
