@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <tuple>
 
 namespace bounce {
 namespace {
@@ -130,9 +132,11 @@ struct Run {
   int row, first, last;  // mask row, first and last column
 };
 struct MaskRuns {
-  std::vector<Run> runs;     // longest first: they collide most and skip furthest
-  std::vector<int> count;    // per mask row, its texels
-  std::vector<int> longest;  // per mask row, its longest run
+  std::vector<Run> runs;       // longest first: they collide most and skip furthest
+  std::vector<int> count;      // per mask row, its texels
+  std::vector<int> longest;    // per mask row, its longest run
+  std::vector<int> selective;  // mask rows, longest run first
+  int shape = 0;               // equal masks (of any charts and turns) share it
 };
 
 MaskRuns runsOf(const ChartMask& mask) {
@@ -151,6 +155,11 @@ MaskRuns runsOf(const ChartMask& mask) {
     }
   std::stable_sort(m.runs.begin(), m.runs.end(),
                    [](const Run& a, const Run& b) { return a.last - a.first > b.last - b.first; });
+  m.selective.resize(static_cast<std::size_t>(mask.height));
+  std::iota(m.selective.begin(), m.selective.end(), 0);
+  std::stable_sort(m.selective.begin(), m.selective.end(), [&](int a, int b) {
+    return m.longest[static_cast<std::size_t>(a)] > m.longest[static_cast<std::size_t>(b)];
+  });
   return m;
 }
 
@@ -178,12 +187,14 @@ struct Spot {
   bool found = false;
 };
 
-// The lowest, then leftmost, position where `mask` fits with its texels in columns
-// [lo, width - hi) and rows ≥ lo, below maxTop - hi.
+// The lowest, then leftmost, position from `from` on (row, then column) where `mask` fits with
+// its texels in columns [lo, width - hi) and rows ≥ lo, below maxTop - hi. Texels only get taken,
+// so a position where a mask did not fit never fits it again: `from` becomes the position found,
+// or the first row not searched, and the next search for an equal mask resumes there.
 Spot lowestFit(TakenTexels& taken, const ChartMask& mask, const MaskRuns& m, int width, int lo,
-               int hi, int maxTop) {
+               int hi, int maxTop, glm::ivec2& from) {
   const auto roomFor = [&](int y) {
-    for (int r = 0; r < mask.height; ++r)
+    for (const int r : m.selective)
       if (taken.longestFreeIn(y + r) < m.longest[static_cast<std::size_t>(r)] ||
           taken.freeIn(y + r) < m.count[static_cast<std::size_t>(r)])
         return false;
@@ -191,24 +202,31 @@ Spot lowestFit(TakenTexels& taken, const ChartMask& mask, const MaskRuns& m, int
   };
   const int lastX = width - hi - mask.width;
   if (lastX < lo) return {};
-  int firstY = lo;  // below it, some mask row meets no free run as long as its own
+  int firstY = std::max(lo, from.y);  // below it, no fit is left
   for (int r = 0; r < mask.height; ++r)
     if (m.longest[static_cast<std::size_t>(r)] > 0)
       firstY = std::max(firstY, taken.lowestRowWith(m.longest[static_cast<std::size_t>(r)]) - r);
-  for (int y = firstY; y + mask.height + hi <= maxTop; ++y) {
+  int y = firstY;
+  for (; y + mask.height + hi <= maxTop; ++y) {
     if (!roomFor(y)) continue;
-    if (const int x = leftmostFit(taken, m.runs, y, lo, lastX); x <= lastX) return {x, y, true};
+    const int x = leftmostFit(taken, m.runs, y, y == from.y ? std::max(lo, from.x) : lo, lastX);
+    if (x <= lastX) {
+      from = {x, y};
+      return {x, y, true};
+    }
   }
+  from = {lo, y};
   return {};
 }
 
 std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& turns,
                                     const std::vector<std::vector<ChartMask>>& grown,
                                     const std::vector<std::vector<MaskRuns>>& runs,
-                                    const std::vector<std::size_t>& order, int padding, int width,
-                                    int maxHeight) {
+                                    std::size_t shapes, const std::vector<std::size_t>& order,
+                                    int padding, int width, int maxHeight) {
   const int lo = padding / 2, hi = padding - padding / 2;
   TakenTexels taken(width, maxHeight);
+  std::vector<glm::ivec2> resume(shapes, glm::ivec2(lo));  // per shape, lowestFit's `from`
   MaskPacking packing;
   packing.width = width;
   packing.origin.assign(turns.size(), glm::ivec2(0));
@@ -220,7 +238,9 @@ std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& t
       const ChartMask& mask = turns[c][k];
       // A lower top than the best so far needs y < bestTop - height.
       const int maxTop = best.found ? std::min(maxHeight, bestTop - 1 + hi) : maxHeight;
-      const Spot s = lowestFit(taken, mask, runs[c][k], width, lo, hi, maxTop);
+      const MaskRuns& m = runs[c][k];
+      const Spot s = lowestFit(taken, mask, m, width, lo, hi, maxTop,
+                               resume[static_cast<std::size_t>(m.shape)]);
       if (s.found && (!best.found || s.y + mask.height < bestTop)) {
         best = s;
         bestTurn = static_cast<int>(k);
@@ -243,6 +263,7 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
   if (turns.empty()) return MaskPacking{1, 1, {}, {}};
   std::vector<std::vector<ChartMask>> grown(turns.size());
   std::vector<std::vector<MaskRuns>> runs(turns.size());
+  std::map<std::tuple<int, int, std::vector<uint64_t>>, int> shapes;
   double area = 0.0;
   int narrowest = 1;  // the widest chart's narrowest width, with the padding
   for (std::size_t c = 0; c < turns.size(); ++c) {
@@ -250,6 +271,9 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
     for (const ChartMask& mask : turns[c]) {
       grown[c].push_back(dilateMask(mask, padding));
       runs[c].push_back(runsOf(mask));
+      const auto [it, added] = shapes.try_emplace(std::tuple(mask.width, mask.height, mask.bits),
+                                                  static_cast<int>(shapes.size()));
+      runs[c].back().shape = it->second;
       w = std::min(w, mask.width);
     }
     const ChartMask& m = turns[c][0];
@@ -276,7 +300,7 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
                           static_cast<int>(std::ceil(
                               side * (kNarrowest + (kWidest - kNarrowest) * step / kWidthSteps)))));
     std::optional<MaskPacking> packing =
-        packInto(turns, grown, runs, order, padding, width, maxSize);
+        packInto(turns, grown, runs, shapes.size(), order, padding, width, maxSize);
     if (packing) {
       const auto cost = [](const MaskPacking& p) {
         return static_cast<double>(p.width) * p.height;
