@@ -7,6 +7,8 @@
 #include <numeric>
 #include <tuple>
 
+#include <tbb/parallel_for.h>
+
 namespace bounce {
 namespace {
 
@@ -293,22 +295,23 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
            std::min(turns[b][0].width, turns[b][0].height);
   });
   const double side = std::sqrt(area);
-  std::optional<MaskPacking> best;
+  std::vector<int> widths;
   for (int step = 0; step <= kWidthSteps; ++step) {
-    const int width = std::min(
-        maxSize, std::max(narrowest,
-                          static_cast<int>(std::ceil(
-                              side * (kNarrowest + (kWidest - kNarrowest) * step / kWidthSteps)))));
-    std::optional<MaskPacking> packing =
-        packInto(turns, grown, runs, shapes.size(), order, padding, width, maxSize);
-    if (packing) {
-      const auto cost = [](const MaskPacking& p) {
-        return static_cast<double>(p.width) * p.height;
-      };
-      if (!best || cost(*packing) < cost(*best)) best = std::move(packing);
-    }
-    if (width == maxSize) break;
+    widths.push_back(
+        std::min(maxSize, std::max(narrowest, static_cast<int>(std::ceil(
+                                                  side * (kNarrowest + (kWidest - kNarrowest) *
+                                                                           step / kWidthSteps))))));
+    if (widths.back() == maxSize) break;
   }
+  // Each width packs on its own; the first of the smallest atlases wins, whatever the threads.
+  std::vector<std::optional<MaskPacking>> packings(widths.size());
+  tbb::parallel_for(std::size_t{0}, widths.size(), [&](std::size_t i) {
+    packings[i] = packInto(turns, grown, runs, shapes.size(), order, padding, widths[i], maxSize);
+  });
+  std::optional<MaskPacking> best;
+  const auto cost = [](const MaskPacking& p) { return static_cast<double>(p.width) * p.height; };
+  for (std::optional<MaskPacking>& packing : packings)
+    if (packing && (!best || cost(*packing) < cost(*best))) best = std::move(packing);
   return best;
 }
 
