@@ -1,9 +1,14 @@
 #include "atlas/mask_pack.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <tuple>
+
+#include <tbb/parallel_for.h>
+
+#include "atlas/taken_texels.h"
 
 namespace bounce {
 namespace {
@@ -13,133 +18,106 @@ namespace {
 constexpr double kNarrowest = 0.6, kWidest = 1.2;
 constexpr int kWidthSteps = 3;
 
-// The atlas's taken texels: every placed chart's mask dilated by the padding. A chart fits where
-// its own mask meets none of them.
-class TakenTexels {
- public:
-  TakenTexels(int width, int maxHeight)
-      : width_(width),
-        maxHeight_(maxHeight),
-        words_((width + 63) / 64 + 1),
-        summaryWords_((words_ + 63) / 64) {}
-
-  // 64 texels of row y from column x on (bit i is column x + i).
-  uint64_t run(int x, int y) const {
-    if (y >= rows()) return 0;
-    const uint64_t* row = &bits_[static_cast<std::size_t>(y) * words_];
-    const int w = x >> 6, s = x & 63;
-    if (s == 0) return row[w];
-    return (row[w] >> s) | (row[w + 1] << (64 - s));
-  }
-  bool fits(const ChartMask& mask, int x, int y) const {
-    for (int r = 0; r < mask.height; ++r)
-      for (int k = 0; k < mask.words; ++k)
-        if (run(x + 64 * k, y + r) & mask.bits[static_cast<std::size_t>(r) * mask.words + k])
-          return false;
-    return true;
-  }
-  // The first free column ≥ x in row y (width_ when none).
-  int nextFree(int x, int y) const {
-    if (y >= rows()) return x;
-    const uint64_t* row = &bits_[static_cast<std::size_t>(y) * words_];
-    const int w = x >> 6;
-    if (const uint64_t free = ~row[w] & (~uint64_t{0} << (x & 63)))
-      return 64 * w + std::countr_zero(free);
-    // The next word with a free texel, from the row's summary of open words.
-    const uint64_t* open = &open_[static_cast<std::size_t>(y) * summaryWords_];
-    for (int k = w + 1; k < words_;) {
-      const uint64_t candidates = open[k >> 6] & (~uint64_t{0} << (k & 63));
-      if (candidates) {
-        const int next = 64 * (k >> 6) + std::countr_zero(candidates);
-        return 64 * next + std::countr_zero(~row[next]);
-      }
-      k = 64 * ((k >> 6) + 1);
-    }
-    return width_;
-  }
-  // Free texels in row y: a mask fits nowhere in rows with fewer free texels than it has there.
-  int freeIn(int y) const { return y < rows() ? free_[static_cast<std::size_t>(y)] : width_; }
-  // Marks `grown` (a mask dilated by `radius`) with its texel (radius, radius) at (x, y).
-  void take(const ChartMask& grown, int radius, int x, int y) {
-    for (int r = 0; r < grown.height; ++r) {
-      const int ty = y - radius + r;
-      if (ty < 0 || ty >= maxHeight_) continue;
-      if (ty >= rows()) {
-        bits_.resize(static_cast<std::size_t>(ty + 1) * words_, 0);
-        free_.resize(static_cast<std::size_t>(ty + 1), width_);
-        open_.resize(static_cast<std::size_t>(ty + 1) * summaryWords_, ~uint64_t{0});
-      }
-      for (int c = 0; c < grown.width; ++c) {
-        const int tx = x - radius + c;
-        if (tx >= 0 && tx < width_ && grown.at(c, r))
-          bits_[static_cast<std::size_t>(ty) * words_ + (tx >> 6)] |= uint64_t{1} << (tx & 63);
-      }
-      int taken = 0;
-      for (int k = 0; k < words_; ++k) {
-        const uint64_t word = bits_[static_cast<std::size_t>(ty) * words_ + k];
-        taken += std::popcount(word);
-        if (word == ~uint64_t{0})
-          open_[static_cast<std::size_t>(ty) * summaryWords_ + (k >> 6)] &=
-              ~(uint64_t{1} << (k & 63));
-      }
-      free_[static_cast<std::size_t>(ty)] = width_ - taken;
-    }
-  }
-
- private:
-  int rows() const { return static_cast<int>(bits_.size() / words_); }
-  int width_, maxHeight_, words_, summaryWords_;
-  std::vector<uint64_t> bits_;
-  std::vector<int> free_;  // per row, width_ less its taken texels
-  // Per row, bit k set while word k has a free texel (summaryWords_ words a row).
-  std::vector<uint64_t> open_;
+// A mask as runs of set texels: it fits at (x, y) exactly when every run lies on free texels.
+struct Run {
+  int row, first, last;  // mask row, first and last column
 };
+struct MaskRuns {
+  std::vector<Run> runs;       // longest first: they collide most and skip furthest
+  std::vector<int> count;      // per mask row, its texels
+  std::vector<int> longest;    // per mask row, its longest run
+  std::vector<int> selective;  // mask rows, longest run first
+  int shape = 0;               // equal masks (of any charts and turns) share it
+};
+
+MaskRuns runsOf(const ChartMask& mask) {
+  MaskRuns m;
+  m.count.assign(static_cast<std::size_t>(mask.height), 0);
+  m.longest.assign(static_cast<std::size_t>(mask.height), 0);
+  for (int r = 0; r < mask.height; ++r)
+    for (int x = 0; x < mask.width; ++x) {
+      if (!mask.at(x, r)) continue;
+      const int first = x;
+      while (x + 1 < mask.width && mask.at(x + 1, r)) ++x;
+      m.runs.push_back({r, first, x});
+      m.count[static_cast<std::size_t>(r)] += x - first + 1;
+      m.longest[static_cast<std::size_t>(r)] =
+          std::max(m.longest[static_cast<std::size_t>(r)], x - first + 1);
+    }
+  std::stable_sort(m.runs.begin(), m.runs.end(),
+                   [](const Run& a, const Run& b) { return a.last - a.first > b.last - b.first; });
+  m.selective.resize(static_cast<std::size_t>(mask.height));
+  std::iota(m.selective.begin(), m.selective.end(), 0);
+  std::stable_sort(m.selective.begin(), m.selective.end(), [&](int a, int b) {
+    return m.longest[static_cast<std::size_t>(a)] > m.longest[static_cast<std::size_t>(b)];
+  });
+  return m;
+}
+
+// The leftmost x in [x, lastX] where every run of the mask lies on free texels of rows from y
+// on, or lastX + 1. A run meeting a taken texel t rules out every x that puts t inside it and
+// every x that puts its first texel on the taken texels after t, so x jumps past them.
+int leftmostFit(const TakenTexels& taken, const std::vector<Run>& runs, int y, int x, int lastX) {
+  std::size_t i = 0, clear = 0;  // the last `clear` runs tested are free at x
+  while (clear < runs.size() && x <= lastX) {
+    const Run& run = runs[i];
+    const int t = taken.lastTaken(y + run.row, x + run.first, x + run.last);
+    if (t < 0) {
+      ++clear;
+      i = (i + 1) % runs.size();
+    } else {
+      x = taken.nextFree(t + 1, y + run.row) - run.first;
+      clear = 0;
+    }
+  }
+  return x;
+}
 
 struct Spot {
   int x = 0, y = 0;
   bool found = false;
 };
 
-// The lowest, then leftmost, position where `mask` fits with its texels in columns
-// [lo, width - hi) and rows ≥ lo, below maxTop - hi.
-Spot lowestFit(const TakenTexels& taken, const ChartMask& mask, int width, int lo, int hi,
-               int maxTop) {
-  // A texel the mask surely has: its first set texel, which must land on a free one.
-  int ax = 0, ay = 0;
-  for (int i = 0; i < mask.width * mask.height; ++i)
-    if (mask.at(i % mask.width, i / mask.width)) {
-      ax = i % mask.width;
-      ay = i / mask.width;
-      break;
-    }
-  std::vector<int> count(static_cast<std::size_t>(mask.height), 0);  // texels per mask row
-  for (int r = 0; r < mask.height; ++r)
-    for (int k = 0; k < mask.words; ++k)
-      count[static_cast<std::size_t>(r)] +=
-          std::popcount(mask.bits[static_cast<std::size_t>(r) * mask.words + k]);
+// The lowest, then leftmost, position from `from` on (row, then column) where `mask` fits with
+// its texels in columns [lo, width - hi) and rows ≥ lo, below maxTop - hi. Texels only get taken,
+// so a position where a mask did not fit never fits it again: `from` becomes the position found,
+// or the first row not searched, and the next search for an equal mask resumes there.
+Spot lowestFit(TakenTexels& taken, const ChartMask& mask, const MaskRuns& m, int width, int lo,
+               int hi, int maxTop, glm::ivec2& from) {
   const auto roomFor = [&](int y) {
-    for (int r = 0; r < mask.height; ++r)
-      if (taken.freeIn(y + r) < count[static_cast<std::size_t>(r)]) return false;
+    for (const int r : m.selective)
+      if (taken.longestFreeIn(y + r) < m.longest[static_cast<std::size_t>(r)] ||
+          taken.freeIn(y + r) < m.count[static_cast<std::size_t>(r)])
+        return false;
     return true;
   };
   const int lastX = width - hi - mask.width;
-  for (int y = lo; y + mask.height + hi <= maxTop; ++y) {
+  if (lastX < lo) return {};
+  int firstY = std::max(lo, from.y);  // below it, no fit is left
+  for (int r = 0; r < mask.height; ++r)
+    if (m.longest[static_cast<std::size_t>(r)] > 0)
+      firstY = std::max(firstY, taken.lowestRowWith(m.longest[static_cast<std::size_t>(r)]) - r);
+  int y = firstY;
+  for (; y + mask.height + hi <= maxTop; ++y) {
     if (!roomFor(y)) continue;
-    for (int x = lo; x <= lastX; ++x) {
-      x = taken.nextFree(x + ax, y + ay) - ax;
-      if (x > lastX) break;
-      if (taken.fits(mask, x, y)) return {x, y, true};
+    const int x = leftmostFit(taken, m.runs, y, y == from.y ? std::max(lo, from.x) : lo, lastX);
+    if (x <= lastX) {
+      from = {x, y};
+      return {x, y, true};
     }
   }
+  from = {lo, y};
   return {};
 }
 
 std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& turns,
                                     const std::vector<std::vector<ChartMask>>& grown,
-                                    const std::vector<std::size_t>& order, int padding, int width,
-                                    int maxHeight) {
+                                    const std::vector<std::vector<MaskRuns>>& runs,
+                                    std::size_t shapes, const std::vector<std::size_t>& order,
+                                    int padding, int width, int maxHeight) {
   const int lo = padding / 2, hi = padding - padding / 2;
   TakenTexels taken(width, maxHeight);
+  std::vector<glm::ivec2> resume(shapes, glm::ivec2(lo));  // per shape, lowestFit's `from`
   MaskPacking packing;
   packing.width = width;
   packing.origin.assign(turns.size(), glm::ivec2(0));
@@ -151,7 +129,9 @@ std::optional<MaskPacking> packInto(const std::vector<std::vector<ChartMask>>& t
       const ChartMask& mask = turns[c][k];
       // A lower top than the best so far needs y < bestTop - height.
       const int maxTop = best.found ? std::min(maxHeight, bestTop - 1 + hi) : maxHeight;
-      const Spot s = lowestFit(taken, mask, width, lo, hi, maxTop);
+      const MaskRuns& m = runs[c][k];
+      const Spot s = lowestFit(taken, mask, m, width, lo, hi, maxTop,
+                               resume[static_cast<std::size_t>(m.shape)]);
       if (s.found && (!best.found || s.y + mask.height < bestTop)) {
         best = s;
         bestTurn = static_cast<int>(k);
@@ -173,12 +153,18 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
                                      int maxSize) {
   if (turns.empty()) return MaskPacking{1, 1, {}, {}};
   std::vector<std::vector<ChartMask>> grown(turns.size());
+  std::vector<std::vector<MaskRuns>> runs(turns.size());
+  std::map<std::tuple<int, int, std::vector<uint64_t>>, int> shapes;
   double area = 0.0;
   int narrowest = 1;  // the widest chart's narrowest width, with the padding
   for (std::size_t c = 0; c < turns.size(); ++c) {
     int w = turns[c][0].width;
     for (const ChartMask& mask : turns[c]) {
       grown[c].push_back(dilateMask(mask, padding));
+      runs[c].push_back(runsOf(mask));
+      const auto [it, added] = shapes.try_emplace(std::tuple(mask.width, mask.height, mask.bits),
+                                                  static_cast<int>(shapes.size()));
+      runs[c].back().shape = it->second;
       w = std::min(w, mask.width);
     }
     const ChartMask& m = turns[c][0];
@@ -198,21 +184,23 @@ std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& 
            std::min(turns[b][0].width, turns[b][0].height);
   });
   const double side = std::sqrt(area);
-  std::optional<MaskPacking> best;
+  std::vector<int> widths;
   for (int step = 0; step <= kWidthSteps; ++step) {
-    const int width = std::min(
-        maxSize, std::max(narrowest,
-                          static_cast<int>(std::ceil(
-                              side * (kNarrowest + (kWidest - kNarrowest) * step / kWidthSteps)))));
-    std::optional<MaskPacking> packing = packInto(turns, grown, order, padding, width, maxSize);
-    if (packing) {
-      const auto cost = [](const MaskPacking& p) {
-        return static_cast<double>(p.width) * p.height;
-      };
-      if (!best || cost(*packing) < cost(*best)) best = std::move(packing);
-    }
-    if (width == maxSize) break;
+    widths.push_back(
+        std::min(maxSize, std::max(narrowest, static_cast<int>(std::ceil(
+                                                  side * (kNarrowest + (kWidest - kNarrowest) *
+                                                                           step / kWidthSteps))))));
+    if (widths.back() == maxSize) break;
   }
+  // Each width packs on its own; the first of the smallest atlases wins, whatever the threads.
+  std::vector<std::optional<MaskPacking>> packings(widths.size());
+  tbb::parallel_for(std::size_t{0}, widths.size(), [&](std::size_t i) {
+    packings[i] = packInto(turns, grown, runs, shapes.size(), order, padding, widths[i], maxSize);
+  });
+  std::optional<MaskPacking> best;
+  const auto cost = [](const MaskPacking& p) { return static_cast<double>(p.width) * p.height; };
+  for (std::optional<MaskPacking>& packing : packings)
+    if (packing && (!best || cost(*packing) < cost(*best))) best = std::move(packing);
   return best;
 }
 

@@ -24,8 +24,8 @@ struct MaskPacking {
 // chart's texels stay padding/2 texels from the atlas's lower and left edges and padding -
 // padding/2 from its upper and right ones, as the rectangle packer keeps them. Largest first, each
 // at the lowest then leftmost free position of the orientation whose top is lowest, for a few atlas
-// widths; the smallest width × height wins. Nothing when the charts do not fit in maxSize ×
-// maxSize.
+// widths (packed in parallel, the same atlas whatever the threads); the smallest width × height
+// wins. Nothing when the charts do not fit in maxSize × maxSize.
 std::optional<MaskPacking> packMasks(const std::vector<std::vector<ChartMask>>& turns, int padding,
                                      int maxSize);
 

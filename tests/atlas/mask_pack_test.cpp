@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "atlas/chart_mask.h"
 #include "atlas/mask_pack.h"
 
@@ -109,6 +111,63 @@ TEST(MaskPack, ManyDiagonalStripsKeepThePaddingAndBeatRectangles) {
       if (u.chart == t.chart) continue;
       ASSERT_GT(std::max(std::abs(t.x - u.x), std::abs(t.y - u.y)), padding);
     }
+}
+
+// Texels of different charts more than `padding` apart (Chebyshev) and inside the edge margins,
+// checked on a grid of owners: each texel looks at its (2·padding + 1)² square.
+void expectPaddingKept(const std::vector<std::vector<ChartMask>>& turns, const MaskPacking& packing,
+                       int padding) {
+  const int lo = padding / 2, hi = padding - padding / 2;
+  std::vector<int> owner(static_cast<std::size_t>(packing.width) * packing.height, -1);
+  const std::vector<PlacedTexel> texels = placedTexels(turns, packing);
+  for (const PlacedTexel& t : texels) {
+    ASSERT_TRUE(t.x >= lo && t.y >= lo && t.x < packing.width - hi && t.y < packing.height - hi)
+        << "texel (" << t.x << ", " << t.y << ") of chart " << t.chart << " outside the margins";
+    owner[static_cast<std::size_t>(t.y) * packing.width + t.x] = t.chart;
+  }
+  for (const PlacedTexel& t : texels)
+    for (int y = std::max(0, t.y - padding); y <= std::min(packing.height - 1, t.y + padding); ++y)
+      for (int x = std::max(0, t.x - padding); x <= std::min(packing.width - 1, t.x + padding);
+           ++x) {
+        const int other = owner[static_cast<std::size_t>(y) * packing.width + x];
+        ASSERT_TRUE(other < 0 || other == t.chart)
+            << "texel (" << t.x << ", " << t.y << ") of chart " << t.chart << " is within "
+            << padding << " texels of texel (" << x << ", " << y << ") of chart " << other;
+      }
+}
+
+// Hundreds of charts, many of the same shape (the packer resumes an equal mask's search where
+// the last one stopped) and many small ones for the holes, packed on one thread and on several.
+TEST(MaskPack, ManyChartsKeepThePaddingAndTheSameAtlasWhateverTheThreads) {
+  std::vector<std::vector<ChartMask>> turns;
+  uint32_t seed = 12345u;
+  const auto next = [&](int n) {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(n));
+  };
+  for (int i = 0; i < 300; ++i) {
+    const float side = static_cast<float>(1 + next(i % 3 == 0 ? 24 : 6));
+    const float arm = std::min(side, static_cast<float>(1 + next(3)));
+    const glm::ivec2 cells(static_cast<int>(side), static_cast<int>(side));
+    if (next(2) == 0) {
+      turns.push_back(turnsOf(lShape(side, arm), cells));
+    } else {  // a strip `arm` texels wide from corner to corner of its square
+      const std::vector<glm::vec2> strip = {{0.0f, 0.0f}, {arm, 0.0f},        {side, side - arm},
+                                            {0.0f, 0.0f}, {side, side - arm}, {side - arm, side}};
+      turns.push_back(turnsOf(strip, cells));
+    }
+  }
+  for (const int padding : {1, 2, 3}) {
+    std::optional<MaskPacking> alone, shared;
+    tbb::task_arena(1).execute([&] { alone = packMasks(turns, padding, 4096); });
+    tbb::task_arena(2).execute([&] { shared = packMasks(turns, padding, 4096); });
+    ASSERT_TRUE(alone && shared);
+    EXPECT_EQ(alone->width, shared->width);
+    EXPECT_EQ(alone->height, shared->height);
+    EXPECT_EQ(alone->origin, shared->origin);
+    EXPECT_EQ(alone->turn, shared->turn);
+    expectPaddingKept(turns, *alone, padding);
+  }
 }
 
 }  // namespace
