@@ -60,11 +60,10 @@ ChartVertices verticesOf(const WorldMesh& mesh, const std::vector<uint32_t>& tri
 
 }  // namespace
 
-std::optional<JoinedCharts> joinAlongLongestRun(const WorldMesh& mesh,
-                                                const std::vector<uint32_t>& a,
-                                                const std::vector<glm::vec2>& aUv,
-                                                const std::vector<uint32_t>& b,
-                                                const std::vector<glm::vec2>& bUv) {
+std::vector<JoinedCharts> joinAlongRuns(const WorldMesh& mesh, const std::vector<uint32_t>& a,
+                                        const std::vector<glm::vec2>& aUv,
+                                        const std::vector<uint32_t>& b,
+                                        const std::vector<glm::vec2>& bUv, std::size_t most) {
   const ChartVertices va = verticesOf(mesh, a, aUv), vb = verticesOf(mesh, b, bUv);
   // Shared boundary edges as pairs of a's vertices, with b's vertex at each end.
   std::map<int, int> bAt;  // a's vertex → b's vertex at its position (on a shared edge)
@@ -79,7 +78,7 @@ std::optional<JoinedCharts> joinAlongLongestRun(const WorldMesh& mesh,
     next[u].push_back(v);
     next[v].push_back(u);
   }
-  if (next.empty()) return std::nullopt;
+  if (next.empty()) return {};
   // A vertex inside a run has two shared edges turning less than kMaxRunTurn; any other vertex
   // ends the runs through it.
   const auto inside = [&](int v) {
@@ -90,10 +89,9 @@ std::optional<JoinedCharts> joinAlongLongestRun(const WorldMesh& mesh,
     const double cosTurn = glm::dot(in, out) / (glm::length(in) * glm::length(out));
     return cosTurn > std::cos(kMaxRunTurn);
   };
-  // Walk every run once (edges marked by their lower vertex first), keep the longest.
+  // Walk every run once (edges marked by their lower vertex first).
   std::map<std::pair<int, int>, bool> walked;
-  std::vector<int> best;
-  double bestLength = -1.0;
+  std::vector<std::pair<double, std::vector<int>>> runs;  // (length, vertices)
   const auto walk = [&](int from, int to) {
     std::vector<int> run{from};
     double length = 0.0;
@@ -106,32 +104,38 @@ std::optional<JoinedCharts> joinAlongLongestRun(const WorldMesh& mesh,
       const int after = n[0] == from ? n[1] : n[0];
       from = to, to = after;
     }
-    if (length > bestLength) bestLength = length, best = std::move(run);
+    if (length > 0.0) runs.emplace_back(length, std::move(run));
   };
   for (const auto& [v, n] : next)
     if (!inside(v))
       for (const int w : n) walk(v, w);
   for (const auto& [v, n] : next)  // closed loops with no end: start anywhere
     for (const int w : n) walk(v, w);
-  // A loop walked whole ends on its first vertex: open it by its last edge (joined on every
-  // vertex, a loop's edges would all be joined).
-  if (best.size() > 2 && best.front() == best.back()) best.resize(best.size() - 2);
-
-  JoinedCharts joined;
+  // Longest first (ties in walking order, so deterministic).
+  std::stable_sort(runs.begin(), runs.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
   std::size_t sharedEdges = 0;
   for (const auto& [v, n] : next) sharedEdges += n.size();
-  joined.everyEdge = best.size() == sharedEdges / 2 + 1;
-  joined.triangles = a;
-  joined.triangles.insert(joined.triangles.end(), b.begin(), b.end());
-  const int aCount = static_cast<int>(va.position.size());
-  std::vector<int> bVertex(vb.position.size(), -1);  // b's vertex → union vertex
-  for (const int v : best) bVertex[bAt.at(v)] = v;
-  int count = aCount;
-  for (int& id : bVertex)
-    if (id < 0) id = count++;
-  joined.cornerVertex = va.cornerVertex;
-  for (const int v : vb.cornerVertex) joined.cornerVertex.push_back(bVertex[v]);
-  return joined;
+  std::vector<JoinedCharts> joins;
+  for (std::size_t r = 0; r < runs.size() && r < most; ++r) {
+    std::vector<int>& run = runs[r].second;
+    // A loop walked whole ends on its first vertex: open it by its last edge (joined on every
+    // vertex, a loop's edges would all be joined).
+    if (run.size() > 2 && run.front() == run.back()) run.resize(run.size() - 2);
+    JoinedCharts joined;
+    joined.everyEdge = run.size() == sharedEdges / 2 + 1;
+    joined.triangles = a;
+    joined.triangles.insert(joined.triangles.end(), b.begin(), b.end());
+    std::vector<int> bVertex(vb.position.size(), -1);  // b's vertex → union vertex
+    for (const int v : run) bVertex[bAt.at(v)] = v;
+    int count = static_cast<int>(va.position.size());
+    for (int& id : bVertex)
+      if (id < 0) id = count++;
+    joined.cornerVertex = va.cornerVertex;
+    for (const int v : vb.cornerVertex) joined.cornerVertex.push_back(bVertex[v]);
+    joins.push_back(std::move(joined));
+  }
+  return joins;
 }
 
 }  // namespace bounce

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "atlas/chart.h"
@@ -21,13 +20,13 @@ struct JoinedCharts {
   bool everyEdge = false;           // the run holds every shared edge: welded by position alike
 };
 
-// `aUv`, `bUv`: each chart's own flattening (3 corners per triangle): corners at one position and
-// one UV are one vertex of that chart, so seams earlier joins left open stay open. Nothing when
-// the charts share no boundary edge.
-std::optional<JoinedCharts> joinAlongLongestRun(const WorldMesh& mesh,
-                                                const std::vector<uint32_t>& a,
-                                                const std::vector<glm::vec2>& aUv,
-                                                const std::vector<uint32_t>& b,
-                                                const std::vector<glm::vec2>& bUv);
+// The union joined along each of the `most` longest runs, longest first (nothing when the charts
+// share no boundary edge). `aUv`, `bUv`: each chart's own flattening (3 corners per triangle):
+// corners at one position and one UV are one vertex of that chart, so seams earlier joins left
+// open stay open.
+std::vector<JoinedCharts> joinAlongRuns(const WorldMesh& mesh, const std::vector<uint32_t>& a,
+                                        const std::vector<glm::vec2>& aUv,
+                                        const std::vector<uint32_t>& b,
+                                        const std::vector<glm::vec2>& bUv, std::size_t most);
 
 }  // namespace bounce

@@ -22,6 +22,8 @@ bool areaScalesBounded(const WorldMesh& mesh, const std::vector<uint32_t>& trian
   return true;
 }
 
+// Runs of a shared boundary tried, longest first, where the welded union fails (chart_join.h).
+constexpr std::size_t kRunsTried = 3;
 // A chart under this many times MergeLimits::smallArea is medium.
 constexpr double kMediumFactor = 16.0;
 
@@ -39,20 +41,21 @@ FlatGroup flattenUnion(const WorldMesh& mesh, const FlatGroup& d, const FlatGrou
                        double areaBound) {
   FlatGroup both{d.triangles, {}};
   both.triangles.insert(both.triangles.end(), c.triangles.begin(), c.triangles.end());
-  const std::optional<JoinedCharts> joined =
-      joinAlongLongestRun(mesh, d.triangles, d.flat.cornerUv, c.triangles, c.flat.cornerUv);
-  if (!joined || !joined->everyEdge) {
+  const std::vector<JoinedCharts> joins =
+      joinAlongRuns(mesh, d.triangles, d.flat.cornerUv, c.triangles, c.flat.cornerUv, kRunsTried);
+  if (joins.empty() || !joins.front().everyEdge) {
     both.flat = flattenConformal(mesh, both.triangles, 1.0f);
     if (!both.flat.cornerUv.empty() &&
         areaScalesBounded(mesh, both.triangles, both.flat.cornerUv, areaBound))
       return both;
-    both.flat.cornerUv.clear();
   }
-  if (!joined) return both;
-  both.flat = flattenConformal(mesh, joined->triangles, joined->cornerVertex, 1.0f);
-  if (!both.flat.cornerUv.empty() &&
-      !areaScalesBounded(mesh, both.triangles, both.flat.cornerUv, areaBound))
-    both.flat.cornerUv.clear();
+  for (const JoinedCharts& joined : joins) {
+    both.flat = flattenConformal(mesh, joined.triangles, joined.cornerVertex, 1.0f);
+    if (!both.flat.cornerUv.empty() &&
+        areaScalesBounded(mesh, both.triangles, both.flat.cornerUv, areaBound))
+      return both;
+  }
+  both.flat.cornerUv.clear();
   return both;
 }
 
