@@ -52,7 +52,7 @@ std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, flo
   for (const std::vector<uint32_t>& group : groups.charts)
     flat.push_back({group, flattenChart(world, group, 1.0f)});
   const double smallArea = kSmallChartTexels * static_cast<double>(texelSize) * texelSize;
-  flat = mergeSmallCharts(world, std::move(flat), groups.contacts, smallArea);
+  flat = mergeSmallCharts(world, std::move(flat), groups.contacts, {smallArea, texelSize});
   std::vector<Chart> charts;
   for (FlatGroup& group : flat) {
     if (!group.flat.cornerUv.empty()) {

@@ -53,16 +53,23 @@ FlatChart flattenConformal(const WorldMesh& mesh, const std::vector<uint32_t>& t
                            float texelSize) {
   // Chart vertices: corners welded by position (the segmentation's connectivity).
   std::map<std::array<float, 3>, int> index;
-  std::vector<glm::dvec3> vertex;
   std::vector<int> cornerVertex;
   for (const uint32_t tri : triangles)
     for (int k = 0; k < 3; ++k) {
       const glm::vec3 p = mesh.corner(tri, k);
-      const auto [it, added] = index.try_emplace({p.x, p.y, p.z}, static_cast<int>(vertex.size()));
-      if (added) vertex.emplace_back(p);
+      const auto [it, added] = index.try_emplace({p.x, p.y, p.z}, static_cast<int>(index.size()));
       cornerVertex.push_back(it->second);
     }
-  const int n = static_cast<int>(vertex.size());
+  return flattenConformal(mesh, triangles, cornerVertex, texelSize);
+}
+
+FlatChart flattenConformal(const WorldMesh& mesh, const std::vector<uint32_t>& triangles,
+                           const std::vector<int>& cornerVertex, float texelSize) {
+  int n = 0;
+  for (const int v : cornerVertex) n = std::max(n, v + 1);
+  std::vector<glm::dvec3> vertex(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < cornerVertex.size(); ++k)
+    vertex[cornerVertex[k]] = glm::dvec3(mesh.corner(triangles[k / 3], static_cast<int>(k % 3)));
   FlatChart flat;
   flat.source = ChartSource::Conformal;
   if (n < 3) return flat;

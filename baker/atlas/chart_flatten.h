@@ -26,6 +26,11 @@ FlatChart flattenPlanar(const WorldMesh& mesh, const std::vector<uint32_t>& tria
                         float texelSize);
 FlatChart flattenConformal(const WorldMesh& mesh, const std::vector<uint32_t>& triangles,
                            float texelSize);
+// The same with the chart's connectivity given: cornerVertex[3k + j] is the chart vertex (ids in
+// [0, n), every id used) of corner j of triangles[k]; corners at one position with different ids
+// are a seam, laid out apart. Ids must join only corners at one position.
+FlatChart flattenConformal(const WorldMesh& mesh, const std::vector<uint32_t>& triangles,
+                           const std::vector<int>& cornerVertex, float texelSize);
 // Planar when near-planar, else conformal, else planar again if the conformal map failed;
 // empty when every attempt has a flipped or overlapping triangle.
 FlatChart flattenChart(const WorldMesh& mesh, const std::vector<uint32_t>& triangles,

@@ -231,17 +231,20 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     std::sort(chart.begin(), chart.end());
     groups.charts.push_back(std::move(chart));
   }
-  std::map<std::pair<int, int>, double> contact;
+  std::map<std::pair<int, int>, std::pair<double, double>> contact;  // → (length, fold)
   for (std::size_t f = 0; f < faceChart.size(); ++f)
     for (auto h : halfEdges.fh_range(halfEdges.face_handle(static_cast<int>(f)))) {
       const auto g = halfEdges.opposite_face_handle(h);
       if (!g.is_valid() || isCut(h)) continue;  // charts never merge across a cut
       const int a = finalIndex[faceChart[f]], b = finalIndex[faceChart[g.idx()]];
-      if (a < b) contact[{a, b}] += static_cast<double>(halfEdges.calc_edge_length(h));
+      if (a >= b) continue;
+      auto& [length, fold] = contact[{a, b}];
+      length += static_cast<double>(halfEdges.calc_edge_length(h));
+      fold = std::max(fold, angleBetween(normal[f], normal[g.idx()]));
     }
-  for (const auto& [pair, length] : contact)
-    groups.contacts.push_back(
-        {static_cast<uint32_t>(pair.first), static_cast<uint32_t>(pair.second), length});
+  for (const auto& [pair, shared] : contact)
+    groups.contacts.push_back({static_cast<uint32_t>(pair.first),
+                               static_cast<uint32_t>(pair.second), shared.first, shared.second});
   return groups;
 }
 

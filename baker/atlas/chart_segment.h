@@ -27,6 +27,7 @@ struct SegmentSettings {
 struct ChartContact {
   uint32_t a = 0, b = 0;  // indices into TriangleGroups::charts, a < b
   double length = 0.0;    // metres of shared edges
+  double fold = 0.0;      // radians: the largest angle between the normals across those edges
 };
 
 struct TriangleGroups {
