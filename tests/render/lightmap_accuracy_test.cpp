@@ -179,7 +179,9 @@ TEST(LightmapAccuracy, NoSeamJumpsLargerThanInsideAChart) {
       "sphere: %zu charts in view, texel %.4f m; largest neighbour jump in luminance: %.5f across "
       "a seam (%zu pairs), %.5f inside a chart, away from its border (%zu pairs), W/(sr·m²)\n",
       sphereCharts.size(), baked.layout.texelSize, seamJump, seamPairs, insideJump, insidePairs);
-  EXPECT_GE(sphereCharts.size(), 3u);
+  // The sphere must show seams (two charts at least: it was about ten before charts merged
+  // along one run of their shared edges, docs/lightmap_atlas.md step 5).
+  EXPECT_GE(sphereCharts.size(), 2u);
   EXPECT_GT(seamPairs, 50u);
   EXPECT_GT(insideJump, 0.0f);
   EXPECT_LE(seamJump, insideJump);
