@@ -91,6 +91,9 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   const auto start = std::chrono::steady_clock::now();
   StageProgress* progress = settings.progress;
 
+  const uint32_t zerosToStop =
+      settings.targetError > 0.0f ? zeroSamplesToStop(settings.targetError, maxSpp) : maxSpp;
+  const auto escapesToStop = static_cast<uint32_t>(std::max(maxSpp / 4, 1));
   auto bakeTexel = [&](std::size_t texel) {
     const uint32_t begin = coverage.first[texel];
     const uint32_t points = coverage.first[texel + 1] - begin;
@@ -100,6 +103,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
     glm::dvec3 sum(0.0);
     double mean = 0.0, m2 = 0.0;  // Welford on luminance
     uint32_t n = 0;
+    uint32_t reachedSurface = 0;  // samples whose first ray met a surface
     while (n < static_cast<uint32_t>(maxSpp)) {
       const uint32_t batchEnd = std::min<uint32_t>(n + kIrradianceBatch, maxSpp);
       for (; n < batchEnd; ++n) {
@@ -116,9 +120,10 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
           nonFinite[texel] += bad ? 1 : 0;
         }
         sampler.setDimension(kDimIndirect);
-        bool bad = false;
-        e += indirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
+        bool bad = false, reached = false;
+        e += indirect.irradiance(point.position, point.shadingNormal, sampler, &bad, &reached);
         nonFinite[texel] += bad ? 1 : 0;
+        reachedSurface += reached ? 1 : 0;
         sum += glm::dvec3(e);
         const double y = luminance(e);
         const double delta = y - mean;
@@ -129,12 +134,15 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       const double standardError = std::sqrt(variance / static_cast<double>(n));
       const float relative = mean > 0.0 ? static_cast<float>(standardError / mean) : 0.0f;
       out.relativeError[texel] = relative;
-      // With mean 0 the relative error is undefined (stored as 0): no reason to stop early.
+      // With mean 0 the relative error is undefined (stored as 0).
       if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && mean > 0.0 &&
           relative < settings.targetError)
         break;
-      // A texel whose samples so far are all 0 goes on to maxSpp: its light may come through
-      // rare directions (a small lit surface), and stopping would leave it biased to black.
+      // Samples all 0 so far, with enough of them on surfaces that stayed dark: not even the cap
+      // could bring the texel to the target (zeroSamplesToStop).
+      if (settings.targetError > 0.0f && mean == 0.0 && n >= kMinAdaptiveSpp &&
+          (reachedSurface >= zerosToStop || (reachedSurface == 0 && n >= escapesToStop)))
+        break;
     }
     out.samples[texel] = n;
     out.irradiance.pixels[texel] = glm::vec3(sum / static_cast<double>(n));
@@ -163,6 +171,12 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   out.summarise();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+uint32_t zeroSamplesToStop(float targetError, int maxSpp) {
+  const double n = std::ceil(3.0 * static_cast<double>(targetError) * targetError * maxSpp);
+  return static_cast<uint32_t>(std::clamp(n, static_cast<double>(kMinAdaptiveSpp),
+                                          static_cast<double>(std::max(maxSpp, 1))));
 }
 
 void TexelIrradiance::summarise() {

@@ -11,9 +11,10 @@
 // The texel value is the mean over its samples, so it estimates the mean of E over the texel's
 // covered area. Samples are taken in batches of 16 until, from 128 samples on, the relative
 // standard error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is
-// reached; a texel whose samples are all zero goes on to maxSpp. Every texel is computed by one
-// task from its own pattern: the result does not depend on the thread count, nor on the tiles the
-// work is cut into (tile_work.h).
+// reached; a texel whose samples are all zero stops once zeroSamplesToStop() of them met a
+// surface (that stayed dark). Every texel
+// is computed by one task from its own pattern: the result does not depend on the thread count, nor
+// on the tiles the work is cut into (tile_work.h).
 #pragma once
 
 #include <cstdint>
@@ -56,6 +57,19 @@ inline constexpr int kIrradianceBatch = 16;
 // together. From 32 samples the default bake's furnace came out −1.7% (every pixel), from 64
 // −0.4%, from 128 +0.2% (docs/baker.md, issue 15).
 inline constexpr uint32_t kMinAdaptiveSpp = 128;
+
+// When adaptive, a texel whose samples are all 0 stops (black) once h of them met a surface: a
+// sample whose first ray leaves the scene is an exact 0 (no light at infinity), so the doubt is
+// only whether the surfaces it meets are ever lit. h zero samples on surfaces put that chance p
+// under 3/h (95%, the rule of three), and a texel with that p needs about h/(3·target²) more
+// samples on surfaces to reach the target: beyond maxSpp once h ≥ 3·target²·maxSpp, so more
+// samples could not bring it to the target anyway. At least kMinAdaptiveSpp, at most maxSpp;
+// the default (10%, 4096) gives 128. A texel none of whose samples met a surface (a quad facing
+// empty space) stops at maxSpp/4: what it could see covers under 3/(maxSpp/4) of its cosine-
+// weighted hemisphere. A floor whose only light is a small lit board above it is not stopped
+// (each sample meeting the board is lit); the surfaces no light reaches are (Šibenik's outside
+// at night: 35% of its texels, which took 90% of its samples before; docs/baker.md).
+uint32_t zeroSamplesToStop(float targetError, int maxSpp);
 
 struct TexelIrradiance {
   Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered

@@ -172,7 +172,9 @@ glm::vec3 PathTracer::virtualLight(const SurfacePoint& point, const Vpl& vpl) co
 }
 
 glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int depth,
-                                uint32_t baseDim, SobolSampler& sampler) const {
+                                uint32_t baseDim, SobolSampler& sampler,
+                                bool* reachedSurface) const {
+  if (reachedSurface != nullptr) *reachedSurface = false;
   glm::vec3 radiance(0.0f);
   glm::vec3 beta = throughput;
   // Invariant: `point` is reached after `depth` reflections and its emission is counted.
@@ -210,6 +212,7 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     if (!hit.valid()) break;
     SurfacePoint next;
     if (!makeSurfacePoint(scene_, geometry_, ray, hit, next)) break;
+    if (reachedSurface != nullptr) *reachedSurface = true;
 
     // Emission found by the BRDF-sampled ray: depth + 1 reflections.
     if (maxComponent(next.emitted) > 0.0f && depth + 1 >= minReflections_ &&
@@ -254,7 +257,7 @@ glm::vec3 PathTracer::Li(const Ray& ray, SobolSampler& sampler, bool* nonFinite)
 }
 
 glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
-                                 bool* nonFinite) const {
+                                 bool* nonFinite, bool* reachedSurface) const {
   if (nonFinite != nullptr) *nonFinite = false;
   // A white (ρ = 1) Lambertian surface reflects Lo = E/π in every direction.
   SurfacePoint point;
@@ -262,7 +265,8 @@ glm::vec3 PathTracer::irradiance(glm::vec3 position, glm::vec3 normal, SobolSamp
   point.geometricNormal = normal;
   point.shadingNormal = normal;
   point.albedo = glm::vec3(1.0f);
-  const glm::vec3 lo = clamped(reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler));
+  const glm::vec3 lo =
+      clamped(reflected(point, glm::vec3(1.0f), 0, sampler.dimension(), sampler, reachedSurface));
   const glm::vec3 e = kPi * lo;
   if (isFinite(e)) return e;
   if (nonFinite != nullptr) *nonFinite = true;

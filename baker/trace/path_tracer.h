@@ -45,9 +45,11 @@ class PathTracer {
   // normal `normal` (facing the hemisphere integrated over): E = π × the radiance a white
   // Lambertian surface there would reflect, estimated with the same NEE + MIS. Always finite,
   // as Li: a non-finite estimate is returned as black and, when `nonFinite` is given,
-  // *nonFinite says so, so the baker can count such samples.
+  // *nonFinite says so, so the baker can count such samples. `reachedSurface`, when given, says
+  // whether the sample's first ray from the point met a surface (else the sample is an exact 0
+  // wherever the scene has no light at infinity).
   glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
-                       bool* nonFinite = nullptr) const;
+                       bool* nonFinite = nullptr, bool* reachedSurface = nullptr) const;
 
   bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty() || !vpls_.empty(); }
   const EmitterTable& emitters() const { return emitters_; }
@@ -57,8 +59,9 @@ class PathTracer {
  private:
   // Radiance reflected at `point` towards its ray's origin, from the first reflection on;
   // `throughput` is the path weight so far, `depth` the reflections before this vertex.
+  // `reachedSurface`, when given, is set to whether the first reflected ray met a surface.
   glm::vec3 reflected(SurfacePoint point, glm::vec3 throughput, int depth, uint32_t baseDim,
-                      SobolSampler& sampler) const;
+                      SobolSampler& sampler, bool* reachedSurface = nullptr) const;
   // Next-event estimate of light after one reflection at `point` from one light picked
   // (LightSampler::pickAt), divided by its pick pmf (area emitters with MIS weight), not yet
   // multiplied by the path throughput.

@@ -162,6 +162,49 @@ TEST(AdaptiveSampling, RarelyReachedTexelsAreNotLeftBlack) {
   }
 }
 
+// Texels no light reaches stop early (texel_irradiance.h zeroSamplesToStop): the inside of a
+// closed unlit box (every sample meets its dark walls) after 128 samples, a quad facing empty
+// space (every sample leaves the scene) after a quarter of the cap; the lamp room's texels do
+// not stop on zeros. The floor under the lit board above keeps its rare light with the same rule.
+TEST(AdaptiveSampling, TexelsNoLightReachesStopEarly) {
+  test::World world;
+  buildCornerLampRoom(world);
+  const uint32_t dark = test::addMaterial(world.scene, glm::vec3(0.6f));
+  test::addInwardBox(world.scene, {3, 0, 0}, {3.5f, 0.5f, 0.5f}, dark);  // closed, no light
+  test::addQuad(world.scene, {-3, 2, 0}, {-3, 2, 0.5f}, {-2.5f, 2, 0.5f}, {-2.5f, 2, 0},
+                dark);  // faces +y, away from everything
+  world.build();
+  const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
+  LightmapBakeSettings settings = test::testBakeSettings(4096);
+  settings.irradiance.targetError = 0.1f;
+  settings.stitch = false;
+  ASSERT_EQ(zeroSamplesToStop(0.1f, 4096), kMinAdaptiveSpp);
+  const LightmapBake bake =
+      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  int boxTexels = 0, quadTexels = 0, roomTexels = 0;
+  for (int y = 0; y < atlas.layout.height; ++y) {
+    for (int x = 0; x < atlas.layout.width; ++x) {
+      const std::size_t t = static_cast<std::size_t>(y) * atlas.layout.width + x;
+      glm::vec3 p;
+      uint32_t instance = 0;
+      if (!bake.covered[t] || bake.invalid[t] || !atlas.texelCentre(x, y, p, instance)) continue;
+      if (p.x > 2.9f) {
+        ++boxTexels;
+        EXPECT_EQ(bake.samples[t], kMinAdaptiveSpp) << "box texel " << x << ", " << y;
+        EXPECT_EQ(luminance(bake.irradiance.pixels[t]), 0.0f);
+      } else if (p.x < -2.0f) {
+        ++quadTexels;
+        EXPECT_EQ(bake.samples[t], 1024u) << "quad texel " << x << ", " << y;
+      } else if (luminance(bake.irradiance.pixels[t]) > 0.0f) {
+        ++roomTexels;
+      }
+    }
+  }
+  EXPECT_GT(boxTexels, 50);
+  EXPECT_EQ(quadTexels, 16);
+  EXPECT_GT(roomTexels, 300);
+}
+
 TEST(Determinism, SameSeedGivesBitIdenticalLightmapsAtOneAndTwoThreads) {
   test::World world;
   buildCornerLampRoom(world);
