@@ -93,7 +93,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
 
   const uint32_t zerosToStop =
       settings.targetError > 0.0f ? zeroSamplesToStop(settings.targetError, maxSpp) : maxSpp;
-  const auto escapesToStop = static_cast<uint32_t>(std::max(maxSpp / 4, 1));
+  const auto zerosToGiveUp = static_cast<uint32_t>(std::max(maxSpp / 4, 1));
   auto bakeTexel = [&](std::size_t texel) {
     const uint32_t begin = coverage.first[texel];
     const uint32_t points = coverage.first[texel + 1] - begin;
@@ -141,7 +141,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       // Samples all 0 so far, with enough of them on surfaces that stayed dark: not even the cap
       // could bring the texel to the target (zeroSamplesToStop).
       if (settings.targetError > 0.0f && mean == 0.0 && n >= kMinAdaptiveSpp &&
-          (reachedSurface >= zerosToStop || (reachedSurface == 0 && n >= escapesToStop)))
+          (reachedSurface >= zerosToStop || n >= zerosToGiveUp))
         break;
     }
     out.samples[texel] = n;

@@ -64,11 +64,13 @@ inline constexpr uint32_t kMinAdaptiveSpp = 128;
 // under 3/h (95%, the rule of three), and a texel with that p needs about h/(3·target²) more
 // samples on surfaces to reach the target: beyond maxSpp once h ≥ 3·target²·maxSpp, so more
 // samples could not bring it to the target anyway. At least kMinAdaptiveSpp, at most maxSpp;
-// the default (10%, 4096) gives 128. A texel none of whose samples met a surface (a quad facing
-// empty space) stops at maxSpp/4: what it could see covers under 3/(maxSpp/4) of its cosine-
-// weighted hemisphere. A floor whose only light is a small lit board above it is not stopped
-// (each sample meeting the board is lit); the surfaces no light reaches are (Šibenik's outside
-// at night: 35% of its texels, which took 90% of its samples before; docs/baker.md).
+// the default (10%, 4096) gives 128. Whatever its samples met, an all-zero texel stops at
+// maxSpp/4 samples (a quad facing empty space meets nothing): a light path of probability
+// 3/(maxSpp/4) would have shown at 95%, and such a texel too could not reach the target within
+// the cap. A floor whose only light is a small lit board above it (1.1% of its samples meet the
+// board) is not stopped: a sample meeting the board is lit, and 1024 samples all miss it with
+// probability 1e-5; the surfaces no light reaches are (Šibenik's outside at night: 35% of its
+// texels, which took 90% of its samples before; docs/baker.md).
 uint32_t zeroSamplesToStop(float targetError, int maxSpp);
 
 struct TexelIrradiance {
