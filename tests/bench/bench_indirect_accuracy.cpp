@@ -25,14 +25,14 @@ using namespace bounce;
 int main(int argc, char** argv) {
   std::string scenePath = std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box/cornell_box.gltf";
   SceneBakeSettings bake = test::lightmapOnlySettings();
-  bake.texelBudget = 16384;
   std::string denoise = "on";
   int size = 128, height = 0, refSpp = 4096, box = 1;
   std::string refFile, outDir, cameraName, frame = "indirect";
   bool header = false;
   CLI::App app{"Renderer's indirect frame (with a fresh bake) against the path tracer."};
   app.add_option("scene", scenePath, "scene (default: the Cornell box)");
-  app.add_option("--texel-budget", bake.texelBudget, "atlas texel budget (bounce-bake default)");
+  app.add_option("--texel-budget", bake.texelBudget,
+                 "atlas texel budget (default 0: bounce-bake's texel rule)");
   app.add_option("--texel-size", bake.texelSize, "texel edge in metres (overrides the budget)");
   app.add_option("--spp", bake.spp, "most samples per texel");
   app.add_option("--target-error", bake.targetError, "per-texel relative error target");
