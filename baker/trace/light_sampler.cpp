@@ -90,7 +90,6 @@ void LightSampler::addNearby(const Scene& scene, const EmitterTable& emitters) {
     n.position = cluster.centre;
     n.direction = glm::vec3(0.0f);
     n.radius = cluster.radius;
-    n.radius2 = cluster.radius * cluster.radius;
     n.power = static_cast<float>(cluster.power);
     n.intensity = static_cast<float>(cluster.power / kPi);
     if (n.power > 0.0f && std::isfinite(n.power) && isFinite(n.position)) nearby_.push_back(n);
@@ -139,7 +138,7 @@ void LightSampler::nearbyWeights(glm::vec3 position, glm::vec3 normal, float* w,
         reaches = reaches && dist2 > 0.0f &&
                   glm::dot(n.direction, -toLight) > n.cosOuter * std::sqrt(dist2);
       }
-      if (reaches) weight = n.intensity / std::max({dist2, n.radius2, kMinDistance2});
+      if (reaches) weight = n.intensity / std::max({dist2, n.radius * n.radius, kMinDistance2});
     }
     if (!(weight > 0.0f) || !std::isfinite(weight)) weight = 0.0f;
     w[i] = weight;

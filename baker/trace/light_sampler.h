@@ -93,7 +93,6 @@ class LightSampler {
     LightType type;          // Punctual only
     glm::vec3 position;      // cluster centre or light position, m
     glm::vec3 direction;     // unit direction the light travels (spot, directional)
-    float radius2 = 0.0f;    // cluster radius², m²
     float radius = 0.0f;     // cluster radius, m
     float cosOuter = -1.0f;  // spot
     float intensity = 0.0f;  // luminance: W/sr bound (cluster, point, spot), W/m² (directional)

@@ -10,7 +10,6 @@
 #include <numbers>
 #include <vector>
 
-#include "scene/light_falloff.h"
 #include "support/form_factors.h"
 #include "test_scenes.h"
 
@@ -94,15 +93,8 @@ glm::dvec3 exactIrradiance(const std::vector<Square>& squares, const std::vector
       if (!shadowedBySquares(squares, x, w * 1e6)) e += glm::dvec3(l.irradiance) * w.z;
       continue;
     }
-    const glm::dvec3 d = glm::dvec3(l.position) - x;
-    const double d2 = glm::dot(d, d), cosX = d.z / std::sqrt(d2);
-    if (cosX <= 0.0 || shadowedBySquares(squares, x, d)) continue;
-    double falloff = 1.0;
-    if (l.type == LightType::Spot) {
-      falloff = spotFalloff(l, static_cast<float>(glm::dot(glm::normalize(glm::dvec3(l.direction)),
-                                                           -d / std::sqrt(d2))));
-    }
-    e += glm::dvec3(l.intensity) * falloff * cosX / d2;
+    if (!shadowedBySquares(squares, x, glm::dvec3(l.position) - x))
+      e += test::punctualIrradiance(l, x);
   }
   return e;
 }

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "image/luminance.h"
-#include "scene/light_falloff.h"
 #include "support/form_factors.h"
 #include "test_scenes.h"
 
@@ -39,20 +38,6 @@ std::vector<Light> twentyPointLights() {
     lights.push_back(l);
   }
   return lights;
-}
-
-// E = I·cosθ/d² (W/m²) on the +z plane at x, for a point light (spot: × the t² falloff).
-glm::dvec3 punctualIrradiance(const Light& l, glm::dvec3 x) {
-  const glm::dvec3 d = glm::dvec3(l.position) - x;
-  const double d2 = glm::dot(d, d);
-  const double cosX = d.z / std::sqrt(d2);
-  if (cosX <= 0.0) return glm::dvec3(0.0);
-  double falloff = 1.0;
-  if (l.type == LightType::Spot) {
-    falloff = spotFalloff(l, static_cast<float>(glm::dot(glm::normalize(glm::dvec3(l.direction)),
-                                                         -d / std::sqrt(d2))));
-  }
-  return glm::dvec3(l.intensity) * falloff * cosX / d2;
 }
 
 // E = Φ/π · cosθ_vpl · cosθ_x / d² (bake_folder/vpl.h) on the +z plane at x.
@@ -119,7 +104,7 @@ TEST(LightSampler, TwentyUnequalPointLightsOverAPlane) {
   const PathTracer tracer(world.scene, world.geometry, *world.kernel, TraceSettings{});
   for (const glm::dvec3& x : kPoints) {
     glm::dvec3 exact(0.0);
-    for (const Light& l : world.scene.lights) exact += punctualIrradiance(l, x);
+    for (const Light& l : world.scene.lights) exact += test::punctualIrradiance(l, x);
     const test::Estimate e =
         test::estimateIrradiance(tracer, glm::vec3(x), {0, 0, 1}, 3u, 7u, 8192);
     std::printf("20 point lights at (%.1f, %.1f): E = %.5f ± %.5f, exact %.5f W/m² (green)\n", x.x,
@@ -157,7 +142,7 @@ TEST(LightSampler, EveryPunctualKindAndVirtualPointLights) {
     for (const Light& l : world.scene.lights) {
       exact += l.type == LightType::Directional
                    ? glm::dvec3(l.irradiance) * std::max(0.0, -glm::dvec3(l.direction).z)
-                   : punctualIrradiance(l, x);
+                   : test::punctualIrradiance(l, x);
     }
     for (const Vpl& v : vpls) exact += vplIrradiance(v, x);
     const test::Estimate e =
@@ -196,7 +181,7 @@ TEST(LightSampler, DimAreaLightAmongBrightPointLightsKeepsMisRight) {
         const glm::dvec3 d = glm::dvec3(l.position) - x;
         const glm::dvec3 crossing = x + d * (1.0 / d.z);
         if (std::abs(crossing.x) <= 0.5 && std::abs(crossing.y) <= 0.5) continue;
-        exact += punctualIrradiance(l, x);
+        exact += test::punctualIrradiance(l, x);
       }
       const test::Estimate e =
           test::estimateIrradiance(tracer, glm::vec3(x), {0, 0, 1}, 9u, 2u, 16384);

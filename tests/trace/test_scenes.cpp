@@ -7,6 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/light_falloff.h"
+
 namespace bounce::test {
 
 uint32_t addMaterial(Scene& scene, glm::vec3 albedo, glm::vec3 emission, bool doubleSided) {
@@ -161,6 +163,20 @@ ImageMean imageMean(const CameraRender& render, int spp) {
   }
   return ok ? ::testing::AssertionSuccess() << message.str()
             : ::testing::AssertionFailure() << message.str();
+}
+
+glm::dvec3 punctualIrradiance(const Light& light, glm::dvec3 x) {
+  const glm::dvec3 d = glm::dvec3(light.position) - x;
+  const double d2 = glm::dot(d, d);
+  const double cosX = d.z / std::sqrt(d2);
+  if (cosX <= 0.0) return glm::dvec3(0.0);
+  double falloff = 1.0;
+  if (light.type == LightType::Spot) {
+    falloff =
+        spotFalloff(light, static_cast<float>(glm::dot(glm::normalize(glm::dvec3(light.direction)),
+                                                       -d / std::sqrt(d2))));
+  }
+  return glm::dvec3(light.intensity) * falloff * cosX / d2;
 }
 
 }  // namespace bounce::test

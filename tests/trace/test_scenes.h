@@ -79,6 +79,10 @@ struct ImageMean {
 ImageMean imageMean(const CameraRender& render, int spp);
 
 // |a − b| ≤ k·sqrt(seA² + seB²) per channel, with a message.
+// E = I·cosθ/d² (W/m²) on the +z plane at x from a point light, unshadowed (a spot: × its t²
+// falloff, scene/light_falloff.h).
+glm::dvec3 punctualIrradiance(const Light& light, glm::dvec3 x);
+
 ::testing::AssertionResult agreeWithin(glm::dvec3 a, glm::dvec3 seA, glm::dvec3 b, glm::dvec3 seB,
                                        double k);
 
