@@ -236,6 +236,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   s.maxDepth = o.maxDepth;
   s.seed = o.seed;
   s.denoise = settings.denoise;
+  s.lightChoice = o.lightChoice == LightChoice::ByPlace ? "place" : "power";
   s.pointsPerTexel = settings.pointsPerTexel;
   s.vpls = o.vpls;
   s.vplError = o.vplError;

@@ -187,6 +187,7 @@ Json settingsJson(const BakeManifest::Settings& s) {
           {"maxDepth", s.maxDepth},
           {"seed", s.seed},
           {"denoise", s.denoise},
+          {"lightChoice", s.lightChoice},
           {"pointsPerTexel", s.pointsPerTexel},
           {"vpls", s.vpls},
           {"vplError", s.vplError}};
@@ -359,6 +360,9 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
   m.settings.maxDepth = s.integer("maxDepth", 0, kIntMax);
   m.settings.seed = static_cast<uint32_t>(s.integer("seed", 0, UINT32_MAX));
   m.settings.denoise = s.boolean("denoise");
+  if (s.json().contains("lightChoice")) m.settings.lightChoice = s.text("lightChoice");
+  if (m.settings.lightChoice != "place" && m.settings.lightChoice != "power")
+    root.fail("settings.lightChoice is \"" + m.settings.lightChoice + "\", not place or power");
   m.settings.pointsPerTexel = s.integer("pointsPerTexel", 0, kIntMax);
   m.settings.vpls = s.integer("vpls", 0, kIntMax);
   m.settings.vplError = s.real("vplError");

@@ -56,6 +56,8 @@ struct BakeManifest {
     double targetError = 0.0;  // relative standard error a texel stops at
     uint32_t seed = 0;
     bool denoise = false;
+    // Next-event estimation's pick: "place" or "power" (bake.json before it existed: "power").
+    std::string lightChoice = "power";
     int64_t vpls = 0;       // most VPLs
     double vplError = 0.0;  // relative error of the total VPL flux to stop at
   } settings;

@@ -394,6 +394,20 @@ TEST_F(BakeRejection, ManifestFormatVersion) {
   expectRefused("bake.json", "no integer \"formatVersion\"");
 }
 
+// bake.json says which light pick next-event estimation used; bake.json files written before it
+// did mean "power" (the only pick then); anything else is refused.
+TEST_F(BakeRejection, ManifestLightChoice) {
+  rewriteManifest([](BakeManifest& m) { m.settings.lightChoice = "place"; });
+  EXPECT_EQ(readManifest(dir_).settings.lightChoice, "place");
+  nlohmann::json json = nlohmann::json::parse(manifestText(readManifest(dir_)));
+  json["settings"].erase("lightChoice");
+  std::ofstream(dir_ / "bake.json", std::ios::trunc) << json.dump();
+  EXPECT_EQ(readManifest(dir_).settings.lightChoice, "power");
+  json["settings"]["lightChoice"] = "brightest";
+  std::ofstream(dir_ / "bake.json", std::ios::trunc) << json.dump();
+  expectRefused("bake.json", "settings.lightChoice is \"brightest\", not place or power");
+}
+
 // ---- a stale bake: the folder, both hashes, and why where bake.json or the files' times tell
 
 // Rewrites bake.json with the optional fields bounce-bake writes: the scene file's name and the
