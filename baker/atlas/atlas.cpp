@@ -93,6 +93,18 @@ glm::ivec2 toTexels(Chart& chart, float texelSize) {
   return cells;
 }
 
+// Share of the texels an instance's charts take (each chart's touched texels grown by
+// padding/2, its half of the padding) that its surface fills: areaTexels / that count.
+double lightmapFill(const std::vector<Chart>& charts, float texelSize, double areaTexels,
+                    int padding) {
+  std::size_t taken = 0;
+  for (Chart chart : charts) {
+    const glm::ivec2 cells = toTexels(chart, texelSize);
+    taken += setTexels(dilateMask(rasteriseChart(chart.cornerUv, cells), padding / 2));
+  }
+  return taken > 0 ? areaTexels / static_cast<double>(taken) : 1.0;
+}
+
 // A chart's corners turned by 90° inside its cells (rigid: a rotation and a whole-texel shift),
 // which become cells.y × cells.x.
 std::vector<glm::vec2> turnedCorners(const std::vector<glm::vec2>& cornerUv, glm::ivec2 cells) {
@@ -209,6 +221,37 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   const auto instanceTexel = [&](const StaticInstance& s) {
     return texelSize / scene.instances[s.instance].lightmapScale;
   };
+  // Instances whose lightmap would be mostly padding around sub-texel pieces take the VPLs'
+  // light too (kMinLightmapFill). A mesh's own uv1 is one square region: never judged.
+  std::vector<std::string> sparse;
+  if (settings.minLightmapFill > 0.0)
+    std::erase_if(statics, [&](StaticInstance& s) {
+      const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
+      const float texel = instanceTexel(s);
+      if (checkMeshUv1(mesh, s.world, texel, settings.padding, settings.maxSize).usable)
+        return false;
+      s.charts = generateCharts(s.instance, s.world, texel);
+      const double areaTexels = s.weightedArea / (static_cast<double>(texelSize) * texelSize);
+      if (lightmapFill(s.charts, texel, areaTexels, settings.padding) >= settings.minLightmapFill)
+        return false;
+      atlas.vplLitInstances.push_back(s.instance);
+      sparse.push_back(scene.instances[s.instance].name);
+      return true;
+    });
+  std::sort(atlas.vplLitInstances.begin(), atlas.vplLitInstances.end());
+  if (!sparse.empty()) {
+    std::ostringstream note;
+    note << sparse.size() << " static instances (";
+    for (std::size_t k = 0; k < sparse.size() && k < 8; ++k)
+      note << (k > 0 ? ", '" : "'") << sparse[k] << "'";
+    note << (sparse.size() > 8 ? ", …) would fill" : ") would fill");
+    note << " under " << settings.minLightmapFill * 100.0
+         << " % of their lightmap texels (the rest padding around pieces smaller than a texel): "
+            "they get no lightmap and take their indirect light from the VPLs (a larger "
+            "extras.bounce.lightmapScale keeps one)";
+    atlas.notes.push_back(note.str());
+  }
+  if (statics.empty()) return atlas;
   std::vector<std::string> uv1Notes;
   for (;;) {
     // Charts at this texel size: the mesh's own uv1 when usable, else generated ones.

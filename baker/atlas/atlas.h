@@ -16,6 +16,23 @@
 
 namespace bounce {
 
+// An instance whose surface (area × lightmapScale²) covers fewer texels than this gets no
+// lightmap: a chair leg or a screw narrower than a texel would only be padding around a smear.
+// Its indirect light comes from the VPLs, as a dynamic instance's. A user overrides it with
+// extras.bounce.lightmapScale: 0 sends any instance to the VPLs, a larger scale gives a small
+// one enough texels to keep a lightmap.
+inline constexpr double kMinLightmapTexels = 2.0;
+
+// An instance whose surface fills less than this share of the texels its charts take, each
+// chart's touched texels grown by padding/2 (its share of the padding), gets no lightmap either:
+// its lightmap would be mostly padding around pieces smaller than a texel (a chair's frame, a
+// cluster of 240 small boxes, wheels), each texel a smear over them. A single square chart of
+// side s texels, fully covered, fills s²/(s + 2)² with padding 2: 0.3 at s = 2.4 (12 cm at 5 cm
+// texels). Its light comes from the VPLs; a larger extras.bounce.lightmapScale raises the fill
+// (texels shrink against the pieces) and keeps a lightmap, AtlasSettings::minLightmapFill = 0
+// turns the rule off.
+inline constexpr double kMinLightmapFill = 0.3;
+
 struct AtlasSettings {
   // Texel edge in metres where an instance's lightmapScale is 1 (instance i's is texelSize/s_i).
   // 0 = the density rule of texel_density.h (or √(A / texelBudget) when texelBudget > 0).
@@ -24,20 +41,17 @@ struct AtlasSettings {
   int64_t maxTexels = kDefaultMaxTexels;  // cap on the texels the surface takes (texel_density.h)
   int padding = 2;     // texels between charts (dilation and bilinear filtering need ≥ 2)
   int maxSize = 4096;  // largest atlas edge, texels
+  // Instances whose surface fills less than this share of their charts' padded texels take the
+  // VPLs' light (kMinLightmapFill); 0 keeps a lightmap for every instance over kMinLightmapTexels.
+  double minLightmapFill = kMinLightmapFill;
 };
-
-// An instance whose surface (area × lightmapScale²) covers fewer texels than this gets no
-// lightmap: a chair leg or a screw narrower than a texel would only be padding around a smear.
-// Its indirect light comes from the VPLs, as a dynamic instance's. A user overrides it with
-// extras.bounce.lightmapScale: 0 sends any instance to the VPLs, a larger scale gives a small
-// one enough texels to keep a lightmap.
-inline constexpr double kMinLightmapTexels = 2.0;
 
 struct Atlas {
   LightmapLayout layout;
   std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
   // Static instances left without a lightmap region, their indirect light taken from the VPLs
-  // (as dynamic ones): lightmapScale 0, or under kMinLightmapTexels of surface at their texel.
+  // (as dynamic ones): lightmapScale 0, under kMinLightmapTexels of surface at their texel, or
+  // filling under minLightmapFill of their charts' padded texels.
   std::vector<uint32_t> vplLitInstances;
   // Added to the interface: the chart of every triangle, parallel to layout.instances[i].cornerUv
   // (one per triangle), chart ids in [0, layout.chartCount). Texels of different charts never

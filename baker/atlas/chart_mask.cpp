@@ -1,6 +1,7 @@
 #include "atlas/chart_mask.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "atlas/uv_geometry.h"
@@ -55,6 +56,12 @@ ChartMask dilateMask(const ChartMask& mask, int radius) {
       if (wide.at(x, y))
         for (int d = 0; d <= 2 * radius; ++d) grown.set(x, y + d);
   return grown;
+}
+
+std::size_t setTexels(const ChartMask& mask) {
+  std::size_t count = 0;
+  for (const uint64_t word : mask.bits) count += static_cast<std::size_t>(std::popcount(word));
+  return count;
 }
 
 }  // namespace bounce

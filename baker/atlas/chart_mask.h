@@ -32,4 +32,7 @@ ChartMask rasteriseChart(const std::vector<glm::vec2>& cornerUv, glm::ivec2 cell
 // side: texel (x, y) of the result is texel (x - radius, y - radius) of the source's frame.
 ChartMask dilateMask(const ChartMask& mask, int radius);
 
+// Number of set texels.
+std::size_t setTexels(const ChartMask& mask);
+
 }  // namespace bounce

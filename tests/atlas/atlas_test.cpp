@@ -226,8 +226,9 @@ TEST(AtlasInstances, LightmapScaleSetsAnInstancesTexelsPerMetre) {
 
 // Small objects get no lightmap (atlas.h, kMinLightmapTexels): a 1 m² floor sets t =
 // √(1/16384) m = 7.8 mm; a 5 mm square (0.41 texel) and a 2 m² quad at lightmapScale 0 are left
-// to the VPLs, named in vplLitInstances and a note; the same 5 mm square at lightmapScale 4
-// (6.6 texels) keeps its region. Every other instance's region is as before.
+// to the VPLs, named in vplLitInstances and a note; the same 5 mm square at lightmapScale 8
+// (26 texels, 5.1 on a side, filling 26 / 8² of its padded texels, over kMinLightmapFill) keeps
+// its region. Every other instance's region is as before.
 TEST(AtlasInstances, SmallObjectsAndScaleZeroTakeTheVplsLight) {
   Scene scene;
   const uint32_t quad = addUnitQuadMesh(scene);
@@ -235,11 +236,11 @@ TEST(AtlasInstances, SmallObjectsAndScaleZeroTakeTheVplsLight) {
   const glm::mat4 small = glm::scale(glm::translate(glm::mat4(1), glm::vec3(3, 0, 0)),
                                      glm::vec3(0.005f, 0.005f, 0.005f));
   addInstance(scene, quad, small);                                        // 1: 0.41 texel
-  addInstance(scene, quad, glm::translate(small, glm::vec3(400, 0, 0)));  // 2: scale 4
+  addInstance(scene, quad, glm::translate(small, glm::vec3(400, 0, 0)));  // 2: scale 8
   addInstance(scene, quad,
               glm::scale(glm::translate(glm::mat4(1), glm::vec3(-4, 0, 0)),
                          glm::vec3(1.4142f, 1.4142f, 1.4142f)));  // 3: scale 0
-  scene.instances[2].lightmapScale = 4.0f;
+  scene.instances[2].lightmapScale = 8.0f;
   scene.instances[3].lightmapScale = 0.0f;
   const Atlas atlas = buildAtlas(scene, AtlasSettings{});
   EXPECT_EQ(atlas.vplLitInstances, (std::vector<uint32_t>{1, 3}));
@@ -449,6 +450,21 @@ TEST(AtlasContent, DISABLED_ConferenceRoomIsValid) {
   EXPECT_EQ(regionProblem(scene, atlas), "");
   EXPECT_EQ(overlapProblem(atlas), "");
   EXPECT_NEAR(recountUtilisation(atlas), atlas.layout.utilisation, 1e-6);
+}
+
+// Issue 15: the Conference Room as lit (content/conference/conference_panels.json, 5 cm texels,
+// padding 2) uses at least 70 % of its atlas; the padding kept. By hand, as the one above.
+TEST(AtlasContent, DISABLED_ConferenceRoomUsesSeventyPercent) {
+  const Scene scene = contentScene("content/conference/conference_panels.json");
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_FLOAT_EQ(atlas.layout.texelSize, 0.05f);
+  EXPECT_EQ(atlas.layout.padding, 2);
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
+  const double used = recountUtilisation(atlas);
+  std::printf("Conference Room: %d x %d texels, %d charts, utilisation %.3f\n", atlas.layout.width,
+              atlas.layout.height, atlas.layout.chartCount, used);
+  EXPECT_GE(used, 0.70);
 }
 
 TEST(AtlasContent, SameSceneSameLayout) {

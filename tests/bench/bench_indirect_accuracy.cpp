@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   app.add_option("--texel-size", bake.texelSize, "texel edge in metres (overrides the budget)");
   app.add_option("--spp", bake.spp, "most samples per texel");
   app.add_option("--target-error", bake.targetError, "per-texel relative error target");
+  app.add_option("--vpls", bake.vpls,
+                 "most VPLs (default 0: the lightmap alone; a static instance the atlas leaves to "
+                 "the VPLs then reads no indirect light)");
   app.add_option("--denoise", denoise, "on|off")->check(CLI::IsMember({"on", "off"}));
   app.add_option("--size", size, "frame width (and height unless --height), pixels");
   app.add_option("--height", height, "frame height, pixels (default: --size)");
