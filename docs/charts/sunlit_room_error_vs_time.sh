@@ -10,7 +10,8 @@
 #                (default out/charts)
 #
 # Each point: bench_indirect_accuracy (tests/bench) bakes in-process through bakeScene with
-# bounce-bake's settings (at most 4096 samples per texel), draws --mode indirect at 360x240,
+# bounce-bake's settings (at most 4096 samples per texel, 4096 VPLs: the instances the atlas
+# leaves to the VPLs, the door frame, read their light), draws --mode indirect at 360x240,
 # box-filters it to 90x60 (the tracer averages each pixel's area) and compares with
 # bounce-trace --indirect-only (8192 spp, traced once and cached) over the static,
 # non-emissive, edge-free pixels: mean |dY|/Y. The reference's own noise can add up to
@@ -24,7 +25,7 @@ bench="$build/bin/bench_indirect_accuracy"
 scene="$here/../../content/sunlit_room/sunlit_room.gltf"
 mkdir -p "$out"
 csv="$out/sunlit_room_error_vs_time.csv"
-common=("$scene" --camera room --size 90 --height 60 --box 4 --ref-spp 8192
+common=("$scene" --camera room --size 90 --height 60 --box 4 --ref-spp 8192 --vpls 4096
         --ref "$out/sunlit_room_ref90.exr")
 
 "$bench" "${common[@]}" --texel-size 0.05 --target-error 0.1 --header > "$csv"
