@@ -241,7 +241,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   std::sort(atlas.vplLitInstances.begin(), atlas.vplLitInstances.end());
   if (!sparse.empty()) {
     std::ostringstream note;
-    note << sparse.size() << " static instances (";
+    note << sparse.size() << (sparse.size() == 1 ? " static instance (" : " static instances (");
     for (std::size_t k = 0; k < sparse.size() && k < 8; ++k)
       note << (k > 0 ? ", '" : "'") << sparse[k] << "'";
     note << (sparse.size() > 8 ? ", …) would fill" : ") would fill");

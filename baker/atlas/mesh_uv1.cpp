@@ -66,6 +66,17 @@ Uv1Check checkMeshUv1(const Mesh& mesh, const WorldMesh& world, float texelSize,
       check.reason = reason.str();
       return check;
     }
+  // A wall standing on the surface or passing through it cut it (scene/crossing_cuts.h): the cut
+  // vertices are shared by both sides, so its uv1 islands run across the crossing and a texel (or
+  // a bilinear lookup) would join two sides that see different light. Generated charts never
+  // cross a cut edge.
+  for (const uint8_t edges : mesh.cutEdges)
+    if (edges & 0x7u) {
+      check.reason =
+          "another surface crosses it (a wall on it or through it), and its TEXCOORD_1 would "
+          "carry light across";
+      return check;
+    }
   double uvArea = 0.0, worldArea = 0.0;
   for (std::size_t t = 0; t < world.triangleCount(); ++t) {
     const uint32_t* i = &mesh.indices[3 * t];

@@ -15,10 +15,11 @@ struct Uv1Check {
   std::string reason;  // why not, one clause (empty when usable or when the mesh has no uv1)
 };
 
-// Usable when every uv1 lies in [0,1]², no two triangles overlap in it, the region fits in the
-// atlas, its islands keep `padding` texels apart (as generated charts do), and at most 10 % of the
-// surface gets fewer than a quarter of the texels per m² the texel size asks for (the region is
-// sized so that the mesh's uv1 area holds its world area).
+// Usable when every uv1 lies in [0,1]², no other surface crosses the mesh (Mesh::cutEdges
+// empty of chart edges: its islands would run across a wall), no two triangles overlap in it, the
+// region fits in the atlas, its islands keep `padding` texels apart (as generated charts do), and
+// at most 10 % of the surface gets fewer than a quarter of the texels per m² the texel size asks
+// for (the region is sized so that the mesh's uv1 area holds its world area).
 Uv1Check checkMeshUv1(const Mesh& mesh, const WorldMesh& world, float texelSize, int padding,
                       int maxSize);
 

@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "image/regular_file.h"
+#include "scene/file_name_case.h"
 #include "scene/input_limits.h"
 #include "scene/load_error.h"
 #include "scene/loaders.h"
@@ -210,7 +211,17 @@ Scene loadObj(const std::filesystem::path& path) {
     if (!m.diffuse_texname.empty()) {
       auto [it, added] = textureOfFile.try_emplace(m.diffuse_texname, 0);
       if (added) {
-        scene.textures.push_back(readSrgbTextureFile(path, folder / m.diffuse_texname));
+        std::filesystem::path image = folder / m.diffuse_texname;
+        if (const std::filesystem::path onDisk = findIgnoringCase(folder, m.diffuse_texname);
+            !onDisk.empty() && onDisk != image) {
+          scene.warnings.push_back(
+              path.filename().string() + ": material '" + m.name + "' names its texture '" +
+              m.diffuse_texname + "', read as '" +
+              std::filesystem::relative(onDisk, folder).string() +
+              "' (the name's letter case or separators differ from the file's)");
+          image = onDisk;
+        }
+        scene.textures.push_back(readSrgbTextureFile(path, image));
         it->second = static_cast<uint32_t>(scene.textures.size() - 1);
       }
       material.albedoTexture = it->second;

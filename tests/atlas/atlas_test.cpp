@@ -15,6 +15,7 @@
 #include "atlas/uv_geometry.h"
 #include "atlas_scenes.h"
 #include "layout_checks.h"
+#include "scene/crossing_cuts.h"
 #include "scene/load.h"
 
 namespace bounce::test {
@@ -401,6 +402,30 @@ TEST(AtlasMeshUv1, InvalidUv1IsRejectedWithANote) {
   const Atlas c = buildAtlas(starved, atTexelSize(0.05f));
   ASSERT_EQ(c.notes.size(), 1u);
   EXPECT_NE(c.notes[0].find("fewer"), std::string::npos) << c.notes[0];
+}
+
+// A wall standing through a floor whose mesh has a valid TEXCOORD_1 (issue 15: a surface that
+// continues under a wall must not carry light across): the crossing cut shares its new vertices
+// between the two sides, so the floor's uv1 island runs under the wall; the atlas must generate
+// charts (which never cross a cut edge) and say why. The wall: the unit quad stood up in the
+// plane x = 1.5, across the whole 3 × 2 m floor and through it.
+TEST(AtlasMeshUv1, Uv1CrossedByAWallIsReplacedByCharts) {
+  Scene scene = quadWithUv1({{0.1f, 0.2f}, {0.9f, 0.25f}, {0.8f, 0.95f}, {0.05f, 0.7f}});
+  glm::mat4 wall(0.0f);
+  wall[0] = glm::vec4(0, 3, 0, 0);    // the quad's x runs along y, 3 m
+  wall[1] = glm::vec4(0, 0, 1.5, 0);  // its y runs along z, 1.5 m
+  wall[2] = glm::vec4(1, 0, 0, 0);
+  wall[3] = glm::vec4(1.5, -0.5, -0.5, 1);
+  addInstance(scene, addUnitQuadMesh(scene), wall);
+  const CrossingCuts cuts = cutAtCrossings(scene);
+  ASSERT_GT(cuts.cutTriangles, 0u);
+  const Atlas atlas = buildAtlas(scene, atTexelSize(0.05f));
+  EXPECT_EQ(atlas.chartKinds.meshUv1, 0);
+  bool noted = false;
+  for (const std::string& note : atlas.notes) noted |= note.find("crosses it") != std::string::npos;
+  EXPECT_TRUE(noted) << (atlas.notes.empty() ? "no note" : atlas.notes.front());
+  EXPECT_EQ(regionProblem(scene, atlas), "");
+  EXPECT_EQ(overlapProblem(atlas), "");
 }
 
 // Two triangles as two uv1 islands, `gap` apart in uv1 units (6 vertices, none shared).

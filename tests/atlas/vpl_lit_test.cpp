@@ -42,7 +42,7 @@ TEST(AtlasInstances, InstancesOfSubTexelStripsTakeTheVplsLight) {
   EXPECT_EQ(overlapProblem(atlas), "");
   bool noted = false;
   for (const std::string& note : atlas.notes)
-    noted |= note.starts_with("1 static instances ('rail')");
+    noted |= note.starts_with("1 static instance ('rail')");
   EXPECT_TRUE(noted);
 
   settings.minLightmapFill = 0.0;

@@ -90,6 +90,29 @@ TEST(Texture, GltfMissingImageIsALoadError) {
   test::expectLoadError(dir / "noimage.gltf", "absent.png");
 }
 
+// Issue 15: OBJ/MTL files written where file names ignore letter case name their textures in
+// another case than the disk has them, and with backslashes (`map_Kd SP_LUK.JPG` for
+// `sp_luk.JPG`): the texture is read and a warning names both spellings. Two files matching alike
+// are not guessed between: the scene is refused as for a missing texture.
+TEST(Texture, ObjMapKdInAnotherLetterCaseIsFoundWithAWarning) {
+  test::TempDir dir;
+  std::filesystem::create_directory(dir / "Maps");
+  writeTestPng(dir / "Maps" / "sp_luk.JPG");  // a PNG by its content, whatever the extension says
+  test::writeText(dir / "t.mtl", "newmtl m\nKd 1 1 1\nmap_Kd maps\\SP_LUK.JPG\n");
+  test::writeText(dir / "t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n");
+  const Scene scene = loadScene(dir / "t.obj");
+  ASSERT_EQ(scene.textures.size(), 1u);
+  expectTestTexels(scene.textures[0]);
+  bool warned = false;
+  for (const std::string& w : scene.warnings)
+    warned |= w.find("'maps\\SP_LUK.JPG'") != std::string::npos &&
+              w.find("'Maps/sp_luk.JPG'") != std::string::npos;
+  EXPECT_TRUE(warned) << (scene.warnings.empty() ? "no warning" : scene.warnings.front());
+
+  writeTestPng(dir / "Maps" / "SP_luk.jpg");  // now two files answer to the name
+  test::expectLoadError(dir / "t.obj", "SP_LUK.JPG");
+}
+
 TEST(Texture, MissingTextureFileIsALoadError) {
   test::TempDir dir;
   test::writeText(dir / "t.mtl", "newmtl m\nmap_Kd absent.png\n");
