@@ -188,13 +188,22 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   if (bake.partial) return bake;
   step = stage(kStageFilters, 1);
 
+  // Texels the zero rule stopped before the cap are unknown, not black (fillUnresolvedZeros).
+  std::vector<uint8_t> unresolved(texels, 0);
+  for (std::size_t t = 0; t < texels; ++t)
+    unresolved[t] = coverage.covered(t) && bake.irradiance.pixels[t] == glm::vec3(0.0f) &&
+                            bake.samples[t] < static_cast<uint32_t>(settings.irradiance.maxSpp)
+                        ? 1
+                        : 0;
+  bake.zerosFilled = fillUnresolvedZeros(bake.irradiance, unresolved, labels, bake.relativeError);
   std::vector<uint8_t> valid(texels, 0);
   std::vector<float> errors;
   for (std::size_t t = 0; t < texels; ++t) {
     bake.coveredTexels += bake.covered[t];
     bake.invalidTexels += bake.invalid[t];
     valid[t] = coverage.covered(t) ? 1 : 0;
-    if (valid[t] && luminance(bake.irradiance.pixels[t]) > 0.0f)
+    // A filled texel's error is unknown (1 is a stand-in for the denoiser): not in the summary.
+    if (valid[t] && !unresolved[t] && luminance(bake.irradiance.pixels[t]) > 0.0f)
       errors.push_back(bake.relativeError[t]);
   }
   if (!errors.empty()) {

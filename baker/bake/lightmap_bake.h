@@ -79,6 +79,8 @@ struct LightmapBake {
   std::vector<uint8_t> covered;      // per texel: some triangle overlaps it
   std::vector<uint8_t> invalid;      // per texel: covered, every point dropped, filled
   uint64_t coveredTexels = 0;
+  // Texels the zero rule stopped at 0 that took their lit neighbours' mean (fillUnresolvedZeros).
+  uint64_t zerosFilled = 0;
   uint64_t invalidTexels = 0;
   uint64_t pointsInside = 0, pointsAcross = 0;
   uint64_t rays = 0;  // leak guard + irradiance

@@ -74,6 +74,24 @@ std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
   return newly.size();
 }
 
+std::size_t fillUnresolvedZeros(Image& image, const std::vector<uint8_t>& unresolved,
+                                const std::vector<uint32_t>& labels,
+                                std::vector<float>& relativeError, int rings) {
+  // Sources: every labelled texel that is not unresolved; dilateOnce fills only filled == 0.
+  std::vector<uint8_t> filled(unresolved.size(), 1);
+  for (std::size_t t = 0; t < unresolved.size(); ++t) filled[t] = unresolved[t] ? 0 : 1;
+  std::size_t total = 0;
+  for (int ring = 0; ring < rings; ++ring) {
+    const std::vector<uint8_t> before = filled;
+    const std::size_t added = dilateOnce(image, filled, &labels);
+    if (added == 0) break;
+    total += added;
+    for (std::size_t t = 0; t < filled.size(); ++t)
+      if (filled[t] && !before[t]) relativeError[t] = 1.0f;
+  }
+  return total;
+}
+
 glm::vec3 bilinear(const Image& image, glm::vec2 p) {
   const glm::vec2 q = p - 0.5f;
   const int x0 = static_cast<int>(std::floor(q.x)), y0 = static_cast<int>(std::floor(q.y));

@@ -26,6 +26,18 @@ std::vector<uint32_t> labelCharts(int width, int height, const std::vector<uint8
 std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
                        const std::vector<uint32_t>* labels = nullptr);
 
+// Texels the adaptive stop left at exactly 0 before the sample cap (texel_irradiance.h,
+// zeroSamplesToStop) know only that a sample finds light with probability under 3/n: in a dim
+// closed room lit through a door (1–3% of the samples find light) 128 zero samples happen to
+// about one texel in twenty, which would show as black specks among lit neighbours. Each such
+// texel (`unresolved` ≠ 0) with a lit-or-resolved 8-neighbour of its label takes their mean, for
+// up to `rings` rounds, and its relative error becomes 1 (the denoiser then leans on its
+// neighbours); an unresolved texel with none within `rings` (a roof no lamp reaches) stays 0.
+// Returns how many texels it filled.
+std::size_t fillUnresolvedZeros(Image& image, const std::vector<uint8_t>& unresolved,
+                                const std::vector<uint32_t>& labels,
+                                std::vector<float>& relativeError, int rings = 2);
+
 // Bilinear lookup at texel-space point p (clamped at the borders), the renderer's filter.
 glm::vec3 bilinear(const Image& image, glm::vec2 p);
 

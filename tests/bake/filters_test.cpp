@@ -36,6 +36,24 @@ TEST(Dilation, LabelsKeepChartsApart) {
   EXPECT_FLOAT_EQ(image.at(1, 0).x, 1.0f);  // not (1 + 5)/2
 }
 
+// Texels the zero rule stopped at 0 take their lit neighbours' mean within two rings, inside
+// their label only, and their relative error becomes 1; farther ones stay 0.
+TEST(UnresolvedZeros, FilledFromLitNeighboursOfTheirChartWithinTwoRings) {
+  Image image(8, 1);
+  std::vector<uint8_t> unresolved = {0, 1, 1, 1, 1, 0, 0, 0};
+  const std::vector<uint32_t> labels = {1, 1, 1, 1, 1, 2, 2, 2};
+  std::vector<float> error(8, 0.05f);
+  image.at(0, 0) = glm::vec3(2.0f);
+  for (int x = 5; x < 8; ++x) image.at(x, 0) = glm::vec3(9.0f);  // another chart, lit
+  EXPECT_EQ(fillUnresolvedZeros(image, unresolved, labels, error), 2u);
+  EXPECT_EQ(image.at(1, 0), glm::vec3(2.0f));
+  EXPECT_EQ(image.at(2, 0), glm::vec3(2.0f));
+  EXPECT_EQ(image.at(3, 0), glm::vec3(0.0f));  // three rings away from chart 1's light
+  EXPECT_EQ(image.at(4, 0), glm::vec3(0.0f));  // beside chart 2's 9, which must not leak in
+  EXPECT_EQ(error[1], 1.0f);
+  EXPECT_EQ(error[3], 0.05f);
+}
+
 TEST(ChartLabels, ComponentsSeparatedByPadding) {
   const std::vector<uint8_t> mask = {1, 1, 0, 0, 1,  //
                                      0, 1, 0, 0, 1,  //
