@@ -29,12 +29,6 @@ csv="$out/conference_error_vs_time.csv"
 common=("$scene" --size 96 --height 54 --box 4 --ref-spp 8192 --vpls 4096
         --ref "$out/conference_ref96.exr")
 
-"$bench" "${common[@]}" --texel-size 0.05 --target-error 0.1 --header > "$csv"
-for texel in 0.05 0.1; do
-  for target in 0.2 0.1 0.05; do
-    [ "$texel" = 0.05 ] && [ "$target" = 0.1 ] && continue
-    "$bench" "${common[@]}" --texel-size "$texel" --target-error "$target" >> "$csv"
-  done
-done
-/usr/bin/python3 "$here/plot_lightmap_error.py" "$csv" "$out/conference_error_vs_time.png" \
-  "Conference Room (8 panels), 96×54 from 384×216, labels: per-texel target error"
+source "$here/room_error_sweep.sh"
+room_error_sweep "$bench" "$csv" "$out/conference_error_vs_time.png" \
+  "Conference Room (8 panels), 96×54 from 384×216, labels: per-texel target error" "${common[@]}"

@@ -28,12 +28,6 @@ csv="$out/sunlit_room_error_vs_time.csv"
 common=("$scene" --camera room --size 90 --height 60 --box 4 --ref-spp 8192 --vpls 4096
         --ref "$out/sunlit_room_ref90.exr")
 
-"$bench" "${common[@]}" --texel-size 0.05 --target-error 0.1 --header > "$csv"
-for texel in 0.05 0.1; do
-  for target in 0.2 0.1 0.05; do
-    [ "$texel" = 0.05 ] && [ "$target" = 0.1 ] && continue
-    "$bench" "${common[@]}" --texel-size "$texel" --target-error "$target" >> "$csv"
-  done
-done
-/usr/bin/python3 "$here/plot_lightmap_error.py" "$csv" "$out/sunlit_room_error_vs_time.png" \
-  "Sunlit room (our interior), 90×60 from 360×240, labels: per-texel target error"
+source "$here/room_error_sweep.sh"
+room_error_sweep "$bench" "$csv" "$out/sunlit_room_error_vs_time.png" \
+  "Sunlit room (our interior), 90×60 from 360×240, labels: per-texel target error" "${common[@]}"
