@@ -195,7 +195,8 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                             bake.samples[t] < static_cast<uint32_t>(settings.irradiance.maxSpp)
                         ? 1
                         : 0;
-  bake.zerosFilled = fillUnresolvedZeros(bake.irradiance, unresolved, labels, bake.relativeError);
+  bake.zerosFilled =
+      fillUnresolvedZeros(bake.irradiance, unresolved, bake.invalid, labels, bake.relativeError);
   std::vector<uint8_t> valid(texels, 0);
   std::vector<float> errors;
   for (std::size_t t = 0; t < texels; ++t) {

@@ -75,20 +75,25 @@ std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
 }
 
 std::size_t fillUnresolvedZeros(Image& image, const std::vector<uint8_t>& unresolved,
+                                const std::vector<uint8_t>& invalid,
                                 const std::vector<uint32_t>& labels,
                                 std::vector<float>& relativeError, int rings) {
-  // Sources: every labelled texel that is not unresolved; dilateOnce fills only filled == 0.
-  std::vector<uint8_t> filled(unresolved.size(), 1);
-  for (std::size_t t = 0; t < unresolved.size(); ++t) filled[t] = unresolved[t] ? 0 : 1;
+  // dilateOnce fills texels with filled == 0 from filled neighbours of their label. Invalid
+  // texels hold no value yet: label 0 keeps them out as sources, filled = 1 out as targets.
+  std::vector<uint8_t> filled(unresolved.size());
+  std::vector<uint32_t> sources = labels;
+  for (std::size_t t = 0; t < unresolved.size(); ++t) {
+    filled[t] = unresolved[t] ? 0 : 1;
+    if (invalid[t]) sources[t] = 0;
+  }
   std::size_t total = 0;
   for (int ring = 0; ring < rings; ++ring) {
-    const std::vector<uint8_t> before = filled;
-    const std::size_t added = dilateOnce(image, filled, &labels);
+    const std::size_t added = dilateOnce(image, filled, &sources);
     if (added == 0) break;
     total += added;
-    for (std::size_t t = 0; t < filled.size(); ++t)
-      if (filled[t] && !before[t]) relativeError[t] = 1.0f;
   }
+  for (std::size_t t = 0; t < filled.size(); ++t)
+    if (unresolved[t] && filled[t]) relativeError[t] = 1.0f;
   return total;
 }
 

@@ -33,8 +33,10 @@ std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
 // texel (`unresolved` ≠ 0) with a lit-or-resolved 8-neighbour of its label takes their mean, for
 // up to `rings` rounds, and its relative error becomes 1 (the denoiser then leans on its
 // neighbours); an unresolved texel with none within `rings` (a roof no lamp reaches) stays 0.
-// Returns how many texels it filled.
+// `invalid` texels (the leak guard's, not yet filled) are neither used nor filled. Returns how
+// many texels it filled.
 std::size_t fillUnresolvedZeros(Image& image, const std::vector<uint8_t>& unresolved,
+                                const std::vector<uint8_t>& invalid,
                                 const std::vector<uint32_t>& labels,
                                 std::vector<float>& relativeError, int rings = 2);
 

@@ -37,15 +37,22 @@ TEST(Dilation, LabelsKeepChartsApart) {
 }
 
 // Texels the zero rule stopped at 0 take their lit neighbours' mean within two rings, inside
-// their label only, and their relative error becomes 1; farther ones stay 0.
+// their label only, and their relative error becomes 1; farther ones stay 0. An invalid texel
+// (the leak guard's, still 0) is no source and is not filled: texel 1's mean is 2, not 1.
 TEST(UnresolvedZeros, FilledFromLitNeighboursOfTheirChartWithinTwoRings) {
-  Image image(8, 1);
-  std::vector<uint8_t> unresolved = {0, 1, 1, 1, 1, 0, 0, 0};
-  const std::vector<uint32_t> labels = {1, 1, 1, 1, 1, 2, 2, 2};
-  std::vector<float> error(8, 0.05f);
+  Image image(8, 2);
+  std::vector<uint8_t> unresolved(16, 0), invalid(16, 0);
+  for (int x = 1; x < 5; ++x) unresolved[image.index(x, 0)] = 1;
+  invalid[image.index(1, 1)] = 1;
+  std::vector<uint32_t> labels(16, 0);
+  for (int x = 0; x < 8; ++x) labels[image.index(x, 0)] = x < 5 ? 1 : 2;
+  labels[image.index(1, 1)] = 1;
+  std::vector<float> error(16, 0.05f);
   image.at(0, 0) = glm::vec3(2.0f);
   for (int x = 5; x < 8; ++x) image.at(x, 0) = glm::vec3(9.0f);  // another chart, lit
-  EXPECT_EQ(fillUnresolvedZeros(image, unresolved, labels, error), 2u);
+  EXPECT_EQ(fillUnresolvedZeros(image, unresolved, invalid, labels, error), 2u);
+  EXPECT_EQ(image.at(1, 1), glm::vec3(0.0f));
+  EXPECT_EQ(error[image.index(1, 1)], 0.05f);
   EXPECT_EQ(image.at(1, 0), glm::vec3(2.0f));
   EXPECT_EQ(image.at(2, 0), glm::vec3(2.0f));
   EXPECT_EQ(image.at(3, 0), glm::vec3(0.0f));  // three rings away from chart 1's light
