@@ -1,0 +1,53 @@
+# The module graph's rule at link level (the include level is tests/house/house_check.py):
+# no library under engine/ links a target defined under baker/, directly or through another
+# library. Only the programs in engine/apps may (they are where the renderer and the baker meet).
+# Checked at configure time: a breach stops the configure, naming both targets.
+
+# The targets defined in DIR and its subfolders.
+function(_bounce_targets_under dir out)
+  get_property(targets DIRECTORY "${dir}" PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirs DIRECTORY "${dir}" PROPERTY SUBDIRECTORIES)
+  foreach(sub IN LISTS subdirs)
+    _bounce_targets_under("${sub}" more)
+    list(APPEND targets ${more})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
+
+function(bounce_check_engine_does_not_link_the_baker)
+  _bounce_targets_under("${PROJECT_SOURCE_DIR}/baker" bakerTargets)
+  get_property(engineDirs DIRECTORY "${PROJECT_SOURCE_DIR}/engine" PROPERTY SUBDIRECTORIES)
+  foreach(dir IN LISTS engineDirs)
+    if(dir STREQUAL "${PROJECT_SOURCE_DIR}/engine/apps")
+      continue()
+    endif()
+    _bounce_targets_under("${dir}" libraries)
+    foreach(library IN LISTS libraries)
+      # Walk the link graph from this library through targets of the project.
+      set(queue ${library})
+      set(seen "")
+      while(queue)
+        list(POP_FRONT queue target)
+        if(target IN_LIST seen OR NOT TARGET ${target})
+          continue()
+        endif()
+        list(APPEND seen ${target})
+        get_target_property(type ${target} TYPE)
+        set(links "")
+        if(NOT type STREQUAL "INTERFACE_LIBRARY")
+          get_target_property(links ${target} LINK_LIBRARIES)
+        endif()
+        get_target_property(interface ${target} INTERFACE_LINK_LIBRARIES)
+        foreach(link IN LISTS links interface)
+          if(link IN_LIST bakerTargets)
+            message(FATAL_ERROR "bounce: the engine library ${library} (${dir}) links the "
+                                "baker's ${link} (through ${target}); only engine/apps may")
+          endif()
+          if(link AND NOT link MATCHES "-NOTFOUND$")
+            list(APPEND queue ${link})
+          endif()
+        endforeach()
+      endwhile()
+    endforeach()
+  endforeach()
+endfunction()
