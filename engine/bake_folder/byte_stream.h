@@ -92,4 +92,27 @@ inline uint64_t fnv1a64(std::span<const unsigned char> bytes,
   return h;
 }
 
+// Little-endian values at a byte offset of a buffer sized beforehand (the files of fixed-size
+// records: visibility, VPLs); the caller has checked that the offset is in range.
+inline void storeU16(std::vector<unsigned char>& out, std::size_t at, uint16_t v) {
+  for (int i = 0; i < 2; ++i) out[at + i] = static_cast<unsigned char>(v >> (8 * i));
+}
+inline void storeU32(std::vector<unsigned char>& out, std::size_t at, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out[at + i] = static_cast<unsigned char>(v >> (8 * i));
+}
+inline void storeF32(std::vector<unsigned char>& out, std::size_t at, float v) {
+  storeU32(out, at, std::bit_cast<uint32_t>(v));
+}
+inline uint16_t loadU16(std::span<const unsigned char> bytes, std::size_t at) {
+  return static_cast<uint16_t>(bytes[at] | (bytes[at + 1] << 8));
+}
+inline uint32_t loadU32(std::span<const unsigned char> bytes, std::size_t at) {
+  uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(bytes[at + i]) << (8 * i);
+  return v;
+}
+inline float loadF32(std::span<const unsigned char> bytes, std::size_t at) {
+  return std::bit_cast<float>(loadU32(bytes, at));
+}
+
 }  // namespace bounce

@@ -8,31 +8,16 @@
 
 #include "bake_folder/bake_input_file.h"
 #include "bake_folder/bake_manifest.h"  // the ranges
+#include "bake_folder/byte_stream.h"
 #include "image/atomic_file.h"
 #include "scene/load_error.h"
 
 namespace bounce {
 namespace {
 
-constexpr char kMagic[8] = {'B', 'N', 'C', 'V', 'P', 'L', 'S', '\0'};
-constexpr std::size_t kHeaderBytes = 16;
+constexpr char kVplMagic[8] = {'B', 'N', 'C', 'V', 'P', 'L', 'S', '\0'};
+constexpr std::size_t kVplHeaderBytes = 16;
 constexpr std::size_t kRecordBytes = 52;
-
-void putU32(std::vector<unsigned char>& out, std::size_t at, uint32_t v) {
-  for (int i = 0; i < 4; ++i) out[at + i] = static_cast<unsigned char>(v >> (8 * i));
-}
-void putF32(std::vector<unsigned char>& out, std::size_t at, float v) {
-  putU32(out, at, std::bit_cast<uint32_t>(v));
-}
-
-uint32_t getU32(std::span<const unsigned char> bytes, std::size_t at) {
-  uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(bytes[at + i]) << (8 * i);
-  return v;
-}
-float getF32(std::span<const unsigned char> bytes, std::size_t at) {
-  return std::bit_cast<float>(getU32(bytes, at));
-}
 
 bool finite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -46,52 +31,53 @@ bool within(glm::vec3 v, float limit) {
 }  // namespace
 
 std::vector<unsigned char> encodeVpls(std::span<const Vpl> vpls) {
-  std::vector<unsigned char> out(kHeaderBytes + kRecordBytes * vpls.size(), 0);
-  for (std::size_t i = 0; i < sizeof kMagic; ++i) out[i] = static_cast<unsigned char>(kMagic[i]);
-  putU32(out, 8, kVplFormatVersion);
-  putU32(out, 12, static_cast<uint32_t>(vpls.size()));
+  std::vector<unsigned char> out(kVplHeaderBytes + kRecordBytes * vpls.size(), 0);
+  for (std::size_t i = 0; i < sizeof kVplMagic; ++i)
+    out[i] = static_cast<unsigned char>(kVplMagic[i]);
+  storeU32(out, 8, kVplFormatVersion);
+  storeU32(out, 12, static_cast<uint32_t>(vpls.size()));
   for (std::size_t i = 0; i < vpls.size(); ++i) {
-    const std::size_t at = kHeaderBytes + kRecordBytes * i;
+    const std::size_t at = kVplHeaderBytes + kRecordBytes * i;
     for (int c = 0; c < 3; ++c) {
-      putF32(out, at + 4 * c, vpls[i].position[c]);
-      putF32(out, at + 12 + 4 * c, vpls[i].normal[c]);
-      putF32(out, at + 24 + 4 * c, vpls[i].flux[c]);
-      putF32(out, at + 36 + 4 * c, vpls[i].from[c]);
+      storeF32(out, at + 4 * c, vpls[i].position[c]);
+      storeF32(out, at + 12 + 4 * c, vpls[i].normal[c]);
+      storeF32(out, at + 24 + 4 * c, vpls[i].flux[c]);
+      storeF32(out, at + 36 + 4 * c, vpls[i].from[c]);
     }
-    putU32(out, at + 48, vpls[i].path);
+    storeU32(out, at + 48, vpls[i].path);
   }
   return out;
 }
 
 std::vector<Vpl> decodeVpls(const std::filesystem::path& file,
                             std::span<const unsigned char> bytes) {
-  if (bytes.size() < kHeaderBytes)
+  if (bytes.size() < kVplHeaderBytes)
     throw LoadError(file, "truncated: " + std::to_string(bytes.size()) +
-                              " bytes, the header needs " + std::to_string(kHeaderBytes));
-  if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+                              " bytes, the header needs " + std::to_string(kVplHeaderBytes));
+  if (std::memcmp(bytes.data(), kVplMagic, sizeof kVplMagic) != 0)
     throw LoadError(file, "bad magic: not a bounce VPL file");
-  const uint32_t version = getU32(bytes, 8);
+  const uint32_t version = loadU32(bytes, 8);
   if (version != kVplFormatVersion)
     throw LoadError(file, "format version " + std::to_string(version) +
                               ", this build reads version " + std::to_string(kVplFormatVersion) +
                               ": rebake");
-  const uint64_t count = getU32(bytes, 12);
-  const uint64_t expected = kHeaderBytes + kRecordBytes * count;
+  const uint64_t count = loadU32(bytes, 12);
+  const uint64_t expected = kVplHeaderBytes + kRecordBytes * count;
   if (bytes.size() != expected)
     throw LoadError(file, std::to_string(count) + " VPLs announced need " +
                               std::to_string(expected) + " bytes, the file has " +
                               std::to_string(bytes.size()));
   std::vector<Vpl> vpls(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t at = kHeaderBytes + kRecordBytes * i;
+    const std::size_t at = kVplHeaderBytes + kRecordBytes * i;
     Vpl& v = vpls[i];
     for (int c = 0; c < 3; ++c) {
-      v.position[c] = getF32(bytes, at + 4 * c);
-      v.normal[c] = getF32(bytes, at + 12 + 4 * c);
-      v.flux[c] = getF32(bytes, at + 24 + 4 * c);
-      v.from[c] = getF32(bytes, at + 36 + 4 * c);
+      v.position[c] = loadF32(bytes, at + 4 * c);
+      v.normal[c] = loadF32(bytes, at + 12 + 4 * c);
+      v.flux[c] = loadF32(bytes, at + 24 + 4 * c);
+      v.from[c] = loadF32(bytes, at + 36 + 4 * c);
     }
-    v.path = getU32(bytes, at + 48);
+    v.path = loadU32(bytes, at + 48);
     const std::string which = "VPL " + std::to_string(i) + ": ";
     if (!within(v.position, kMaxBakeLength))
       throw LoadError(

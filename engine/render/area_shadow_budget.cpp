@@ -5,12 +5,10 @@
 #include <cstdio>
 #include <numbers>
 
+#include "image/luminance.h"
+
 namespace bounce {
 namespace {
-
-float brightest(glm::vec3 c) {
-  return std::max({c.r, c.g, c.b, 0.0f});
-}
 
 // Lambert's vector irradiance Φ of triangle (a, b, c) seen from the origin, per unit radiance,
 // pointing from the origin towards the triangle: ½ Σ_edges θ_e·Γ_e, θ_e the angle the edge
@@ -40,8 +38,8 @@ float largestIrradiance(const AreaLightSet& set, std::size_t light, glm::vec3 p)
     const EmitterTriangle& e = set.triangles[t];
     const glm::vec3 front = glm::cross(e.v1 - e.v0, e.v2 - e.v0);
     if (!e.doubleSided && glm::dot(front, p - e.v0) <= 0.0f) continue;  // behind it
-    const double l_t = brightest(e.radiance);
-    radiance = std::max(radiance, brightest(e.radiance));
+    const double l_t = brightestChannel(e.radiance);
+    radiance = std::max(radiance, brightestChannel(e.radiance));
     sum += l_t * vectorIrradiance(glm::dvec3(e.v0 - p), glm::dvec3(e.v1 - p), glm::dvec3(e.v2 - p));
   }
   // A hemisphere of radiance L gives π·L: no surface gets more.

@@ -2,19 +2,13 @@
 
 #include <algorithm>
 
+#include "image/luminance.h"
 #include "scene/light_falloff.h"
 
 namespace bounce {
-namespace {
-
-float brightest(glm::vec3 c) {
-  return std::max({c.r, c.g, c.b, 0.0f});
-}
-
-}  // namespace
 
 float largestPunctualIrradiance(const Light& light, glm::vec3 power, glm::vec3 p) {
-  const float strength = brightest(power);
+  const float strength = brightestChannel(power);
   if (light.type == LightType::Directional) return strength;
   const glm::vec3 toPoint = p - light.position;
   // A surface at the light itself could get any irradiance: a millimetre bounds the 1/d².
@@ -32,7 +26,7 @@ std::vector<float> punctualLightContributions(std::span<const Light> lights,
   for (std::size_t l = 0; l < lights.size(); ++l) {
     const Light& light = lights[l];
     const glm::vec3 drawn = l < power.size() ? power[l] : glm::vec3(0.0f);
-    if (brightest(drawn) <= 0.0f) continue;
+    if (brightestChannel(drawn) <= 0.0f) continue;
     float c = 0.0f;
     for (const ShadowReceivers::Dynamic& dynamic : receivers.dynamics) {
       if (dynamic.box.empty()) continue;

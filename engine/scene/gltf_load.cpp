@@ -172,11 +172,6 @@ std::string shortNumber(double v) {
   return text;
 }
 
-bool withinCoordinateLimit(const glm::dvec3& p) {
-  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
-         std::abs(p.z) <= kMaxCoordinate;
-}
-
 std::string coordinateLimitText() {
   return "beyond bounce's coordinate limit of 1e6 m (docs/input_limits.md)";
 }

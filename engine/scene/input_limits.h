@@ -3,7 +3,10 @@
 // are chosen so that every product the renderer and the tracer form stays finite in float.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+
+#include <glm/vec3.hpp>
 
 namespace bounce {
 
@@ -12,6 +15,10 @@ namespace bounce {
 // hold centimetre geometry, and squared distances (≤ (2√3·1e6)² = 1.2e13 m²) stay far from
 // float's 3.4e38.
 inline constexpr double kMaxCoordinate = 1e6;
+inline bool withinCoordinateLimit(const glm::dvec3& p) {
+  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
+         std::abs(p.z) <= kMaxCoordinate;
+}
 
 // Radiometric values after the photometric conversion (units.h), per channel:
 //   point/spot intensity (W/sr), directional irradiance (W/m²), emitted radiance (W/(sr·m²)).

@@ -99,11 +99,6 @@ Light lightOf(const std::filesystem::path& path, const json& entry) {
 // A wrapper is a few lines; anything larger is not one.
 constexpr std::size_t kMaxWrapperBytes = std::size_t{1} << 20;
 
-bool withinCoordinateLimit(glm::dvec3 p) {
-  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
-         std::abs(p.z) <= kMaxCoordinate;
-}
-
 bool withinRadiometricLimit(glm::vec3 v) {
   for (int i = 0; i < 3; ++i)
     if (!(v[i] >= 0.0f && v[i] <= kMaxRadiometric)) return false;
