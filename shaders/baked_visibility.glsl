@@ -15,7 +15,6 @@ uniform bool uHasBakedVisibility;     // this draw: a static instance, the bake 
 uniform int uBakedLightCount;         // static area lights the bake names (the first indices)
 uniform sampler2D uBakedVisibility;
 
-const float VISIBILITY_OTHER_LIGHTS = -2.0;
 
 struct BakedVisibilityTexels {
   vec4 lights[4];

@@ -1,11 +1,7 @@
 // The one light table (engine/render/light_table.h): an RGBA32F buffer texture with every
 // punctual light, then the VPLs, then the VPL cuts; no light kind has a fixed cap. Indices and
-// counts are stored as floats (exact below 2^24, the table's limit).
-
-const float PI = 3.14159265358979;
-const int LIGHT_POINT = 0;
-const int LIGHT_SPOT = 1;
-const int LIGHT_DIRECTIONAL = 2;
+// counts are stored as floats (exact below 2^24, the table's limit). PI and LIGHT_* come from the
+// C++ (engine/render/shader_constants.h).
 
 uniform samplerBuffer uLightTable;
 uniform int uPunctualCount;   // punctual lights at texels 0 .. 4·count − 1

@@ -21,16 +21,7 @@
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
 //   texel-density, cascades  false colours drawn by forward.frag (view_modes.glsl)
 // E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
-const int LIGHTING_FULL = 0;
-const int LIGHTING_DIRECT = 1;
-const int LIGHTING_INDIRECT = 2;
-const int LIGHTING_LIGHTMAP = 3;
-const int LIGHTING_CHARTS = 4;
-const int LIGHTING_VPL = 5;
-const int LIGHTING_VPL_CLAMP = 6;
-const int LIGHTING_ERROR = 7;
-const int LIGHTING_TEXEL_DENSITY = 8;
-const int LIGHTING_CASCADES = 9;
+// LIGHTING_* and LUMINANCE_WEIGHTS come from the C++ (engine/render/shader_constants.h).
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region
@@ -67,9 +58,9 @@ vec3 indirectIrradiance(vec2 atlasUv, vec3 vplIrradiance) {
   return uVplReceiver ? vplIrradiance : bakedIrradiance(atlasUv);
 }
 
-// Rec. 709 luminance: the weights of engine/image/luminance.h, which must stay equal to these.
+// Rec. 709 luminance: engine/image/luminance.h's weights.
 float luminance(vec3 c) {
-  return dot(c, vec3(0.2126, 0.7152, 0.0722));
+  return dot(c, LUMINANCE_WEIGHTS);
 }
 
 // Outgoing radiance for the current mode. `directIrradiance` is the live direct E (W/m²);

@@ -8,13 +8,11 @@ uniform int uView;             // 1 split, 2 difference
 uniform vec2 uFrameSize;       // pixels
 uniform vec2 uReferenceSize;   // pixels
 
-const float DIFFERENCE_FULL_SCALE = 0.5;  // kDifferenceFullScale
-const float DIFFERENCE_FLOOR = 1e-6;      // kDifferenceFloor
 
 out vec4 fragRadiance;
 
 float luminance(vec3 c) {
-  return dot(c, vec3(0.2126, 0.7152, 0.0722));  // engine/image/luminance.h's weights
+  return dot(c, LUMINANCE_WEIGHTS);  // engine/image/luminance.h's weights
 }
 
 void main() {

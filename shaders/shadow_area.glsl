@@ -21,8 +21,6 @@
 
 #include "cube_face.glsl"
 
-const int MAX_AREA_SHADOWS = 6;      // kMaxAreaShadows (render/area_shadow_maps.h)
-const int AREA_SHADOW_SAMPLES = 32;  // K, points per light (kAreaShadowSamples)
 
 uniform int uAreaShadowCount;  // slots [0, count) may hold a light (rows (0, 0): none)
 // Every slot's cube in one array, layer 6·slot + face (cube_face.glsl): distance from c / far,

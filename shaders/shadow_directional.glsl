@@ -14,7 +14,6 @@
 // maps (uShadowFilter: one hardware 2×2 tap, or 16 rotated Poisson taps of R texels), R in
 // texels of each cascade. Needs shadow_common.glsl.
 
-const int MAX_CASCADES = 4;  // kMaxCascades
 
 uniform int uCascadeCount;  // 0: no directional light is shadowed
 uniform sampler2DShadow uCascadeMap;

@@ -1,6 +1,5 @@
 // Point-light shadows: a cube map around the light storing distance/far
 // (engine/render/point_shadow_maps.h). Needs shadow_common.glsl.
-const int MAX_POINT_SHADOWS = 2;  // engine/render/texture_units.h: kMaxPointShadows
 
 uniform samplerCubeShadow uPointShadowMap[MAX_POINT_SHADOWS];
 // x: texel edge per metre of distance (2/resolution at a face's centre), y: far (m),

@@ -1,6 +1,5 @@
 // Spot-light shadows: a perspective map along the spot's axis storing distance/far
 // (engine/render/spot_shadow_maps.h). Needs shadow_common.glsl.
-const int MAX_SPOT_SHADOWS = 4;  // engine/render/texture_units.h: kMaxSpotShadows
 
 uniform sampler2DShadow uSpotShadowMap[MAX_SPOT_SHADOWS];
 uniform mat4 uSpotShadowMatrix[MAX_SPOT_SHADOWS];  // world → the map's clip space

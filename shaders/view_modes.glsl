@@ -1,13 +1,11 @@
 // The inspection views texel-density and cascades (engine/render/view_mode_colours.h says what
-// they show; its colours and these must stay equal). Needs lightmap.glsl (uHasLightmap,
+// they show; its colour formulas and these must stay equal). Needs lightmap.glsl (uHasLightmap,
 // uLightmapSize) and shadow_directional.glsl (the cascades' view depths).
 
 uniform float uTargetTexelsPerMetre;  // 1 / the bake's texel size (m)
 
-const vec3 CASCADE_COLOURS[4] =
-    vec3[4](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 0.0));
-const float TEXEL_CHECKER_DARK = 0.55;
-const float NO_LIGHTMAP_GREY = 0.18;
+// CASCADE_COLOURS, TEXEL_CHECKER_DARK and NO_LIGHTMAP_GREY come from view_mode_colours.h
+// (engine/render/shader_constants.h).
 
 // Lightmap texels per metre on the triangle: the square root of the atlas area (texels²) over
 // the world area (m²) of the same screen footprint. Both the atlas UV and the position are affine

@@ -5,7 +5,6 @@
 #include "shadow_common.glsl"
 #include "cube_face.glsl"
 
-const int MAX_VPL_SHADOW_CUBES = 256;  // kMaxVplShadowCubes
 
 uniform sampler2DArrayShadow uVplShadowMap;
 uniform int uVplShadowEnabled;  // 0: every group sees everything (visibility 1)

@@ -23,8 +23,8 @@ std::string infoLog(GLuint object, bool isProgram) {
   return log;
 }
 
-GLuint compile(GLenum stage, const std::filesystem::path& file) {
-  const ShaderSource source = readShaderSource(file);
+GLuint compile(GLenum stage, const std::filesystem::path& file, const ShaderDefines& defines) {
+  const ShaderSource source = readShaderSource(file, defines);
   const GLuint shader = glCreateShader(stage);
   const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -62,19 +62,20 @@ std::filesystem::path shaderDirectory() {
                     candidates[1].string() + " (set BOUNCE_SHADER_DIR)");
 }
 
-Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile)
-    : Program(vertexFile, {}, fragmentFile) {}
+Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+                 const ShaderDefines& defines)
+    : Program(vertexFile, std::filesystem::path{}, fragmentFile, defines) {}
 
 Program::Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
-                 const std::filesystem::path& fragmentFile) {
+                 const std::filesystem::path& fragmentFile, const ShaderDefines& defines) {
   std::vector<GLuint> stages;
   const auto release = [&] {
     for (const GLuint stage : stages) glDeleteShader(stage);
   };
   try {
-    stages.push_back(compile(GL_VERTEX_SHADER, vertexFile));
-    if (!geometryFile.empty()) stages.push_back(compile(GL_GEOMETRY_SHADER, geometryFile));
-    stages.push_back(compile(GL_FRAGMENT_SHADER, fragmentFile));
+    stages.push_back(compile(GL_VERTEX_SHADER, vertexFile, defines));
+    if (!geometryFile.empty()) stages.push_back(compile(GL_GEOMETRY_SHADER, geometryFile, defines));
+    stages.push_back(compile(GL_FRAGMENT_SHADER, fragmentFile, defines));
   } catch (...) {
     release();
     throw;

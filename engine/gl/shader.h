@@ -23,10 +23,12 @@ std::filesystem::path shaderDirectory();
 class Program {
  public:
   // Compiles and links; throws ShaderError with "file:line: message" lines from the driver.
-  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile);
+  // `defines` go into every stage (shader_source.h).
+  Program(const std::filesystem::path& vertexFile, const std::filesystem::path& fragmentFile,
+          const ShaderDefines& defines = {});
   // With a geometry shader between them (none when `geometryFile` is empty).
   Program(const std::filesystem::path& vertexFile, const std::filesystem::path& geometryFile,
-          const std::filesystem::path& fragmentFile);
+          const std::filesystem::path& fragmentFile, const ShaderDefines& defines = {});
   ~Program();
   Program(Program&& other) noexcept;
   Program& operator=(Program&& other) noexcept;

@@ -20,7 +20,8 @@ std::string readFile(const std::filesystem::path& file, const std::string& conte
   return text.str();
 }
 
-void expand(const std::filesystem::path& file, const std::string& context, ShaderSource& out) {
+void expand(const std::filesystem::path& file, const std::string& context, ShaderSource& out,
+            const ShaderDefines& defines) {
   const auto index = out.files.size();
   out.files.push_back(file);
   std::istringstream lines(readFile(file, context));
@@ -33,13 +34,18 @@ void expand(const std::filesystem::path& file, const std::string& context, Shade
     std::smatch match;
     if (!std::regex_match(line, match, includeLine)) {
       out.text += line + "\n";
+      if (index == 0 && !defines.empty() && line.rfind("#version", 0) == 0) {
+        for (const ShaderDefine& d : defines)
+          out.text += "#define " + d.name + " " + d.value + "\n";
+        out.text += "#line " + std::to_string(number + 1) + " 0\n";
+      }
       continue;
     }
     const std::filesystem::path included = file.parent_path() / match[1].str();
     const bool seen = std::find(out.files.begin(), out.files.end(), included) != out.files.end();
     if (!seen) {
       out.text += "#line 1 " + std::to_string(out.files.size()) + "\n";
-      expand(included, file.string() + ":" + std::to_string(number) + ": ", out);
+      expand(included, file.string() + ":" + std::to_string(number) + ": ", out, defines);
     }
     // GLSL 3.30: the line after `#line L S` is line L of string S.
     out.text += "#line " + std::to_string(number + 1) + " " + std::to_string(index) + "\n";
@@ -48,9 +54,9 @@ void expand(const std::filesystem::path& file, const std::string& context, Shade
 
 }  // namespace
 
-ShaderSource readShaderSource(const std::filesystem::path& file) {
+ShaderSource readShaderSource(const std::filesystem::path& file, const ShaderDefines& defines) {
   ShaderSource source;
-  expand(file, "", source);
+  expand(file, "", source, defines);
   return source;
 }
 

@@ -17,13 +17,23 @@ class ShaderError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A constant the C++ hands every stage of a program as `#define NAME VALUE`, written after the
+// `#version` line (so GLSL files hold no copy of a value the C++ owns).
+struct ShaderDefine {
+  std::string name;
+  std::string value;
+};
+using ShaderDefines = std::vector<ShaderDefine>;
+
 struct ShaderSource {
   std::string text;                          // the expanded GLSL
   std::vector<std::filesystem::path> files;  // source-string number -> file
 };
 
 // Throws ShaderError naming the missing or unreadable file (and the including file and line).
-ShaderSource readShaderSource(const std::filesystem::path& file);
+// The defines go after the file's `#version` line (a file without one gets none), and the line
+// after them is numbered as the file's next line.
+ShaderSource readShaderSource(const std::filesystem::path& file, const ShaderDefines& defines = {});
 
 // Rewrites a driver log's "S:L(C): msg" (Mesa) and "S(L) : msg" (NVIDIA/AMD) prefixes to
 // "file:L: msg"; lines it cannot attribute are kept as they are.

@@ -1,6 +1,7 @@
 #include "render/directional_shadow_maps.h"
 
 #include "gl/draw_state.h"
+#include "render/shader_constants.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -16,7 +17,8 @@ DirectionalShadowMaps::DirectionalShadowMaps(const ShadowSettings& settings,
 int DirectionalShadowMaps::add(const Light& light) {
   if (!settings_.enabled || light_) return -1;
   light_ = light;
-  depth_.emplace(shaderDir_ / "shadow_depth.vert", shaderDir_ / "shadow_directional_depth.frag");
+  depth_.emplace(shaderDir_ / "shadow_depth.vert", shaderDir_ / "shadow_directional_depth.frag",
+                 shaderConstants());
   atlas_.emplace(2 * cascadeSettings_.resolution, 2 * cascadeSettings_.resolution);
   return 0;
 }

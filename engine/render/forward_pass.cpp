@@ -1,13 +1,14 @@
 #include "render/forward_pass.h"
 
 #include "gl/draw_state.h"
+#include "render/shader_constants.h"
 #include "render/texture_units.h"
 
 namespace bounce {
 
 ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
-    : program_(shaderDir / "forward.vert", shaderDir / "forward.geom", shaderDir / "forward.frag") {
-}
+    : program_(shaderDir / "forward.vert", shaderDir / "forward.geom", shaderDir / "forward.frag",
+               shaderConstants()) {}
 
 void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
                        const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,

@@ -2,6 +2,7 @@
 
 #include "bake_folder/lightmap_charts.h"
 #include "bake_folder/texel_error.h"
+#include "render/shader_constants.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -9,32 +10,32 @@ namespace {
 
 const glm::vec3 kBlack(0.0f);
 
-// The LIGHTING_* constants of shaders/lightmap.glsl.
-int lightingModeIndex(RenderMode mode) {
+// The lighting the lit pass draws for each render mode (shader_constants.h).
+ShaderLighting shaderLighting(RenderMode mode) {
   switch (mode) {
     case RenderMode::Full:
-      return 0;
+      return ShaderLighting::Full;
     case RenderMode::Direct:
-      return 1;
+      return ShaderLighting::Direct;
     case RenderMode::Indirect:
-      return 2;
+      return ShaderLighting::Indirect;
     case RenderMode::Lightmap:
-      return 3;
+      return ShaderLighting::Lightmap;
     case RenderMode::Charts:
-      return 4;
+      return ShaderLighting::Charts;
     case RenderMode::Vpl:
-      return 5;
+      return ShaderLighting::Vpl;
     case RenderMode::VplClamp:
-      return 6;
+      return ShaderLighting::VplClamp;
     case RenderMode::Error:
     case RenderMode::Validity:
-      return 7;  // both read their colours from the chart unit
+      return ShaderLighting::Error;  // both read their colours from the chart unit
     case RenderMode::TexelDensity:
-      return 8;
+      return ShaderLighting::TexelDensity;
     case RenderMode::Cascades:
-      return 9;
+      return ShaderLighting::Cascades;
   }
-  return 1;
+  return ShaderLighting::Direct;
 }
 
 }  // namespace
@@ -109,7 +110,9 @@ void LightmapPass::attachVisibility(const Bake& bake) {
     glm::vec4 lights, visible;
     for (int s = 0; s < kVisibilitySlots; ++s) {
       const uint16_t l = texel.light[s];
-      lights[s] = l == kNoLight ? -1.0f : l == kOtherLights ? -2.0f : static_cast<float>(l);
+      lights[s] = l == kNoLight       ? -1.0f
+                  : l == kOtherLights ? kVisibilityOtherLightsCode
+                                      : static_cast<float>(l);
       visible[s] = texel.visible[s];
     }
     table[2 * t] = lights;
@@ -138,9 +141,9 @@ std::size_t LightmapPass::bakedVisibilityLights(const GpuScene& scene) const {
 
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   // Without a bake only the modes that need none are drawn as asked.
-  program.set(
-      "uLightingMode",
-      lightingModeIndex(attached_ || !renderModeNeedsBake(mode) ? mode : RenderMode::Direct));
+  program.set("uLightingMode",
+              static_cast<int>(shaderLighting(
+                  attached_ || !renderModeNeedsBake(mode) ? mode : RenderMode::Direct)));
   program.set("uTargetTexelsPerMetre", targetTexelsPerMetre_);
   program.set("uLightmap", TextureUnit::kLightmap);
   program.set("uLightmapCharts", TextureUnit::kLightmapCharts);

@@ -4,11 +4,13 @@
 #include <string>
 
 #include "gl/draw_state.h"
+#include "render/shader_constants.h"
 
 namespace bounce {
 
 ReferenceComparePass::ReferenceComparePass(const std::filesystem::path& shaderDir)
-    : program_(shaderDir / "fullscreen.vert", shaderDir / "reference_compare.frag") {}
+    : program_(shaderDir / "fullscreen.vert", shaderDir / "reference_compare.frag",
+               shaderConstants()) {}
 
 void ReferenceComparePass::setReference(const Image& reference) {
   if (reference.width <= 0 || reference.height <= 0)

@@ -4,6 +4,7 @@
 
 #include "gl/draw_state.h"
 #include "render/punctual_shadow_budget.h"
+#include "render/shader_constants.h"
 #include "render/shadow_receivers.h"
 #include "render/texture_units.h"
 
@@ -13,7 +14,7 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                        const ShadowSettings& settings, const std::filesystem::path& shaderDir,
                        std::vector<std::string>& warnings)
     : settings_(settings),
-      depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag"),
+      depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag", shaderConstants()),
       lightSlot_(lights.size(), -1),
       spot_(settings),
       point_(settings),

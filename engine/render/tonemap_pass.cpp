@@ -2,6 +2,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/shader.h"
+#include "render/shader_constants.h"
 
 namespace bounce {
 
@@ -10,8 +11,8 @@ struct TonemapPass::Gpu {
 };
 
 TonemapPass::TonemapPass(const std::filesystem::path& shaderDir)
-    : gpu_(std::make_unique<Gpu>(
-          Gpu{gl::Program(shaderDir / "fullscreen.vert", shaderDir / "tonemap.frag")})) {}
+    : gpu_(std::make_unique<Gpu>(Gpu{gl::Program(
+          shaderDir / "fullscreen.vert", shaderDir / "tonemap.frag", shaderConstants())})) {}
 
 TonemapPass::~TonemapPass() = default;
 

@@ -1,5 +1,6 @@
 // The false colours of the renderer's inspection views texel-density and cascades, GL-free; the
-// shader shaders/view_modes.glsl computes the same colours and must stay equal to these. They
+// shader shaders/view_modes.glsl computes the same colours (its constants are these, handed to it
+// by render/shader_constants.h; its formulas must stay equal to these). They
 // are the views' output radiance in W/(sr·m²), as the chart view's are: a picture, not light.
 //
 // texel-density (as Unreal's lightmap density view): the lightmap texels per metre d on the

@@ -8,6 +8,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/texture.h"
+#include "render/shader_constants.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
 
@@ -135,7 +136,8 @@ VplShadowCubes vplShadowCubes(const VplGroups& groups, int cubesPerGroup) {
 VplShadowMaps::VplShadowMaps(const VplShadowSettings& settings,
                              const std::filesystem::path& shaderDir)
     : settings_(settings),
-      depth_(shaderDir / "shadow_depth.vert", shaderDir / "vpl_shadow_depth.frag") {
+      depth_(shaderDir / "shadow_depth.vert", shaderDir / "vpl_shadow_depth.frag",
+             shaderConstants()) {
   if (settings_.resolution <= 0)
     throw std::invalid_argument("VPL shadow map resolution " +
                                 std::to_string(settings_.resolution) + " (must be positive)");

@@ -1,5 +1,7 @@
 #include "render/vpl_visibility_probe.h"
 
+#include "render/shader_constants.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -10,7 +12,8 @@
 namespace bounce {
 
 VplVisibilityProbe::VplVisibilityProbe(const std::filesystem::path& shaderDir)
-    : program_(shaderDir / "fullscreen.vert", shaderDir / "vpl_visibility_probe.frag") {}
+    : program_(shaderDir / "fullscreen.vert", shaderDir / "vpl_visibility_probe.frag",
+               shaderConstants()) {}
 
 std::vector<float> VplVisibilityProbe::read(const VplShadowMaps& maps, int group,
                                             std::span<const glm::vec3> positions,

@@ -63,6 +63,44 @@ TEST(Shader, ErrorInIncludedFileNamesThatFileAndItsLine) {
   EXPECT_NE(error.find(fragment.string() + ":5:"), std::string::npos) << error;
 }
 
+// The C++'s constants go right after #version, in every stage; a compile error after them is
+// still reported at its own line of its own file.
+TEST(Shader, DefinesFollowTheVersionLineAndKeepLineNumbers) {
+  testContext();
+  const ScratchDir dir("defines");
+  const auto included = dir.write("uses.glsl", "float twice() { return 2.0 * HALF; }\n");
+  const auto fragment =
+      dir.write("main.frag",
+                "#version 330 core\n"
+                "#include \"uses.glsl\"\n"
+                "out vec4 color;\n"
+                "void main() { color = vec4(twice(), float(COUNT), 0.0, 1.0); }\n");
+  const ShaderDefines defines = {{"HALF", "0.5"}, {"COUNT", "3"}};
+  const ShaderSource source = readShaderSource(fragment, defines);
+  EXPECT_EQ(
+      source.text.rfind("#version 330 core\n#define HALF 0.5\n#define COUNT 3\n#line 2 0\n", 0), 0u)
+      << source.text;
+  EXPECT_EQ(source.text.find("#define", source.text.find("#line 1 1")), std::string::npos)
+      << "an included file got the defines again:\n"
+      << source.text;
+  const auto vertex = dir.write("ok.vert", kVertex);
+  EXPECT_NO_THROW(Program(vertex, fragment, defines)) << "the defines did not reach the compiler";
+  // Without them the names are undeclared, reported at their own file and line.
+  const std::string error = buildError(vertex, fragment);
+  EXPECT_NE(error.find(included.string() + ":1:"), std::string::npos) << error;
+  const auto broken = dir.write("broken.frag",
+                                "#version 330 core\n"
+                                "out vec4 color;\n"
+                                "void main() { color = vec4(HALF) + undeclared; }\n");  // line 3
+  std::string brokenError;
+  try {
+    Program program(vertex, broken, defines);
+  } catch (const ShaderError& e) {
+    brokenError = e.what();
+  }
+  EXPECT_NE(brokenError.find(broken.string() + ":3:"), std::string::npos) << brokenError;
+}
+
 TEST(Shader, MissingFileNamesThePath) {
   testContext();
   const ScratchDir dir("missing");
