@@ -32,6 +32,26 @@ void checkManifestRules(const std::filesystem::path& manifestFile, const Bake& b
                                         ", the bake's settings.targetError is " +
                                         shortNumber(m.settings.targetError));
 
+  // The error summary is of error.exr's estimates (the lit, unfilled ones among them): its p95 is
+  // one of them and its mean lies within them; 0 and 0 where no texel was lit.
+  const BakeManifest::EstimatedError& e = m.estimatedError;
+  if (bake.relativeError && !(e.mean == 0.0 && e.p95 == 0.0)) {
+    float lowest = kMaxRelativeError, highest = 0.0f;
+    bool p95Found = false;
+    for (const glm::vec3& texel : bake.relativeError->pixels) {
+      if (texel.r == kNoErrorEstimate) continue;
+      lowest = std::min(lowest, texel.r);
+      highest = std::max(highest, texel.r);
+      p95Found = p95Found || static_cast<double>(texel.r) == e.p95;
+    }
+    if (!p95Found)
+      refuse("estimatedError.p95",
+             shortNumber(e.p95) + ", not the estimate of any texel of " + "error.exr");
+    if (!(lowest <= e.mean && e.mean <= highest))
+      refuse("estimatedError.mean", shortNumber(e.mean) + ", outside error.exr's estimates " +
+                                        shortNumber(lowest) + " .. " + shortNumber(highest));
+  }
+
   // Samples per texel: the mean is the total over the texels with samples of their own.
   const BakeManifest::Samples& s = m.samples;
   const uint64_t valid = m.atlas.coveredTexels >= m.atlas.invalidTexels

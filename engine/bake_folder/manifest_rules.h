@@ -1,9 +1,9 @@
 // bake.json's numbers that a reader uses, against the rules bounce-bake made them by: bake.json
 // has no hash of its own (it holds the others'), so a number some reader takes from it (the
 // renderer's VPL clamp and path count, the VPL re-trace's cap, error target and seed, the error
-// view's target, the viewer's samples per texel) is accepted only where bounce-bake could have
-// written it for this scene and these files (docs/bake_folder.md, "What guards each number").
-// GL-free.
+// view's target, the panel's samples per texel and error summary) is accepted only where
+// bounce-bake could have written it for this scene and these files (docs/bake_folder.md, "What
+// guards each number"). GL-free.
 #pragma once
 
 #include <filesystem>
@@ -27,6 +27,7 @@ inline constexpr double kManifestRuleTolerance = 1e-5;
 //   vpls.paths            ≥ the paths the VPLs come from (0 where the manifest is hand-made:
 //                         no settingsHash; the renderer then counts them)
 //   estimatedError.target = settings.targetError
+//   estimatedError.p95    one of error.exr's texels, and .mean within their range (or both 0)
 //   samples.perTexelMean  = samples.total / (atlas.coveredTexels − atlas.invalidTexels), and
 //                           perTexelMin ≤ mean ≤ perTexelMax
 // `bake` is what readBake read (its files already checked against their hashes and formats).

@@ -615,6 +615,10 @@ if os.path.isdir(VALID):
               bake_json=manifest_with(vpls=dict(manifest["vpls"], paths=52)))
     bake_case("manifest_error_target_other", "error", "\"estimatedError.target\" is 1e-09, the bake's settings.targetError is 0.1",
               bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], target=1e-9)))
+    bake_case("manifest_error_p95_other", "error", "\"estimatedError.p95\" is 0.123456, not the estimate of any texel of error.exr",
+              bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], p95=0.123456)))
+    bake_case("manifest_error_mean_over", "error", "\"estimatedError.mean\" is 1000, outside error.exr's estimates",
+              bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], mean=1000.0)))
     bake_case("manifest_samples_mean_other", "error", "\"samples.perTexelMean\" is 1e+06, samples.total / (covered - invalid texels) is 16",
               bake_json=manifest_with(samples=dict(manifest["samples"], perTexelMean=1e6)))
     bake_case("manifest_samples_min_over_mean", "error", "\"samples.perTexelMean\" is 16, outside perTexelMin 17 .. perTexelMax 16",
