@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "bake_folder/vpl_clamp.h"
+#include "image/luminance.h"
 #include "scene/load_error.h"
 
 namespace bounce {
@@ -87,9 +89,25 @@ void checkManifestRules(const std::filesystem::path& manifestFile, const Bake& b
   // hand-made manifest (no settingsHash) leaves it 0, for the renderer to count.
   uint64_t paths = 0;
   for (const Vpl& vpl : *bake.vpls) paths = std::max<uint64_t>(paths, uint64_t{vpl.path} + 1);
-  if ((v.paths != 0 || !m.settingsHash.empty()) && v.paths < paths)
+  if (v.paths == 0 && m.settingsHash.empty()) return;
+  if (v.paths < paths)
     refuse("vpls.paths", std::to_string(v.paths) + ", fewer than the " + std::to_string(paths) +
                              " paths the vpls file's VPLs come from");
+  // The count N the generator's relative error was computed with (vpl_generate.h): with T_i
+  // path i's VPL flux (luminance, W) as filed (Φ = β·ρ/N), F = Σ T_i and Q = Σ T_i², the error
+  // r² = (N·Q − F²) / ((N − 1)·F²) gives N = F²(1 − r²) / (Q − r²F²). Paths without a VPL have
+  // T = 0 and count only through N.
+  std::vector<double> pathFlux(paths, 0.0);
+  for (const Vpl& vpl : *bake.vpls) pathFlux[vpl.path] += luminance(glm::dvec3(vpl.flux));
+  double f = 0.0, q = 0.0;
+  for (const double t : pathFlux) f += t, q += t * t;
+  const double r2 = v.relativeError * v.relativeError;
+  const double n = f * f * (1.0 - r2) / (q - r2 * f * f);
+  if (f > 0.0 && !(std::abs(n - static_cast<double>(v.paths)) <=
+                   std::max(0.5, 1e-4 * static_cast<double>(v.paths))))
+    refuse("vpls.paths", std::to_string(v.paths) + ", the vpls file's flux and " +
+                             "vpls.relativeError " + shortNumber(v.relativeError) + " give " +
+                             shortNumber(n) + " paths");
 }
 
 }  // namespace bounce

@@ -24,8 +24,10 @@ inline constexpr double kManifestRuleTolerance = 1e-5;
 //                           from before settings.lightChoice: of the settings without it)
 //   vpls.clampDistance    = vplClampDistance(staticSurfaceArea(scene), vpls.count) (vpl_clamp.h)
 //   vpls.cap              = settings.vpls;  vpls.errorTarget = settings.vplError
-//   vpls.paths            ≥ the paths the VPLs come from (0 where the manifest is hand-made:
-//                         no settingsHash; the renderer then counts them)
+//   vpls.paths            ≥ the paths the VPLs come from, and = the N that the VPLs' flux and
+//                         vpls.relativeError give (the generator's error formula solved for N)
+//                         (0 where the manifest is hand-made, no settingsHash: the renderer
+//                         then counts the paths)
 //   estimatedError.target = settings.targetError
 //   estimatedError.p95    one of error.exr's texels, and .mean within their range (or both 0)
 //   samples.perTexelMean  = samples.total / (atlas.coveredTexels − atlas.invalidTexels), and

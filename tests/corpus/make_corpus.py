@@ -613,6 +613,10 @@ if os.path.isdir(VALID):
               bake_json=manifest_with(vpls=dict(manifest["vpls"], errorTarget=0.5)))
     bake_case("manifest_vpl_paths_fewer", "error", "\"vpls.paths\" is 52, fewer than the 53 paths",
               bake_json=manifest_with(vpls=dict(manifest["vpls"], paths=52)))
+    bake_case("manifest_vpl_paths_more", "error", "\"vpls.paths\" is 5300, the vpls file's flux and vpls.relativeError 0.253008 give 53 paths",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], paths=5300)))
+    bake_case("manifest_vpl_relative_error_other", "error", "\"vpls.paths\" is 53, the vpls file's flux and vpls.relativeError 0.5 give",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], relativeError=0.5)))
     bake_case("manifest_error_target_other", "error", "\"estimatedError.target\" is 1e-09, the bake's settings.targetError is 0.1",
               bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], target=1e-9)))
     bake_case("manifest_error_p95_other", "error", "\"estimatedError.p95\" is 0.123456, not the estimate of any texel of error.exr",
