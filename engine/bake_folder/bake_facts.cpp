@@ -29,8 +29,9 @@ BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
   // these figures, and zeros would be shown as if measured.
   const BakeManifest& m = bake.manifest;
   if (!m.settingsHash.empty()) {
-    f.utilisation = m.atlas.utilisation;
-    f.charts = m.atlas.charts;
+    // The atlas figures from layout.bin, which its hash guards (bake.json repeats them).
+    f.utilisation = bake.layout.utilisation;
+    f.charts = bake.layout.chartCount;
     f.samplesPerTexel = m.samples.perTexelMean;
     f.errorMean = m.estimatedError.mean;
     f.errorP95 = m.estimatedError.p95;

@@ -21,6 +21,7 @@
 
 #include "bake_folder/bake_input_file.h"
 #include "bake_folder/byte_stream.h"
+#include "bake_folder/manifest_rules.h"
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
 #include "image/atomic_file.h"
@@ -396,6 +397,7 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                           std::to_string(scene.lights.size()) + ": rebake");
   }
   if (const auto why = disagreement(manifest, bake)) throw LoadError(dir / why->first, why->second);
+  checkManifestRules(manifestFile, bake, scene);
   return bake;
 }
 

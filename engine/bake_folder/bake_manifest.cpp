@@ -200,6 +200,13 @@ std::string settingsHash(const BakeManifest::Settings& settings) {
   return fnv1a64Hex({reinterpret_cast<const unsigned char*>(text.data()), text.size()});
 }
 
+std::string settingsHashWithoutLightChoice(const BakeManifest::Settings& settings) {
+  Json json = settingsJson(settings);
+  json.erase("lightChoice");
+  const std::string text = json.dump();
+  return fnv1a64Hex({reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+}
+
 std::string manifestText(const BakeManifest& m) {
   const BakeManifest::Atlas& a = m.atlas;
   const BakeManifest::Measured::Seconds& t = m.measured.seconds;

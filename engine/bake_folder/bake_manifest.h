@@ -130,6 +130,9 @@ struct BakeManifest {
 
 // FNV-1a 64 of the settings' JSON (bake.json's "settingsHash"), 16 hex digits.
 std::string settingsHash(const BakeManifest::Settings& settings);
+// The same without lightChoice: the hash of bake.json files written before it existed (which
+// mean "power").
+std::string settingsHashWithoutLightChoice(const BakeManifest::Settings& settings);
 
 // bake.json's text: deterministic (keys sorted, numbers in shortest round-trip form), one
 // newline at the end.

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/bake_folder.h"
+#include "bake_folder/vpl_clamp.h"
 #include "image/image_io.h"
 #include "scene/load_error.h"
 
@@ -654,7 +655,9 @@ TEST_F(BakeRejection, ManifestFieldsOutOfRange) {
   withVpls.vpls = std::vector<Vpl>(1, Vpl{{0, 1, 0}, {0, -1, 0}, {1, 1, 1}});
   withVpls.manifest.vpls = BakeManifest::Vpls{.count = 1};
   writeBake(dir_, withVpls);
-  rewriteManifest([](BakeManifest& m) { m.vpls->clampDistance = 0.5; });
+  // The clamp bounce-bake writes for the scene's static area and one VPL (vpl_clamp.h).
+  const double rule = vplClampDistance(staticSurfaceArea(scene_), 1);
+  rewriteManifest([&](BakeManifest& m) { m.vpls->clampDistance = rule; });
   EXPECT_EQ(readError(dir_, scene_), "");
   rewriteManifest([](BakeManifest& m) { m.vpls->clampDistance = 1e39; });
   expectRefused("bake.json", "\"vpls.clampDistance\" is 1e+39, out of range [0, 1e+06]");

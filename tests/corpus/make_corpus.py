@@ -598,6 +598,35 @@ if os.path.isdir(VALID):
               bake_json=manifest_with(vpls=dict(manifest["vpls"], clampDistance=1e39)))
     bake_case("manifest_vpl_count_other", "error", "vpls: holds 16 VPLs, bake.json says 17",
               bake_json=manifest_with(vpls=dict(manifest["vpls"], count=17)))
+    # Numbers in range that bounce-bake could not have written for this scene and these files
+    # (engine/bake_folder/manifest_rules.h): the VPL clamp against its rule sqrt(A/(pi N)) (1e-45
+    # drew the unclamped singularities), the settings against their hash, the VPL cap, error
+    # targets and path count against the settings and the vpls file, the samples' mean.
+    for name, r in (("1e_45", 1e-45), ("0", 0.0), ("doubled", 2 * manifest["vpls"]["clampDistance"])):
+        bake_case("manifest_clamp_" + name, "error", "\"vpls.clampDistance\" is %s m, the bake's rule sqrt(A/(pi N)) gives 0.402912 m" % ("%g" % r),
+                  bake_json=manifest_with(vpls=dict(manifest["vpls"], clampDistance=r)))
+    bake_case("manifest_settings_seed_unhashed", "error", "\"settingsHash\" is %s, the settings hash to" % manifest["settingsHash"],
+              bake_json=manifest_with(settings=dict(manifest["settings"], seed=7)))
+    bake_case("manifest_vpl_cap_other", "error", "\"vpls.cap\" is 4096, the bake's settings.vpls is 16",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], cap=4096)))
+    bake_case("manifest_vpl_error_target_other", "error", "\"vpls.errorTarget\" is 0.5, the bake's settings.vplError is 0.01",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], errorTarget=0.5)))
+    bake_case("manifest_vpl_paths_fewer", "error", "\"vpls.paths\" is 52, fewer than the 53 paths",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], paths=52)))
+    bake_case("manifest_vpl_paths_more", "error", "\"vpls.paths\" is 5300, the vpls file's flux and vpls.relativeError 0.253008 give 53 paths",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], paths=5300)))
+    bake_case("manifest_vpl_relative_error_other", "error", "\"vpls.paths\" is 53, the vpls file's flux and vpls.relativeError 0.5 give",
+              bake_json=manifest_with(vpls=dict(manifest["vpls"], relativeError=0.5)))
+    bake_case("manifest_error_target_other", "error", "\"estimatedError.target\" is 1e-09, the bake's settings.targetError is 0.1",
+              bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], target=1e-9)))
+    bake_case("manifest_error_p95_other", "error", "\"estimatedError.p95\" is 0.123456, not the estimate of any texel of error.exr",
+              bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], p95=0.123456)))
+    bake_case("manifest_error_mean_over", "error", "\"estimatedError.mean\" is 1000, outside error.exr's estimates",
+              bake_json=manifest_with(estimatedError=dict(manifest["estimatedError"], mean=1000.0)))
+    bake_case("manifest_samples_mean_other", "error", "\"samples.perTexelMean\" is 1e+06, samples.total / (covered - invalid texels) is 16",
+              bake_json=manifest_with(samples=dict(manifest["samples"], perTexelMean=1e6)))
+    bake_case("manifest_samples_min_over_mean", "error", "\"samples.perTexelMean\" is 16, outside perTexelMin 17 .. perTexelMax 16",
+              bake_json=manifest_with(samples=dict(manifest["samples"], perTexelMin=17)))
     bake_case("manifest_other_scene", "error", "stale bake: it does not match the scene (every part's hash matches", bake_json=manifest_with(sceneHash="0123456789abcdef"))
     bake_case("manifest_hash_number", "error", "no string \"sceneHash\"", bake_json=manifest_with(sceneHash=12))
     bake_case("layout_missing", "error", "layout.bin: missing", layout_bin=None)

@@ -311,5 +311,57 @@ TEST(TileJournalFile, KeepsTheWholeRecordsAndRefusesAnotherBakesJournal) {
   fs::remove(file);
 }
 
+// A bake's journal cut to its first half of tiles (what a kill leaves: whole records in the
+// order they finished), the scene file then edited in place (the green wall's albedo: the same
+// path, the same atlas, another scene hash), resumed: the journal's tiles are of the old scene,
+// so the resume must refuse the journal, naming it and the scene hash, or start over and give a
+// fresh bake's bytes; it must never restore them beside tiles of the new scene.
+// Injected: the journal key without "sceneHash": the resume restored the old tiles and the
+// lightmap differed from a fresh bake's.
+TEST(TileJournalFile, AResumeAfterTheSceneFileChangedNeverMixesTheTwoScenes) {
+  const fs::path dir = fs::temp_directory_path() / "bounce_tiles_scene_changed";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path sceneFile = dir / "box.gltf";
+  fs::copy_file(kCornell, sceneFile);
+  SceneBakeSettings settings;
+  settings.texelBudget = 1024;
+  settings.spp = 32;
+  settings.vpls = 0;
+  settings.tileSize = 8;
+  settings.threads = 1;
+  settings.journal = dir / "box.bake.journal";
+  bakeScene(loadScene(sceneFile), settings, nullptr);  // the library leaves its journal
+  {
+    const TileJournal whole = readTileJournal(settings.journal);
+    ASSERT_GE(whole.records.size(), 8u);
+    TileJournalWriter cut(settings.journal, whole.key);
+    for (std::size_t r = 0; r < whole.records.size() / 2; ++r) cut.append(whole.records[r]);
+  }
+
+  nlohmann::json gltf = nlohmann::json::parse(test::readText(sceneFile));
+  for (nlohmann::json& material : gltf["materials"])
+    if (material["name"] == "green")
+      material["pbrMetallicRoughness"]["baseColorFactor"] = {0.45, 0.14, 0.091, 1.0};
+  std::ofstream(sceneFile, std::ios::trunc) << gltf.dump();
+  const Scene changed = loadScene(sceneFile);
+
+  SceneBakeSettings fresh = settings;
+  fresh.journal.clear();
+  const SceneBake expected = bakeScene(changed, fresh, nullptr);
+  settings.resume = true;
+  try {
+    const SceneBake resumed = bakeScene(changed, settings, nullptr);
+    EXPECT_EQ(resumed.tilesRestored, 0) << "restored tiles of the scene before its change";
+    EXPECT_TRUE(resumed.folder.irradiance.pixels == expected.folder.irradiance.pixels)
+        << "the lightmap mixes tiles of the two scenes";
+  } catch (const LoadError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find(settings.journal.string()), std::string::npos) << why;
+    EXPECT_NE(why.find("sceneHash"), std::string::npos) << why;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace bounce

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "support/form_factors.h"
 #include "test_scenes.h"
 
@@ -101,6 +103,37 @@ TEST(AreaLight, EmitterPartlyBelowHorizonIsClipped) {
     const glm::vec3 next = c + u;
     u = std::exchange(v, -u);
     c = next;
+  }
+}
+
+// The same straddling wall and floor, the whole scene and camera turned about an oblique axis:
+// the floor's horizon plane is then no world plane and the wall's edges cross it at slants, so
+// the clip must be against the receiver's own plane n·(x − p) = 0. Radiometry does not change
+// under a rotation: each pixel still sees the closed form of the unturned scene. Injected: the
+// clip against the world's y = 0 instead (the heights a.y, b.y, c.y for n·a, n·b, n·c): fails
+// here, passes the test above (whose floor's normal is +y) and every other AreaLight test.
+TEST(AreaLight, EmitterPartlyBelowATiltedHorizonIsClippedAtTheReceiversPlane) {
+  const float H = 0.8f, W = 1.0f, wall = 1.0f;
+  const Camera camera = downCamera(2.0f);
+  for (const float degrees : {35.0f, -50.0f}) {
+    const glm::mat4 turn =
+        glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::normalize(glm::vec3(1, 0.3f, 2)));
+    Scene scene;
+    addFloor(scene, kAlbedo);
+    addQuad(scene, {wall, -1, W}, {0, 1 + H, 0}, {0, 0, -2 * W}, emitter());  // faces −x
+    for (Instance& instance : scene.instances) instance.transform = turn;
+    Camera turned = camera;
+    turned.cameraToWorld = turn * camera.cameraToWorld;
+    const Image image = render(scene, turned, kSize, kSize);
+    const int pixels[][2] = {{32, 32}, {0, 0}, {63, 63}, {50, 20}, {10, 45}, {60, 32}, {5, 60}};
+    for (const auto& [x, y] : pixels) {
+      const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);  // in the unturned scene
+      const double d = wall - p.x;
+      const double F =
+          perpendicularFormFactor(d, H, W - p.z) + perpendicularFormFactor(d, H, W + p.z);
+      SCOPED_TRACE("turned by " + std::to_string(degrees) + " degrees");
+      expectNear(image.at(x, y), kAlbedo * kEmission * static_cast<float>(F), x, y);
+    }
   }
 }
 

@@ -99,6 +99,77 @@ TEST(BakedVisibility, ATexelsVisibleFractionScalesTheLightsExactIrradiance) {
   }
 }
 
+// Two panels side by side over the floor (area lights 0 and 1 in scene/area_lights.h's order:
+// by instance), each texel naming panel 0 at V = 0.2 and panel 1 at V = 0.7. Every floor pixel
+// must be 0.2·E_0 + 0.7·E_1, E_l the pixel of a frame where only panel l faces the floor (the
+// other turned face up, still a light with its index, lighting nothing below). The one-light
+// tests above cannot tell which light reads which V, and LightCulling's two-light test compares
+// culled and unculled frames, which a mistake common to both passes. Injected: every area light
+// reading light 0's V (its index dropped): fails here, passes LightCulling's test and the tests
+// above; the two lights swapped (V of light L − 1 − l): fails here and in LightCulling's test.
+TEST(BakedVisibility, EachLightReadsItsOwnVisibilityOfTwo) {
+  const auto panels = [](bool faceDown0, bool faceDown1) {
+    Scene scene;
+    Material floor;
+    floor.name = "floor";
+    floor.albedo = glm::vec3(0.6f);
+    addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+    const float x[] = {-0.45f, 0.2f};  // beyond the camera's view at their height
+    const bool down[] = {faceDown0, faceDown1};
+    for (int l = 0; l < 2; ++l) {
+      Material panel;
+      panel.name = "panel" + std::to_string(l);
+      panel.emission = l == 0 ? glm::vec3(3.0f, 2.0f, 1.0f) : glm::vec3(1.0f, 2.0f, 3.0f);
+      const glm::vec3 c(x[l], 0.6f, -0.15f), u(0.25f, 0, 0), v(0, 0, 0.3f);
+      if (down[l])
+        addQuad(scene, c, u, v, panel);  // (x × z) = −y
+      else
+        addQuad(scene, c, v, u, panel);  // faces +y
+    }
+    return scene;
+  };
+  const Scene scene = panels(true, true);
+  Bake bake;
+  bake.layout.width = bake.layout.height = kSize;
+  bake.layout.texelSize = 1.0f / kSize;
+  bake.layout.instances = {unitFloorRegion(scene)};
+  for (uint32_t i = 1; i <= 2; ++i)  // each panel a texel of its own in the last column
+    bake.layout.instances.push_back(
+        {i, std::vector<glm::vec2>(scene.meshes[i].indices.size(),
+                                   glm::vec2(1.0f - 0.5f / kSize, (i - 0.5f) / kSize))});
+  bake.irradiance = Image(kSize, kSize);
+  bake.manifest = minimalManifest(scene);
+  TexelVisibility texel;
+  texel.light[0] = 1;  // the slots in another order than the lights
+  texel.visible[0] = 0.7f;
+  texel.light[1] = 0;
+  texel.visible[1] = 0.2f;
+  BakedVisibility v;
+  v.width = v.height = kSize;
+  v.lightCount = 2;
+  v.texels.assign(kSize * kSize, texel);
+  bake.visibility = v;
+
+  const Image only0 = renderDirect(panels(true, false), nullptr);
+  const Image only1 = renderDirect(panels(false, true), nullptr);
+  const Image baked = renderDirect(scene, &bake);
+  int checked = 0, bothLit = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float fx = (x + 0.5f) / kSize - 0.5f, fy = (y + 0.5f) / kSize - 0.5f;
+      if (std::max(std::abs(fx), std::abs(fy)) > 0.4f) continue;  // the frame's border
+      const glm::vec3 e0 = only0.at(x, y), e1 = only1.at(x, y);
+      const glm::vec3 expected = 0.2f * e0 + 0.7f * e1;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(baked.at(x, y)[c], expected[c], 1e-3f * expected[c] + 1e-7f)
+            << "pixel " << x << "," << y << " channel " << c;
+      ++checked;
+      bothLit += e0.g > 0.0f && e1.g > 0.0f;
+    }
+  EXPECT_GT(checked, 300);
+  EXPECT_GT(bothLit, 300);
+}
+
 // Texels with x < kSize/2 (the floor's x < 0) hold V = 0, the rest V = 1: the left of the frame
 // (downCamera: image x along world x) is dark except within a texel of the middle.
 TEST(BakedVisibility, TheAtlasIsReadWhereTheFloorIs) {

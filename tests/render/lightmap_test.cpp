@@ -165,6 +165,49 @@ TEST(Lightmap, TopRowOfTheLightmapIsAtlasVZero) {
   EXPECT_GT(lightmap.at(2, 0).g, 2.0f * lightmap.at(2, kSize - 1).g);
 }
 
+// The lookup is clamped into the fragment's own triangle (forward.geom, forward.frag), and a
+// point inside it is left where it is, whichever way round the chart lies in the atlas. E rises
+// by 1 W/m² a column and 8 a row of an 8 × 8 map, so the bilinear lookup at (u, v) is the
+// linear E = 1 + t_u + 8·t_v (t the texel coordinate u·8 − ½, clamped to [0, 7]) and any
+// lookup moved off its own point shows. The floor's region is laid out as written (u = x + ½: its
+// triangles clockwise in the atlas, as in every other test here) and mirrored (u = ½ − x:
+// counter-clockwise). ThinWallLeak checks only that the lookup stays on its chart. Injected: the
+// clamp's inside test written for clockwise triangles only (a counter-clockwise triangle's own
+// points moved onto its edges): fails here, passes ThinWallLeak and the other lightmap tests;
+// a corner of the clamp's triangle taken from the wrong vertex (forward.geom): fails here and in
+// TopRowOfTheLightmapIsAtlasVZero, ErrorModeShows… and BakedVisibility.TheAtlasIsRead…
+TEST(Lightmap, TheLookupClampLeavesEveryPointOfItsTriangleWhereItIs) {
+  const PlaneScene p = planeScene();
+  constexpr int kMap = 8;
+  Image ramp(kMap, kMap);
+  for (int y = 0; y < kMap; ++y)
+    for (int x = 0; x < kMap; ++x)
+      ramp.at(x, y) = glm::vec3(1.0f + static_cast<float>(x) + 8.0f * static_cast<float>(y));
+  for (const bool mirrored : {false, true}) {
+    Bake bake = planeBake(p.scene, ramp);
+    if (mirrored)
+      for (glm::vec2& uv : bake.layout.instances[0].cornerUv) uv.x = 1.0f - uv.x;
+    const Image lightmap = renderMode(p.scene, p.camera, bake, RenderMode::Lightmap);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (whatPixelSees(p.camera, x, y) != Sees::Floor) continue;
+        const glm::vec3 point = floorPoint(p.camera, kSize, kSize, x, y);
+        const float u = mirrored ? 0.5f - point.x : point.x + 0.5f, v = point.z + 0.5f;
+        const float tu = std::clamp(u * kMap - 0.5f, 0.0f, kMap - 1.0f);
+        const float tv = std::clamp(v * kMap - 0.5f, 0.0f, kMap - 1.0f);
+        const float expected = (1.0f + tu + 8.0f * tv) / kPi;
+        // One sample a pixel, at its centre. GL's bilinear weights carry 8 fractional bits on
+        // llvmpipe: 1/256 of a step each way, doubled for margin.
+        const float tolerance = (1.0f + 8.0f) / 128.0f / kPi;
+        EXPECT_NEAR(lightmap.at(x, y).g, expected, tolerance)
+            << (mirrored ? "mirrored" : "as written") << " chart, pixel " << x << "," << y;
+        ++checked;
+      }
+    EXPECT_GT(checked, 700);
+  }
+}
+
 // A baked-only light (Light::bakeDirect) is in the lightmap: with a bake the renderer draws it
 // nowhere live (full = indirect), without one it is drawn live like any light.
 TEST(Lightmap, BakedOnlyLightIsNotDrawnLiveOnceABakeIsAttached) {
