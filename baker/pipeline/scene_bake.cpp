@@ -8,10 +8,12 @@
 #include "atlas/atlas.h"
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_bake.h"
+#include "bake/tile_exchange.h"
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
 #include "pipeline/bake_memory.h"
 #include "pipeline/tile_journal.h"
+#include "pipeline/tile_sources.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
 #include "trace/stopwatch.h"
@@ -140,38 +142,9 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   LightmapBakeSettings settings = defaultBakeSettings();
   settings.stages = &plan;
   // The tiles: this bake's share, those a journal or the parts already hold, where new ones go.
-  LightmapTiles& tiles = settings.tiles;
-  tiles.size = o.tileSize;
-  tiles.shard = o.shard;
-  tiles.shards = o.shards;
-  tiles.exchange = o.exchange;
-  const nlohmann::json key = tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height);
-  const auto restore = [&](TileJournal&& journal) {
-    for (TileRecord& record : journal.records) tiles.restored.push_back(std::move(record));
-  };
-  for (const std::filesystem::path& part : o.parts) {
-    TileJournal journal = readTileJournal(part);
-    checkTileJournalKey(part, journal.key, key, kTileKeyNotShared);
-    restore(std::move(journal));
-  }
-  if (!o.parts.empty()) tiles.computeMissing = false;
-  std::unique_ptr<TileJournalWriter> journal;
-  if (!o.journal.empty()) {
-    constexpr const char* kSceneOnly[] = {"scene"};
-    if (o.resume && std::filesystem::exists(o.journal)) {
-      TileJournal earlier = readTileJournal(o.journal);
-      checkTileJournalKey(o.journal, earlier.key, key, kSceneOnly);
-      if (earlier.droppedBytes > 0)
-        result.notes.push_back(o.journal.string() + ": its last " +
-                               std::to_string(earlier.droppedBytes) +
-                               " bytes were a tile cut short when the bake stopped: dropped");
-      journal = std::make_unique<TileJournalWriter>(o.journal, earlier);
-      restore(std::move(earlier));
-    } else {
-      journal = std::make_unique<TileJournalWriter>(o.journal, key);
-    }
-    tiles.finished = [&writer = *journal](const TileRecord& record) { writer.append(record); };
-  }
+  TileSources tiles = openTileSources(
+      o, tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height), result.notes);
+  settings.tiles = std::move(tiles.tiles);
   settings.irradiance.maxSpp = o.spp;
   settings.irradiance.targetError = o.targetError;
   settings.irradiance.maxDepth = o.maxDepth;

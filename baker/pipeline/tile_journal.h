@@ -24,7 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bake/tile_payload.h"
+#include "bake/tile_record.h"
 
 namespace bounce {
 
