@@ -145,13 +145,14 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   TileSources tiles = openTileSources(
       o, tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height), result.notes);
   settings.tiles = std::move(tiles.tiles);
-  settings.irradiance.maxSpp = o.spp;
+  settings.irradiance.maxSpp = o.maxSpp;
   settings.irradiance.targetError = o.targetError;
   settings.irradiance.maxDepth = o.maxDepth;
   settings.irradiance.seed = o.seed;
   settings.irradiance.lightChoice = o.lightChoice;
   settings.irradiance.threads = o.threads;
   settings.denoise = o.denoise;
+  settings.pointsPerTexel = o.pointsPerTexel;
   const LightmapBake bake =
       bakeLightmap(statics, geometry, *kernel, staticLayout(scene, atlas.layout), settings);
   lap.lap();  // the lightmap steps time themselves (bake.seconds)
@@ -200,19 +201,11 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     most = std::max(most, bake.samples[t]);
   }
   const uint64_t valid = bake.coveredTexels - bake.invalidTexels;
-  BakeManifest::Settings& s = manifest.settings;
+  // The settings as resolved: the texel size the atlas chose, a budget only where none was given.
+  BakeSettings& s = manifest.settings;
+  s = o;
   s.texelSize = atlas.layout.texelSize;
   s.texelBudget = o.texelSize > 0 ? 0 : o.texelBudget;
-  s.maxTexels = o.maxTexels;
-  s.maxSpp = o.spp;
-  s.targetError = o.targetError;
-  s.maxDepth = o.maxDepth;
-  s.seed = o.seed;
-  s.denoise = settings.denoise;
-  s.lightChoice = o.lightChoice == LightChoice::ByPlace ? "place" : "power";
-  s.pointsPerTexel = settings.pointsPerTexel;
-  s.vpls = o.vpls;
-  s.vplError = o.vplError;
   // The whole hash decides; the parts let a stale bake say what changed (bake_folder.h).
   const SceneHash hash = sceneHash(scene);
   manifest.sceneHash = hash.whole;
