@@ -19,6 +19,7 @@
 #include "pipeline/bake_memory.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/tile_journal.h"
+#include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "trace/progress_line.h"
 #include "trace/sampling.h"

@@ -8,6 +8,10 @@
 #include "bake/tile_grid.h"
 #include "bake/tile_payload.h"
 #include "bake/tile_scheduler.h"
+#include "bake_folder/lightmap_layout.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
 #include "trace/sampling.h"
 #include "trace/stopwatch.h"
 

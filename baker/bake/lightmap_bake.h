@@ -15,14 +15,15 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/texel_irradiance.h"
 #include "bake/tile_scheduler.h"
-#include "bake_folder/lightmap_layout.h"
 #include "image/image.h"
-#include "ray/ray_kernel.h"
-#include "scene/scene.h"
-#include "scene/world_geometry.h"
-#include "trace/stage_progress.h"
 
 namespace bounce {
+
+class RayKernel;
+class StagePlan;
+struct LightmapLayout;
+struct Scene;
+struct WorldGeometry;
 
 // Its stages' names, for a StagePlan (trace/stage_progress.h).
 inline constexpr char kStageCoverage[] = "texel coverage";

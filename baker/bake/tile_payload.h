@@ -14,13 +14,14 @@
 #include <span>
 #include <vector>
 
-#include "bake/light_visibility_bake.h"
-#include "bake/texel_coverage.h"
-#include "bake/texel_irradiance.h"
 #include "bake/tile_grid.h"
 #include "bake/tile_record.h"
 
 namespace bounce {
+
+struct TexelCoverage;
+struct TexelIrradiance;
+struct VisibilityTexels;
 
 std::vector<unsigned char> encodeIrradianceTile(const TexelIrradiance& from,
                                                 const TexelCoverage& coverage, TileRect tile);

@@ -9,6 +9,10 @@
 
 namespace bounce {
 
+// 64 × 64 texels, GPU Lightmass's tile: a tile of the Conference Room's covered texels takes a
+// few seconds on one core, and its journal record is at most 64² × 28 bytes.
+inline constexpr int kDefaultTileSize = 64;
+
 // The tiled stages (values as journalled).
 enum class TileStage : uint32_t { Irradiance = 1, Visibility = 2 };
 

@@ -7,11 +7,12 @@
 #include "atlas/texel_density.h"
 #include "bake/lightmap_bake.h"
 #include "bake_folder/json_fields.h"
+#include "ray/ray_kernel.h"
 #include "vpl/vpl_generate.h"
 
 namespace bounce {
 
-SceneBakeSettings::SceneBakeSettings() {
+SceneBakeSettings::SceneBakeSettings() : backend(RayBackend::Embree) {
   const LightmapBakeSettings defaults = defaultBakeSettings();
   maxTexels = kDefaultMaxTexels;
   maxSpp = defaults.irradiance.maxSpp;

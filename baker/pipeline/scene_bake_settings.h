@@ -10,13 +10,13 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "bake/tile_grid.h"
+#include "bake/tile_record.h"
 #include "bake_folder/bake_settings.h"
-#include "ray/ray_kernel.h"
 
 namespace bounce {
 
 class TileExchange;
+enum class RayBackend : uint8_t;  // ray/ray_kernel.h
 
 // How the work is distributed: threads, memory, tiles and their whereabouts
 // (pipeline/tile_sources.h, bake/tile_scheduler.h).
@@ -40,7 +40,7 @@ struct BakeWork {
 struct SceneBakeSettings : BakeSettings, BakeWork {
   // The ray kernel. The bytes depend on it (its hits differ in the last bits), but bake.json
   // names it under "rays", not "settings"; the journal's key holds it.
-  RayBackend backend = RayBackend::Embree;
+  RayBackend backend;   // Embree by default
   SceneBakeSettings();  // bounce-bake's defaults
 };
 
