@@ -67,7 +67,7 @@ int merge(const MergeOptions& o) {
   const Scene scene = loadScene(sceneFile);
   const double loadSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  SceneBakeSettings settings = bakeSettingsFromInputs(first, SceneBakeSettings{});
+  SceneBakeSettings settings = bakeSettingsFromInputs(o.parts.front(), first);
   settings.threads = o.threads;
   settings.parts = o.parts;
   listenForInterrupt();

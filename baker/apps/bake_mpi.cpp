@@ -6,6 +6,8 @@
 
 #include "bake_progress_line.h"
 #include "mpi/mpi_tile_exchange.h"
+#include "pipeline/scene_bake.h"
+#include "scene/scene.h"
 
 namespace bounce {
 

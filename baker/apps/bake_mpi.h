@@ -3,9 +3,11 @@
 #pragma once
 
 #include "bake_summary.h"
-#include "pipeline/scene_bake.h"
 
 namespace bounce {
+
+struct Scene;
+struct SceneBakeSettings;
 
 // Every rank calls it with the same scene and settings. Returns the exit code; an error on any
 // rank ends every rank (MPI_Abort) with its message naming the rank.

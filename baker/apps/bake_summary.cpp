@@ -4,6 +4,7 @@
 
 #include "image/image_io.h"
 #include "pipeline/bake_memory.h"
+#include "pipeline/scene_bake.h"
 #include "trace/sampling.h"
 
 namespace bounce {

@@ -5,9 +5,9 @@
 #include <chrono>
 #include <filesystem>
 
-#include "pipeline/scene_bake.h"
-
 namespace bounce {
+
+struct SceneBake;
 
 struct BakeOutput {
   std::filesystem::path folder;

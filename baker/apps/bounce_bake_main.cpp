@@ -19,6 +19,7 @@
 #include "pipeline/bake_memory.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/tile_journal.h"
+#include "ray/ray_kernel.h"
 #include "scene/load.h"
 #include "trace/progress_line.h"
 #include "trace/sampling.h"
@@ -32,7 +33,7 @@ struct Options {
   std::filesystem::path out;
   bounce::SceneBakeSettings bake;
   std::string backend = "embree";
-  std::string lightChoice = "place";
+  std::string lightChoice = bounce::lightChoiceName(kDefaults.lightChoice);
   std::string denoise = kDefaults.denoise ? "on" : "off";
   std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
@@ -80,8 +81,7 @@ int run(Options o) {
   const double loadSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.bake.backend = bounce::parseRayBackend(o.backend);
-  o.bake.lightChoice =
-      o.lightChoice == "power" ? bounce::LightChoice::ByPower : bounce::LightChoice::ByPlace;
+  o.bake.lightChoice = *bounce::parseLightChoice(o.lightChoice);  // checked by CLI11
   o.bake.denoise = o.denoise == "on";
   if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
   o.bake.resume = o.resume;
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
                  "cap on the texels the static surface takes: beyond it the texels grow, with a "
                  "note")
       ->check(CLI::Range(int64_t{16}, int64_t{1} << 28));
-  app.add_option("--spp", o.bake.spp, "most samples per texel")->check(CLI::Range(16, 1 << 24));
+  app.add_option("--spp", o.bake.maxSpp, "most samples per texel")->check(CLI::Range(16, 1 << 24));
   app.add_option("--target-error", o.bake.targetError,
                  "sample a texel until its relative standard error is below this (0: always "
                  "--spp)")
@@ -169,7 +169,9 @@ int main(int argc, char** argv) {
          "--light-choice", o.lightChoice,
          "how next-event estimation picks its one light per path vertex: place (by a bound of what "
          "each light brings there) or power (by power alone)")
-      ->check(CLI::IsMember({"place", "power"}));
+      ->check([](const std::string& name) {
+        return bounce::parseLightChoice(name) ? std::string() : name + " is not place or power";
+      });
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--png", o.png,

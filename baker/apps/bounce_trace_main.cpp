@@ -37,7 +37,7 @@ struct Options {
   uint32_t seed = 0;
   int threads = 0;
   std::string backend = "embree";
-  std::string lightChoice = "place";
+  std::string lightChoice = bounce::lightChoiceName(bounce::TraceSettings{}.lightChoice);
   int width = 0;
   int height = 0;
   std::filesystem::path out;
@@ -94,8 +94,7 @@ int run(const Options& o) {
   settings.seed = o.seed;
   settings.threads = o.threads;
   settings.backend = bounce::parseRayBackend(o.backend);
-  settings.lightChoice =
-      o.lightChoice == "power" ? bounce::LightChoice::ByPower : bounce::LightChoice::ByPlace;
+  settings.lightChoice = *bounce::parseLightChoice(o.lightChoice);  // checked by CLI11
   settings.clampRadiance = o.clamp;
   settings.progress = !o.quiet && (o.progress || bounce::stderrIsTerminal());
 
@@ -176,7 +175,9 @@ int main(int argc, char** argv) {
          "--light-choice", o.lightChoice,
          "how next-event estimation picks its one light per path vertex: place (by a bound of what "
          "each light brings there) or power (by power alone)")
-      ->check(CLI::IsMember({"place", "power"}));
+      ->check([](const std::string& name) {
+        return bounce::parseLightChoice(name) ? std::string() : name + " is not place or power";
+      });
   app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, kMaxSide));
   app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, kMaxSide));
   // The extension says the format: a .png name never receives EXR data.

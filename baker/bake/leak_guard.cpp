@@ -9,6 +9,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "bake/texel_coverage.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
 #include "trace/denormals_flushed.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"

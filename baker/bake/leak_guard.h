@@ -18,12 +18,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "bake/texel_coverage.h"
-#include "ray/ray_kernel.h"
-#include "scene/scene.h"
-#include "scene/world_geometry.h"
-
 namespace bounce {
+
+class RayKernel;
+struct Scene;
+struct TexelCoverage;
+struct WorldGeometry;
 
 struct LeakGuardSettings {
   int probeRays = 16;

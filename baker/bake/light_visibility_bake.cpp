@@ -9,10 +9,13 @@
 
 #include <tbb/task_arena.h>
 
+#include "bake/texel_coverage.h"
+#include "ray/ray_kernel.h"
 #include "scene/light_falloff.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"  // reverseBits: the base-2 radical inverse
+#include "trace/stage_progress.h"
 
 namespace bounce {
 namespace {

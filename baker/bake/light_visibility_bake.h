@@ -25,14 +25,15 @@
 #include <span>
 #include <vector>
 
-#include "bake/texel_coverage.h"
 #include "bake/tile_work.h"
 #include "bake_folder/light_visibility.h"
-#include "ray/ray_kernel.h"
 #include "scene/area_lights.h"
-#include "trace/stage_progress.h"
 
 namespace bounce {
+
+class RayKernel;
+class StageProgress;
+struct TexelCoverage;
 
 struct VisibilityTexels;
 

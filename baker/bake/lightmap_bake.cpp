@@ -6,7 +6,12 @@
 #include "bake/lightmap_filters.h"
 #include "bake/texel_coverage.h"
 #include "bake/tile_grid.h"
-#include "scene/load_error.h"
+#include "bake/tile_payload.h"
+#include "bake/tile_scheduler.h"
+#include "bake_folder/lightmap_layout.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
 #include "trace/sampling.h"
 #include "trace/stopwatch.h"
 
@@ -17,39 +22,31 @@ namespace {
 // Candidate points use a pattern of their own, apart from the irradiance samples'.
 constexpr uint32_t kPointSeedSalt = 0x9e3779b9u;
 
-}  // namespace
-
-LightmapBakeSettings defaultBakeSettings() {
-  LightmapBakeSettings settings;
-  settings.irradiance.maxSpp = 4096;
-  settings.irradiance.targetError = 0.1f;
-  settings.denoise = true;
-  return settings;
+// A stage of the plan, begun (and checked for a cancel) when the plan has it.
+std::unique_ptr<StageProgress> beginStage(const StagePlan* plan, const char* name, uint64_t total) {
+  std::unique_ptr<StageProgress> s = plan && plan->has(name) ? plan->begin(name, total) : nullptr;
+  if (s) s->throwIfCancelled();
+  return s;
 }
 
-LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
-                          const RayKernel& kernel, const LightmapLayout& layout,
-                          const LightmapBakeSettings& settings) {
-  LightmapBake bake;
-  Stopwatch clock;
-  // A stage of the plan, begun (and checked for a cancel) when the plan has it.
-  const auto stage = [&](const char* name, uint64_t total) {
-    std::unique_ptr<StageProgress> s = settings.stages && settings.stages->has(name)
-                                           ? settings.stages->begin(name, total)
-                                           : nullptr;
-    if (s) s->throwIfCancelled();
-    return s;
-  };
-  std::unique_ptr<StageProgress> step = stage(kStageCoverage, 1);
+// Texel coverage: each texel's sample points, by clipped area; bake.covered from it.
+TexelCoverage coverTexels(const Scene& scene, const WorldGeometry& geometry,
+                          const LightmapLayout& layout, const LightmapBakeSettings& settings,
+                          LightmapBake& bake) {
+  const std::unique_ptr<StageProgress> step = beginStage(settings.stages, kStageCoverage, 1);
   TexelCoverage coverage = buildTexelCoverage(scene, geometry, layout, settings.pointsPerTexel,
                                               settings.irradiance.seed ^ kPointSeedSalt);
-  const std::size_t texels = coverage.texelCount();
-  bake.covered.assign(texels, 0);
-  for (std::size_t t = 0; t < texels; ++t) bake.covered[t] = coverage.covered(t) ? 1 : 0;
-  bake.seconds.coverage = clock.lap();
-  step.reset();
+  bake.covered.assign(coverage.texelCount(), 0);
+  for (std::size_t t = 0; t < bake.covered.size(); ++t)
+    bake.covered[t] = coverage.covered(t) ? 1 : 0;
+  return coverage;
+}
 
-  step = stage(kStageLeakGuard, 1);
+// The leak guard: drops the points inside geometry or across walls; bake.invalid from it.
+uint64_t guardLeaks(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
+                    const LightmapLayout& layout, const LightmapBakeSettings& settings,
+                    TexelCoverage& coverage, LightmapBake& bake) {
+  const std::unique_ptr<StageProgress> step = beginStage(settings.stages, kStageLeakGuard, 1);
   LeakGuardSettings leak = settings.leak;
   if (leak.threads == 0) leak.threads = settings.irradiance.threads;
   const LeakGuardResult guard =
@@ -57,138 +54,82 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.invalid = guard.invalid;
   bake.pointsInside = guard.pointsInside;
   bake.pointsAcross = guard.pointsAcross;
-  bake.seconds.leakGuard = clock.lap();
-  step.reset();
+  return guard.rays;
+}
 
-  // The tiles with work, this bake's share of them, and those earlier runs finished.
-  const LightmapTiles& tiling = settings.tiles;
-  const TileGrid grid(layout.width, layout.height, tiling.size);
-  const std::vector<uint32_t> byCost = tilesByCost(grid, coverage);
-  const std::vector<uint32_t> mine =
-      tiling.shards > 1 ? shardTiles(byCost, tiling.shard, tiling.shards) : byCost;
-  bake.tiles = static_cast<uint32_t>(byCost.size());
-  bake.tilesShare = static_cast<uint32_t>(mine.size());
-  TileExchange* exchange = tiling.exchange;
-  bake.partial = tiling.shards > 1 || (exchange && !exchange->keeper());
-  std::vector<uint8_t> hasWork(grid.count(), 0);
-  for (const uint32_t t : byCost) hasWork[t] = 1;
-  std::vector<const TileRecord*> restored[2];  // by stage, then tile
-  for (std::vector<const TileRecord*>& r : restored) r.assign(grid.count(), nullptr);
-  for (const TileRecord& record : tiling.restored) {
-    if (record.tile >= grid.count() || !hasWork[record.tile])
-      throw LoadError(record.source, "holds tile " + std::to_string(record.tile) +
-                                         ", which is not one of this bake's " +
-                                         std::to_string(byCost.size()) + " tiles with work");
-    const TileRecord*& slot = restored[static_cast<int>(record.stage) - 1][record.tile];
-    if (slot && slot->bytes != record.bytes)
-      throw LoadError(record.source, "holds tile " + std::to_string(record.tile) + " twice, " +
-                                         "with different texels (also in " + slot->source.string() +
-                                         ")");
-    slot = &record;
-  }
-  // This bake's tiles of `stage` that no earlier run finished, in cost order.
-  const auto todo = [&](TileStage of) {
-    std::vector<uint32_t> left;
-    for (const uint32_t t : mine)
-      if (!restored[static_cast<int>(of) - 1][t]) left.push_back(t);
-    if (!left.empty() && !tiling.computeMissing)
-      throw MissingTiles(std::to_string(left.size()) + " of the " + std::to_string(mine.size()) +
-                         " tiles of the " +
-                         (of == TileStage::Irradiance ? "irradiance" : "visibility") +
-                         " are in no part (tile " + std::to_string(left.front()) + " first)");
-    return left;
+// The irradiance, tile by tile (the scheduler restores, shares and receives the tiles).
+void bakeIrradiance(TileScheduler& tiles, const Scene& scene, const WorldGeometry& geometry,
+                    const RayKernel& kernel, const TexelCoverage& coverage,
+                    const LightmapBakeSettings& settings, LightmapBake& bake) {
+  TiledStage<TexelIrradiance> stage;
+  stage.stage = TileStage::Irradiance;
+  stage.compute = [&](const TileWork& work, StageProgress* progress, auto done) {
+    IrradianceSettings irradiance = settings.irradiance;
+    irradiance.work = work;
+    irradiance.tileDone = std::move(done);
+    irradiance.progress = progress;
+    return gatherIrradiance(scene, geometry, kernel, coverage, irradiance);
   };
-  const auto journal = [&](TileStage of, uint32_t tile, std::vector<unsigned char> bytes) {
-    const TileRecord record{of, tile, std::move(bytes), {}};
-    if (exchange) exchange->finished(record);
-    if (tiling.finished) tiling.finished(record);
+  stage.encode = [&](const TexelIrradiance& texels, TileRect tile) {
+    return encodeIrradianceTile(texels, coverage, tile);
   };
-  // With an exchange the stage's tiles are pulled from it, one at a time.
-  const auto share = [&](TileStage of, TileWork& work) {
-    if (!exchange) return;
-    exchange->open(of, work.tiles);
-    work.next = [exchange, of] { return exchange->next(of); };
+  stage.decode = [&](const TileRecord& record, TileRect tile, TexelIrradiance& into) {
+    decodeIrradianceTile(record.source, record.bytes, coverage, tile, into);
   };
-  // The tiles other processes computed (the keeper's), checked like restored ones and journalled.
-  const auto received = [&](TileStage of) {
-    std::vector<TileRecord> records;
-    if (exchange) records = exchange->gather(of);
-    for (const TileRecord& record : records) {
-      if (record.tile >= grid.count() || !hasWork[record.tile])
-        throw std::runtime_error("a process sent tile " + std::to_string(record.tile) +
-                                 ", which is not one of this bake's tiles");
-      if (tiling.finished) tiling.finished(record);
-    }
-    return records;
-  };
-
-  IrradianceSettings irradiance = settings.irradiance;
-  irradiance.work = {&grid, todo(TileStage::Irradiance), {}};
-  bake.tilesRestored = static_cast<uint32_t>(mine.size() - irradiance.work.tiles.size());
-  irradiance.tileDone = [&](uint32_t tile, const TexelIrradiance& out) {
-    journal(TileStage::Irradiance, tile, encodeIrradianceTile(out, coverage, grid.rect(tile)));
-  };
-  step = stage(kStageIrradiance, tileRows(irradiance.work, coverage.height));
-  irradiance.progress = step.get();
-  share(TileStage::Irradiance, irradiance.work);
-  TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, irradiance);
-  for (const TileRecord* record : restored[0])
-    if (record)
-      decodeIrradianceTile(record->source, record->bytes, coverage, grid.rect(record->tile),
-                           gathered);
-  for (const TileRecord& record : received(TileStage::Irradiance)) {
-    decodeIrradianceTile(record.source, record.bytes, coverage, grid.rect(record.tile), gathered);
-    if (irradiance.progress) irradiance.progress->advance(grid.rect(record.tile).height());
-  }
+  TexelIrradiance gathered = tiles.run(
+      stage, [&](uint64_t rows) { return beginStage(settings.stages, kStageIrradiance, rows); });
   gathered.summarise();
+  bake.tilesRestored = tiles.restored(TileStage::Irradiance);
   bake.irradiance = std::move(gathered.irradiance);
   bake.samples = std::move(gathered.samples);
   bake.relativeError = std::move(gathered.relativeError);
-  bake.rays = guard.rays + gathered.totalRays;
+  bake.rays += gathered.totalRays;
   bake.totalSamples = gathered.totalSamples;
   bake.nonFiniteSamples = gathered.nonFiniteSamples;
-  bake.seconds.irradiance = clock.lap();
-  step.reset();
+}
 
-  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
-  const AreaLightSet lights = sceneAreaLights(scene);
-  if (settings.visibility.enabled && hasBakeableVisibility(lights, scene.lights)) {
+// The static area lights' visible fraction per texel, tile by tile like the irradiance; filled
+// into the uncovered texels of their charts unless only part of the bake is computed here.
+void bakeVisibility(TileScheduler& tiles, const AreaLightSet& lights, const Scene& scene,
+                    const RayKernel& kernel, const TexelCoverage& coverage,
+                    const std::vector<uint32_t>& labels, const LightmapBakeSettings& settings,
+                    LightmapBake& bake) {
+  TiledStage<VisibilityTexels> stage;
+  stage.stage = TileStage::Visibility;
+  stage.compute = [&](const TileWork& work, StageProgress* progress, auto done) {
     VisibilityBakeSettings visibility = settings.visibility;
     visibility.seed = settings.irradiance.seed;
     visibility.threads = settings.irradiance.threads;
-    visibility.work = {&grid, todo(TileStage::Visibility), {}};
-    visibility.tileDone = [&](uint32_t tile, const VisibilityTexels& out) {
-      journal(TileStage::Visibility, tile, encodeVisibilityTile(out, coverage, grid.rect(tile)));
-    };
-    step = stage(kStageVisibility, tileRows(visibility.work, coverage.height));
-    visibility.progress = step.get();
-    share(TileStage::Visibility, visibility.work);
-    VisibilityTexels computed =
-        bakeVisibilityTexels(lights, scene.lights, kernel, coverage, visibility);
-    for (const TileRecord* record : restored[1])
-      if (record)
-        decodeVisibilityTile(record->source, record->bytes, coverage, grid.rect(record->tile),
-                             computed);
-    for (const TileRecord& record : received(TileStage::Visibility)) {
-      decodeVisibilityTile(record.source, record.bytes, coverage, grid.rect(record.tile), computed);
-      if (visibility.progress) visibility.progress->advance(grid.rect(record.tile).height());
-    }
-    bake.visibilityReport = summariseVisibility(computed);
-    bake.visibility = std::move(computed.map);
-    bake.rays += bake.visibilityReport.rays;
-    if (!bake.partial) {
-      std::vector<uint8_t> filled(texels, 0);
-      for (std::size_t t = 0; t < texels; ++t) filled[t] = coverage.covered(t) ? 1 : 0;
-      fillVisibility(*bake.visibility, filled, &labels);
-    }
+    visibility.work = work;
+    visibility.tileDone = std::move(done);
+    visibility.progress = progress;
+    return bakeVisibilityTexels(lights, scene.lights, kernel, coverage, visibility);
+  };
+  stage.encode = [&](const VisibilityTexels& texels, TileRect tile) {
+    return encodeVisibilityTile(texels, coverage, tile);
+  };
+  stage.decode = [&](const TileRecord& record, TileRect tile, VisibilityTexels& into) {
+    decodeVisibilityTile(record.source, record.bytes, coverage, tile, into);
+  };
+  VisibilityTexels computed = tiles.run(
+      stage, [&](uint64_t rows) { return beginStage(settings.stages, kStageVisibility, rows); });
+  bake.visibilityReport = summariseVisibility(computed);
+  bake.visibility = std::move(computed.map);
+  bake.rays += bake.visibilityReport.rays;
+  if (!bake.partial) {
+    std::vector<uint8_t> filled(coverage.texelCount(), 0);
+    for (std::size_t t = 0; t < filled.size(); ++t) filled[t] = coverage.covered(t) ? 1 : 0;
+    fillVisibility(*bake.visibility, filled, &labels);
   }
-  bake.seconds.visibility = bake.visibilityReport.seconds = clock.lap();
-  step.reset();
-  // A shard's part holds its tiles only: the filters need the whole map (the merge runs them).
-  if (bake.partial) return bake;
-  step = stage(kStageFilters, 1);
+}
 
-  // Texels the zero rule stopped before the cap are unknown, not black (fillUnresolvedZeros).
+// Texels the zero rule stopped before the cap are unknown, not black (fillUnresolvedZeros);
+// then the texel counts and the error summary, filled texels left out. Returns the valid texels.
+std::vector<uint8_t> fillZerosAndSummarise(const TexelCoverage& coverage,
+                                           const std::vector<uint32_t>& labels,
+                                           const LightmapBakeSettings& settings,
+                                           LightmapBake& bake) {
+  const std::size_t texels = coverage.texelCount();
   std::vector<uint8_t> unresolved(texels, 0);
   for (std::size_t t = 0; t < texels; ++t)
     unresolved[t] = coverage.covered(t) && bake.irradiance.pixels[t] == glm::vec3(0.0f) &&
@@ -215,44 +156,91 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
     std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
     bake.p95RelativeError = errors[k];
   }
+  return valid;
+}
 
-  if (settings.denoise) {
-    DenoiseGuide guide;
-    guide.position.assign(texels, glm::vec3(0.0f));
-    guide.normal.assign(texels, glm::vec3(0.0f));
-    guide.label.assign(texels, 0);
-    guide.relativeError = bake.relativeError;
-    guide.texelSize = layout.texelSize;
-    for (std::size_t t = 0; t < texels; ++t) {
-      const uint32_t n = coverage.pointCount(t);
-      if (n == 0) continue;
-      glm::vec3 p(0.0f), nrm(0.0f);
-      for (uint32_t k = coverage.first[t]; k < coverage.first[t + 1]; ++k) {
-        p += coverage.points[k].position;
-        nrm += coverage.points[k].shadingNormal;
-      }
-      guide.position[t] = p / static_cast<float>(n);
-      guide.normal[t] = glm::length(nrm) > 0.0f ? glm::normalize(nrm) : nrm;
-      guide.label[t] = labels[t];
+// The denoiser, guided by each texel's mean sample point, normal, chart and error.
+void denoiseMap(const TexelCoverage& coverage, const std::vector<uint32_t>& labels,
+                const LightmapLayout& layout, LightmapBake& bake) {
+  const std::size_t texels = coverage.texelCount();
+  DenoiseGuide guide;
+  guide.position.assign(texels, glm::vec3(0.0f));
+  guide.normal.assign(texels, glm::vec3(0.0f));
+  guide.label.assign(texels, 0);
+  guide.relativeError = bake.relativeError;
+  guide.texelSize = layout.texelSize;
+  for (std::size_t t = 0; t < texels; ++t) {
+    const uint32_t n = coverage.pointCount(t);
+    if (n == 0) continue;
+    glm::vec3 p(0.0f), nrm(0.0f);
+    for (uint32_t k = coverage.first[t]; k < coverage.first[t + 1]; ++k) {
+      p += coverage.points[k].position;
+      nrm += coverage.points[k].shadingNormal;
     }
-    denoise(bake.irradiance, guide);
+    guide.position[t] = p / static_cast<float>(n);
+    guide.normal[t] = glm::length(nrm) > 0.0f ? glm::normalize(nrm) : nrm;
+    guide.label[t] = labels[t];
   }
+  denoise(bake.irradiance, guide);
+}
+
+// Invalid texels take their chart's valid neighbours' values, then everything grows into the
+// padding.
+void dilateMap(const std::vector<uint8_t>& valid, const std::vector<uint32_t>& labels,
+               const LightmapLayout& layout, LightmapBake& bake) {
+  std::vector<uint8_t> filled = valid;
+  for (std::size_t t = 0; t < filled.size(); ++t)
+    filled[t] |= static_cast<uint8_t>(!bake.covered[t]);
+  while (dilateOnce(bake.irradiance, filled, &labels) > 0) {
+  }
+  filled = valid;
+  for (std::size_t t = 0; t < filled.size(); ++t) filled[t] |= bake.invalid[t];
+  for (int ring = 0; ring < std::max(layout.padding, 2); ++ring)
+    dilateOnce(bake.irradiance, filled);
+}
+
+}  // namespace
+
+LightmapBakeSettings defaultBakeSettings() {
+  LightmapBakeSettings settings;
+  settings.irradiance.maxSpp = 4096;
+  settings.irradiance.targetError = 0.1f;
+  settings.denoise = true;
+  return settings;
+}
+
+LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
+                          const RayKernel& kernel, const LightmapLayout& layout,
+                          const LightmapBakeSettings& settings) {
+  LightmapBake bake;
+  Stopwatch clock;
+  TexelCoverage coverage = coverTexels(scene, geometry, layout, settings, bake);
+  bake.seconds.coverage = clock.lap();
+  bake.rays = guardLeaks(scene, geometry, kernel, layout, settings, coverage, bake);
+  bake.seconds.leakGuard = clock.lap();
+
+  // The tiles with work, this bake's share of them, and those earlier runs finished.
+  const TileGrid grid(layout.width, layout.height, settings.tiles.size);
+  TileScheduler tiles(grid, tilesByCost(grid, coverage), settings.tiles);
+  bake.tiles = tiles.tiles();
+  bake.tilesShare = tiles.share();
+  bake.partial = tiles.partial();
+  bakeIrradiance(tiles, scene, geometry, kernel, coverage, settings, bake);
+  bake.seconds.irradiance = clock.lap();
+  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
+  const AreaLightSet lights = sceneAreaLights(scene);
+  if (settings.visibility.enabled && hasBakeableVisibility(lights, scene.lights))
+    bakeVisibility(tiles, lights, scene, kernel, coverage, labels, settings, bake);
+  bake.seconds.visibility = bake.visibilityReport.seconds = clock.lap();
+  // A shard's part holds its tiles only: the filters need the whole map (the merge runs them).
+  if (bake.partial) return bake;
+
+  const std::unique_ptr<StageProgress> step = beginStage(settings.stages, kStageFilters, 1);
+  const std::vector<uint8_t> valid = fillZerosAndSummarise(coverage, labels, settings, bake);
+  if (settings.denoise) denoiseMap(coverage, labels, layout, bake);
   bake.seconds.denoise = clock.lap();
-
-  if (settings.dilate) {
-    // Invalid texels take their chart's valid neighbours' values, then everything grows into
-    // the padding.
-    std::vector<uint8_t> filled = valid;
-    for (std::size_t t = 0; t < texels; ++t) filled[t] |= static_cast<uint8_t>(!bake.covered[t]);
-    while (dilateOnce(bake.irradiance, filled, &labels) > 0) {
-    }
-    filled = valid;
-    for (std::size_t t = 0; t < texels; ++t) filled[t] |= bake.invalid[t];
-    for (int ring = 0; ring < std::max(layout.padding, 2); ++ring)
-      dilateOnce(bake.irradiance, filled);
-  }
+  if (settings.dilate) dilateMap(valid, labels, layout, bake);
   bake.seconds.dilate = clock.lap();
-
   if (settings.stitch) {
     const std::vector<Seam> seams = findSeams(scene, geometry, layout);
     bake.seams = seams.size();

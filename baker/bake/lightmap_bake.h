@@ -1,12 +1,12 @@
 // The bake, one plain function running its steps in order: texel coverage → leak guard →
 // irradiance → static area lights' visibility → denoise (optional) → fill invalid texels and dilate
 // into the padding → seam stitching. The irradiance and the visibility are computed tile by tile
-// (tile_grid.h): tiles a journal holds are restored instead, and a shard computes its share and
-// stops there. GL-free; bounce-bake and the tests call it.
+// (tile_grid.h) by the tile scheduler (tile_scheduler.h): tiles a journal holds are restored
+// instead, and a shard computes its share and stops there. GL-free; bounce-bake and the tests call
+// it.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -14,16 +14,16 @@
 #include "bake/leak_guard.h"
 #include "bake/light_visibility_bake.h"
 #include "bake/texel_irradiance.h"
-#include "bake/tile_exchange.h"
-#include "bake/tile_payload.h"
-#include "bake_folder/lightmap_layout.h"
+#include "bake/tile_scheduler.h"
 #include "image/image.h"
-#include "ray/ray_kernel.h"
-#include "scene/scene.h"
-#include "scene/world_geometry.h"
-#include "trace/stage_progress.h"
 
 namespace bounce {
+
+class RayKernel;
+class StagePlan;
+struct LightmapLayout;
+struct Scene;
+struct WorldGeometry;
 
 // Its stages' names, for a StagePlan (trace/stage_progress.h).
 inline constexpr char kStageCoverage[] = "texel coverage";
@@ -31,23 +31,6 @@ inline constexpr char kStageLeakGuard[] = "leak guard";
 inline constexpr char kStageIrradiance[] = "irradiance";
 inline constexpr char kStageVisibility[] = "light visibility";
 inline constexpr char kStageFilters[] = "denoise, dilate, stitch";
-
-// How the texel stages' tiles are shared out (tile_grid.h). The defaults compute every tile.
-struct LightmapTiles {
-  int size = kDefaultTileSize;  // texels on a side
-  int shard = 0, shards = 1;    // compute only shard `shard` (0-based) of `shards`'s tiles
-  // Finished tiles of earlier runs (a journal, or every shard's): restored, not computed. A
-  // tile that is not the bake's, or bytes that do not fit it, throw LoadError naming the source.
-  std::vector<TileRecord> restored;
-  // false: a tile this bake would have to compute is an error (a merge, which only gathers).
-  bool computeMissing = true;
-  // Told of each tile computed here, with its bytes, from the worker that finished it (several
-  // at once: it must lock what it shares); may be empty.
-  std::function<void(const TileRecord&)> finished;
-  // Tiles shared out among processes as they bake (tile_exchange.h); null: none. A process that
-  // is not the keeper stops after the tile stages, like a shard.
-  TileExchange* exchange = nullptr;
-};
 
 struct LightmapBakeSettings {
   // Where the steps report (those of the plan's stages named above: each begun, counted and
@@ -103,11 +86,6 @@ struct LightmapBake {
   // tiles are zero).
   uint32_t tiles = 0, tilesShare = 0, tilesRestored = 0;
   bool partial = false;
-};
-
-// Thrown when a bake that may not compute (LightmapTiles::computeMissing false) lacks tiles.
-struct MissingTiles : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 // bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): at most 4096 samples per

@@ -7,9 +7,15 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
+#include "bake/texel_coverage.h"
+#include "ray/ray_kernel.h"
+#include "scene/scene.h"
+#include "scene/world_geometry.h"
 #include "trace/path_tracer.h"
 #include "trace/sampling.h"
 #include "trace/sobol_sampler.h"
+#include "trace/stage_progress.h"
+#include "trace/trace_settings.h"
 
 namespace bounce {
 

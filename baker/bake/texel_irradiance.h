@@ -21,16 +21,17 @@
 #include <functional>
 #include <vector>
 
-#include "bake/texel_coverage.h"
 #include "bake/tile_work.h"
+#include "bake_folder/light_choice.h"
 #include "image/image.h"
-#include "ray/ray_kernel.h"
-#include "scene/scene.h"
-#include "scene/world_geometry.h"
-#include "trace/stage_progress.h"
-#include "trace/trace_settings.h"
 
 namespace bounce {
+
+class RayKernel;
+class StageProgress;
+struct Scene;
+struct TexelCoverage;
+struct WorldGeometry;
 
 struct TexelIrradiance;
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "bake/tile_payload.h"
+#include "bake/tile_record.h"
 
 namespace bounce {
 

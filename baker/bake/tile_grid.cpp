@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "bake/texel_coverage.h"
+
 namespace bounce {
 
 TileGrid::TileGrid(int width, int height, int size) : width_(width), height_(height), size_(size) {

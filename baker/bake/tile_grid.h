@@ -11,13 +11,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "bake/texel_coverage.h"
+#include "bake/tile_record.h"  // kDefaultTileSize
 
 namespace bounce {
 
-// 64 × 64 texels, GPU Lightmass's tile: a tile of the Conference Room's covered texels takes a
-// few seconds on one core, and its journal record is at most 64² × 28 bytes.
-inline constexpr int kDefaultTileSize = 64;
+struct TexelCoverage;
 
 struct TileRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // texels, [x0, x1) × [y0, y1)

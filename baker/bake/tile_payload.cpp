@@ -4,6 +4,10 @@
 #include <cmath>
 #include <string>
 
+#include "bake/light_visibility_bake.h"
+#include "bake/texel_coverage.h"
+#include "bake/texel_irradiance.h"
+
 #include "bake_folder/byte_stream.h"
 
 namespace bounce {

@@ -14,22 +14,14 @@
 #include <span>
 #include <vector>
 
-#include "bake/light_visibility_bake.h"
-#include "bake/texel_coverage.h"
-#include "bake/texel_irradiance.h"
 #include "bake/tile_grid.h"
+#include "bake/tile_record.h"
 
 namespace bounce {
 
-enum class TileStage : uint32_t { Irradiance = 1, Visibility = 2 };
-
-// One finished tile of one stage, as journalled.
-struct TileRecord {
-  TileStage stage = TileStage::Irradiance;
-  uint32_t tile = 0;
-  std::vector<unsigned char> bytes;
-  std::filesystem::path source;  // the journal it was read from (for errors); empty when new
-};
+struct TexelCoverage;
+struct TexelIrradiance;
+struct VisibilityTexels;
 
 std::vector<unsigned char> encodeIrradianceTile(const TexelIrradiance& from,
                                                 const TexelCoverage& coverage, TileRect tile);

@@ -10,8 +10,11 @@
 
 #include "bake/texel_coverage.h"
 #include "bake_folder/light_visibility.h"
+#include "bake_folder/lightmap_layout.h"
 #include "bake_folder/vpl.h"
+#include "pipeline/scene_bake_settings.h"
 #include "scene/area_lights.h"
+#include "scene/scene.h"
 
 namespace bounce {
 namespace {

@@ -19,11 +19,11 @@
 #include <cstdint>
 #include <string>
 
-#include "bake_folder/lightmap_layout.h"
-#include "pipeline/scene_bake.h"
-#include "scene/scene.h"
-
 namespace bounce {
+
+struct LightmapLayout;
+struct Scene;
+struct SceneBakeSettings;
 
 inline constexpr double kKernelBytesPerTriangle = 160.0;  // Embree 3 BVH4 + its triangle copy
 

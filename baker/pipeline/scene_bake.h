@@ -11,13 +11,15 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "bake_folder/bake_folder.h"
 #include "pipeline/scene_bake_settings.h"
-#include "ray/ray_kernel.h"
-#include "scene/scene.h"
 #include "trace/stage_progress.h"
 
 namespace bounce {
+
+struct Scene;
 
 // The estimate said the bake would go over SceneBakeSettings::maxMemory; nothing was baked.
 struct BakeOverMemoryBudget : std::runtime_error {

@@ -1,73 +1,48 @@
 #include "pipeline/scene_bake_settings.h"
 
-#include <stdexcept>
-#include <string>
+#include <limits>
+
+#include <nlohmann/json.hpp>
 
 #include "atlas/texel_density.h"
 #include "bake/lightmap_bake.h"
+#include "bake_folder/json_fields.h"
+#include "ray/ray_kernel.h"
 #include "vpl/vpl_generate.h"
 
 namespace bounce {
 
-SceneBakeSettings::SceneBakeSettings() {
+SceneBakeSettings::SceneBakeSettings() : backend(RayBackend::Embree) {
   const LightmapBakeSettings defaults = defaultBakeSettings();
   maxTexels = kDefaultMaxTexels;
-  spp = defaults.irradiance.maxSpp;
+  maxSpp = defaults.irradiance.maxSpp;
   targetError = defaults.irradiance.targetError;
   maxDepth = defaults.irradiance.maxDepth;
   denoise = defaults.denoise;
+  pointsPerTexel = defaults.pointsPerTexel;
   vpls = VplSettings{}.maxVpls;
   vplError = VplSettings{}.relativeError;
 }
 
 nlohmann::json bakeInputsJson(const SceneBakeSettings& s) {
-  return {{"texelSize", s.texelSize},
-          {"texelBudget", s.texelBudget},
-          {"maxTexels", s.maxTexels},
-          {"spp", s.spp},
-          {"targetError", s.targetError},
-          {"maxDepth", s.maxDepth},
-          {"seed", s.seed},
-          {"lightChoice", s.lightChoice == LightChoice::ByPlace ? "place" : "power"},
-          {"backend", s.backend == RayBackend::Embree ? "embree" : "bvh"},
-          {"denoise", s.denoise},
-          {"vpls", s.vpls},
-          {"vplError", s.vplError},
-          {"tileSize", s.tileSize}};
+  nlohmann::json inputs = bakeSettingsJson(s);
+  inputs["backend"] = s.backend == RayBackend::Embree ? "embree" : "bvh";
+  inputs["tileSize"] = s.tileSize;
+  return inputs;
 }
 
-SceneBakeSettings bakeSettingsFromInputs(const nlohmann::json& inputs, SceneBakeSettings s) {
-  const auto get = [&](const char* name, auto& field) {
-    const auto it = inputs.find(name);
-    try {
-      if (it == inputs.end()) throw std::runtime_error("missing");
-      field = it->get<std::remove_reference_t<decltype(field)>>();
-    } catch (const std::exception&) {
-      throw std::runtime_error(std::string("the bake inputs' \"") + name +
-                               "\" is missing or of the wrong type");
-    }
-  };
-  if (!inputs.is_object()) throw std::runtime_error("the bake inputs are not a JSON object");
-  std::string backend;
-  get("texelSize", s.texelSize);
-  get("texelBudget", s.texelBudget);
-  get("maxTexels", s.maxTexels);
-  get("spp", s.spp);
-  get("targetError", s.targetError);
-  get("maxDepth", s.maxDepth);
-  get("seed", s.seed);
-  get("backend", backend);
-  get("denoise", s.denoise);
-  get("vpls", s.vpls);
-  get("vplError", s.vplError);
-  get("tileSize", s.tileSize);
-  s.backend = parseRayBackend(backend);
-  std::string choice = "power";
-  if (inputs.contains("lightChoice")) get("lightChoice", choice);
-  if (choice != "place" && choice != "power")
-    throw std::runtime_error("the bake inputs' \"lightChoice\" is \"" + choice +
-                             "\", not \"place\" or \"power\"");
-  s.lightChoice = choice == "place" ? LightChoice::ByPlace : LightChoice::ByPower;
+SceneBakeSettings bakeSettingsFromInputs(const std::filesystem::path& file,
+                                         const nlohmann::json& inputs) {
+  if (!inputs.is_object()) throw LoadError(file, "the bake inputs are not a JSON object");
+  SceneBakeSettings s;
+  static_cast<BakeSettings&>(s) = parseBakeSettings(file, inputs, "");
+  const JsonFields f(file, inputs, "");
+  try {
+    s.backend = parseRayBackend(f.text("backend"));
+  } catch (const std::invalid_argument& e) {
+    f.fail(e.what());
+  }
+  s.tileSize = static_cast<int>(f.integer("tileSize", 1, std::numeric_limits<int>::max()));
   return s;
 }
 

@@ -24,11 +24,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bake/tile_payload.h"
+#include "bake/tile_record.h"
 
 namespace bounce {
 
-inline constexpr uint32_t kTileJournalVersion = 1;
+// 2: the key's settings are bake_folder/bake_settings.h's (bake.json's names: maxSpp, not spp).
+inline constexpr uint32_t kTileJournalVersion = 2;
 
 struct TileJournal {
   nlohmann::json key;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "bake_folder/light_choice.h"
 #include "ray/ray_kernel.h"
 
 namespace bounce {
@@ -20,12 +21,6 @@ enum class LightStrategy : uint8_t {
   Mis,        // light sampling + BRDF sampling, power heuristic (the default)
   LightOnly,  // next-event estimation only; emitters hit by bounce rays are ignored
   BrdfOnly,   // emitters count only when a BRDF-sampled ray hits them
-};
-
-// How next-event estimation picks its one light per vertex (trace/light_sampler.h).
-enum class LightChoice : uint8_t {
-  ByPlace,  // by a bound of what each light brings to the vertex (the default)
-  ByPower,  // by power alone, wherever the vertex is
 };
 
 struct TraceSettings {

@@ -7,7 +7,7 @@ namespace bounce {
 SceneBakeSettings BackgroundBake::previewSettings(int threads) {
   SceneBakeSettings s;
   s.targetError = 0.3f;  // three times looser than the final bake's 10 %
-  s.spp = 256;
+  s.maxSpp = 256;
   s.vpls = s.vpls > 0 ? 1024 : 0;
   s.threads = threads;
   return s;

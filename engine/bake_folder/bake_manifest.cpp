@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake_folder/json_fields.h"
 #include "scene/gltf_schema.h"  // checkJsonDepth
 #include "scene/load_error.h"
 
@@ -21,98 +22,9 @@ Json rgb(const glm::dvec3& v) {
   return Json::array({v.r, v.g, v.b});
 }
 
-// Reads one object's fields; every failure is a LoadError naming bake.json and the field's
-// dotted path ("atlas.width").
-class Fields {
- public:
-  Fields(const std::filesystem::path& file, const Json& object, std::string path)
-      : file_(file), object_(object), path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& why) const { throw LoadError(file_, why); }
-  std::string name(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
-  // "\"atlas.width\"", built by appends (GCC 12 warns falsely on `"\"" + string`).
-  std::string quoted(const std::string& name) const {
-    std::string q(1, '"');
-    q.append(name).push_back('"');
-    return q;
-  }
-
-  const Json* find(const char* key) const {
-    const auto it = object_.find(key);
-    return it == object_.end() ? nullptr : &*it;
-  }
-  const Json& need(const char* key, bool ok, const char* kind) const {
-    const Json* v = find(key);
-    if (v == nullptr || !ok) fail(std::string("no ").append(kind).append(" ") + quoted(name(key)));
-    return *v;
-  }
-  Fields object(const char* key) const {
-    const Json* v = find(key);
-    return {file_, need(key, v && v->is_object(), "object"), name(key)};
-  }
-  // An exact integer in [lo, hi]: 1.0, 2^32+1 for an int, or -1 for a count are refused.
-  int64_t integer(const char* key, int64_t lo, int64_t hi) const {
-    const Json* v = find(key);
-    const Json& j = need(key, v && v->is_number_integer(), "integer");
-    const bool tooBig =
-        j.is_number_unsigned() &&
-        j.get<uint64_t>() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max());
-    const int64_t value = tooBig ? hi : j.get<int64_t>();
-    if (tooBig || value < lo || value > hi)
-      fail(quoted(name(key)) + " is " + j.dump() + ", out of range " + std::to_string(lo) + ".." +
-           std::to_string(hi));
-    return value;
-  }
-  uint64_t count(const char* key) const {
-    return static_cast<uint64_t>(integer(key, 0, std::numeric_limits<int64_t>::max()));
-  }
-  double real(const char* key, double lo = 0.0,
-              double hi = std::numeric_limits<double>::max()) const {
-    const Json* v = find(key);
-    const double value = need(key, v && v->is_number(), "number").get<double>();
-    if (!(value >= lo && value <= hi))
-      fail(quoted(name(key)) + " is " + shortNumber(value) + ", out of range [" + shortNumber(lo) +
-           ", " + shortNumber(hi) + "]");
-    return value;
-  }
-  std::string text(const char* key) const {
-    const Json* v = find(key);
-    return need(key, v && v->is_string(), "string").get<std::string>();
-  }
-  bool boolean(const char* key) const {
-    const Json* v = find(key);
-    return need(key, v && v->is_boolean(), "boolean").get<bool>();
-  }
-  std::vector<std::string> texts(const char* key) const {
-    const Json* v = find(key);
-    std::vector<std::string> out;
-    for (const Json& s : need(key, v && v->is_array(), "array")) {
-      if (!s.is_string()) fail(quoted(name(key)) + " holds a non-string");
-      out.push_back(s.get<std::string>());
-    }
-    return out;
-  }
-  glm::dvec3 rgb(const Json& j, const std::string& what) const {
-    if (!j.is_array() || j.size() != 3) fail(quoted(what) + " is not an RGB triple");
-    glm::dvec3 c;
-    for (int k = 0; k < 3; ++k) {
-      if (!j[k].is_number() || !std::isfinite(j[k].get<double>()) || j[k].get<double>() < 0.0)
-        fail(quoted(what) + " holds a value that is not a finite non-negative number");
-      c[k] = j[k].get<double>();
-    }
-    return c;
-  }
-  const Json& json() const { return object_; }
-
- private:
-  const std::filesystem::path& file_;
-  const Json& object_;
-  std::string path_;
-};
-
 constexpr int64_t kIntMax = std::numeric_limits<int>::max();
 
-BakeManifest::Vpls readVpls(const Fields& f) {
+BakeManifest::Vpls readVpls(const JsonFields& f) {
   BakeManifest::Vpls v;
   v.count = f.count("count");
   v.paths = f.count("paths");
@@ -127,7 +39,7 @@ BakeManifest::Vpls readVpls(const Fields& f) {
   return v;
 }
 
-BakeManifest::Visibility readVisibility(const Fields& f) {
+BakeManifest::Visibility readVisibility(const JsonFields& f) {
   BakeManifest::Visibility v;
   v.lights = f.count("lights");
   v.punctualLights = f.count("punctualLights");
@@ -140,8 +52,8 @@ BakeManifest::Visibility readVisibility(const Fields& f) {
   return v;
 }
 
-void readMeasured(const Fields& f, BakeManifest::Measured& m) {
-  const Fields s = f.object("seconds");
+void readMeasured(const JsonFields& f, BakeManifest::Measured& m) {
+  const JsonFields s = f.object("seconds");
   BakeManifest::Measured::Seconds& t = m.seconds;
   for (auto [key, value] : {std::pair{"load", &t.load},
                             {"atlas", &t.atlas},
@@ -175,38 +87,6 @@ std::string fnv1a64Hex(std::span<const unsigned char> bytes) {
   return hex;
 }
 
-namespace {
-
-// The settings as bake.json writes them; their hash is of this text too.
-Json settingsJson(const BakeManifest::Settings& s) {
-  return {{"texelSize", s.texelSize},
-          {"texelBudget", s.texelBudget},
-          {"maxTexels", s.maxTexels},
-          {"maxSpp", s.maxSpp},
-          {"targetError", s.targetError},
-          {"maxDepth", s.maxDepth},
-          {"seed", s.seed},
-          {"denoise", s.denoise},
-          {"lightChoice", s.lightChoice},
-          {"pointsPerTexel", s.pointsPerTexel},
-          {"vpls", s.vpls},
-          {"vplError", s.vplError}};
-}
-
-}  // namespace
-
-std::string settingsHash(const BakeManifest::Settings& settings) {
-  const std::string text = settingsJson(settings).dump();
-  return fnv1a64Hex({reinterpret_cast<const unsigned char*>(text.data()), text.size()});
-}
-
-std::string settingsHashWithoutLightChoice(const BakeManifest::Settings& settings) {
-  Json json = settingsJson(settings);
-  json.erase("lightChoice");
-  const std::string text = json.dump();
-  return fnv1a64Hex({reinterpret_cast<const unsigned char*>(text.data()), text.size()});
-}
-
 std::string manifestText(const BakeManifest& m) {
   const BakeManifest::Atlas& a = m.atlas;
   const BakeManifest::Measured::Seconds& t = m.measured.seconds;
@@ -219,7 +99,7 @@ std::string manifestText(const BakeManifest& m) {
       {"sceneParts", m.sceneParts},
       {"settingsHash", m.settingsHash},
       {"scene", m.scene},
-      {"settings", settingsJson(m.settings)},
+      {"settings", bakeSettingsJson(m.settings)},
       {"lightmap",
        {{"quantity", "irradiance"},
         {"unit", "W/m^2"},
@@ -340,7 +220,7 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
     throw LoadError(file, std::string("not JSON: ") + e.what());
   }
   if (!json.is_object()) throw LoadError(file, "not a JSON object");
-  const Fields root(file, json, "");
+  const JsonFields root(file, json, "");
   BakeManifest m;
   // The version first: an older bake is named as such, not by a field it lacks.
   const Json* version = root.find("formatVersion");
@@ -353,29 +233,15 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
   m.formatVersion = kBakeFormatVersion;
   m.sceneHash = root.text("sceneHash");
   m.scene = root.text("scene");
-  const Fields parts = root.object("sceneParts");
+  const JsonFields parts = root.object("sceneParts");
   for (auto it = parts.json().begin(); it != parts.json().end(); ++it)
     m.sceneParts[it.key()] = parts.text(it.key().c_str());
   m.settingsHash = root.text("settingsHash");
 
-  const Fields s = root.object("settings");
-  m.settings.texelSize = s.real("texelSize", 0.0, kMaxBakeLength);
-  m.settings.texelBudget = s.integer("texelBudget", 0, std::numeric_limits<int64_t>::max());
-  m.settings.maxTexels = s.integer("maxTexels", 0, std::numeric_limits<int64_t>::max());
-  m.settings.maxSpp = s.integer("maxSpp", 0, kIntMax);
-  m.settings.targetError = s.real("targetError");
-  m.settings.maxDepth = s.integer("maxDepth", 0, kIntMax);
-  m.settings.seed = static_cast<uint32_t>(s.integer("seed", 0, UINT32_MAX));
-  m.settings.denoise = s.boolean("denoise");
-  if (s.json().contains("lightChoice")) m.settings.lightChoice = s.text("lightChoice");
-  if (m.settings.lightChoice != "place" && m.settings.lightChoice != "power")
-    root.fail("settings.lightChoice is \"" + m.settings.lightChoice + "\", not place or power");
-  m.settings.pointsPerTexel = s.integer("pointsPerTexel", 0, kIntMax);
-  m.settings.vpls = s.integer("vpls", 0, kIntMax);
-  m.settings.vplError = s.real("vplError");
+  m.settings = parseBakeSettings(file, root.object("settings").json(), "settings");
   m.directBaked = root.object("lightmap").texts("directBaked");
 
-  const Fields a = root.object("atlas");
+  const JsonFields a = root.object("atlas");
   m.atlas.width = static_cast<int>(a.integer("width", 1, 65536));
   m.atlas.height = static_cast<int>(a.integer("height", 1, 65536));
   m.atlas.texelSize = a.real("texelSize", 0.0, kMaxBakeLength);
@@ -391,24 +257,24 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
   m.atlas.invalidTexels = a.count("invalidTexels");
   m.atlas.notes = a.texts("notes");
 
-  const Fields samples = root.object("samples");
+  const JsonFields samples = root.object("samples");
   m.samples.total = samples.count("total");
   m.samples.perTexelMean = samples.real("perTexelMean");
   m.samples.perTexelMin = samples.count("perTexelMin");
   m.samples.perTexelMax = samples.count("perTexelMax");
   m.samples.nonFinite = samples.count("nonFinite");
-  const Fields error = root.object("estimatedError");
+  const JsonFields error = root.object("estimatedError");
   m.estimatedError.mean = error.real("mean");
   m.estimatedError.p95 = error.real("p95");
   m.estimatedError.target = error.real("target");
-  const Fields leaks = root.object("leaks");
+  const JsonFields leaks = root.object("leaks");
   m.leaks.pointsInsideGeometry = leaks.count("pointsInsideGeometry");
   m.leaks.pointsAcrossWalls = leaks.count("pointsAcrossWalls");
   m.leaks.invalidTexelsFilled = leaks.count("invalidTexelsFilled");
-  const Fields seams = root.object("seams");
+  const JsonFields seams = root.object("seams");
   m.seams.count = seams.count("count");
   m.seams.relativeMismatchAfterStitching = seams.real("relativeMismatchAfterStitching");
-  const Fields rays = root.object("rays");
+  const JsonFields rays = root.object("rays");
   m.rays.traced = rays.count("traced");
   m.rays.backend = rays.text("backend");
   readMeasured(root.object("measured"), m.measured);
@@ -417,10 +283,10 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
 
   if (root.find("files") == nullptr)
     root.fail("no \"files\" (the sizes and hashes of the folder's files): rebake");
-  const Fields files = root.object("files");
+  const JsonFields files = root.object("files");
   if (files.json().empty()) root.fail("\"files\" is empty: rebake");
   for (auto it = files.json().begin(); it != files.json().end(); ++it) {
-    const Fields record = files.object(it.key().c_str());
+    const JsonFields record = files.object(it.key().c_str());
     BakeFileRecord& r = m.files[it.key()];
     r.bytes = record.count("bytes");
     r.hash = record.text("hash");

@@ -19,6 +19,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "bake_folder/bake_settings.h"
+
 namespace bounce {
 
 inline constexpr int kBakeFormatVersion = 2;
@@ -50,17 +52,9 @@ struct BakeManifest {
   std::string scene;                              // the scene file's name (no folder)
   std::string settingsHash;                       // FNV-1a 64 of the settings' JSON
 
-  struct Settings {
-    double texelSize = 0.0;  // m, as the atlas chose it
-    int64_t texelBudget = 0, maxTexels = 0, maxSpp = 0, maxDepth = 0, pointsPerTexel = 0;
-    double targetError = 0.0;  // relative standard error a texel stops at
-    uint32_t seed = 0;
-    bool denoise = false;
-    // Next-event estimation's pick: "place" or "power" (bake.json before it existed: "power").
-    std::string lightChoice = "power";
-    int64_t vpls = 0;       // most VPLs
-    double vplError = 0.0;  // relative error of the total VPL flux to stop at
-  } settings;
+  // The settings as the bake resolved them: texelSize the atlas's, texelBudget 0 where a texel
+  // size was given (bake_settings.h).
+  BakeSettings settings;
   // Names of the lights and emissive materials whose direct light the map holds.
   std::vector<std::string> directBaked;
   struct Atlas {
@@ -127,12 +121,6 @@ struct BakeManifest {
   // Every file of the folder but bake.json, by name; set by writeBake.
   std::map<std::string, BakeFileRecord> files;
 };
-
-// FNV-1a 64 of the settings' JSON (bake.json's "settingsHash"), 16 hex digits.
-std::string settingsHash(const BakeManifest::Settings& settings);
-// The same without lightChoice: the hash of bake.json files written before it existed (which
-// mean "power").
-std::string settingsHashWithoutLightChoice(const BakeManifest::Settings& settings);
 
 // bake.json's text: deterministic (keys sorted, numbers in shortest round-trip form), one
 // newline at the end.

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bake_folder/bake_settings.h"
 #include "bake_folder/vpl_clamp.h"
 #include "image/luminance.h"
 #include "scene/load_error.h"
@@ -25,7 +26,7 @@ void checkManifestRules(const std::filesystem::path& manifestFile, const Bake& b
     throw LoadError(manifestFile, "\"" + field + "\" is " + why + ": damaged: rebake");
   };
   // The settings are hashed as written: the seed, the caps and the targets below rest on them.
-  const bool before = m.settings.lightChoice == "power" &&
+  const bool before = m.settings.lightChoice == LightChoice::ByPower &&
                       m.settingsHash == settingsHashWithoutLightChoice(m.settings);
   if (!m.settingsHash.empty() && m.settingsHash != settingsHash(m.settings) && !before)
     refuse("settingsHash", m.settingsHash + ", the settings hash to " + settingsHash(m.settings));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_clamp.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"

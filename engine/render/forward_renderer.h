@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "bake_folder/bake_folder.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/area_shadow_budget.h"
@@ -29,6 +28,8 @@
 #include "scene/scene.h"
 
 namespace bounce {
+
+struct Bake;  // bake_folder/bake_folder.h
 
 // What the VPL clamp removed over a frame (render mode vpl-clamp, every visible surface).
 struct VplClampReport {

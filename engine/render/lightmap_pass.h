@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
 #include "gl/texture.h"
 #include "render/gpu_scene.h"
 #include "render/render_mode.h"
 
 namespace bounce {
+
+struct Bake;  // bake_folder/bake_folder.h
 
 class LightmapPass {
  public:

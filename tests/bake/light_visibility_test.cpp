@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "bake/light_visibility_bake.h"
+#include "bake/texel_coverage.h"
 #include "image/luminance.h"
 #include "ray/ray_kernel.h"
 #include "scene/area_lights.h"

@@ -398,12 +398,12 @@ TEST_F(BakeRejection, ManifestFormatVersion) {
 // bake.json says which light pick next-event estimation used; bake.json files written before it
 // did mean "power" (the only pick then); anything else is refused.
 TEST_F(BakeRejection, ManifestLightChoice) {
-  rewriteManifest([](BakeManifest& m) { m.settings.lightChoice = "place"; });
-  EXPECT_EQ(readManifest(dir_).settings.lightChoice, "place");
+  rewriteManifest([](BakeManifest& m) { m.settings.lightChoice = LightChoice::ByPlace; });
+  EXPECT_EQ(readManifest(dir_).settings.lightChoice, LightChoice::ByPlace);
   nlohmann::json json = nlohmann::json::parse(manifestText(readManifest(dir_)));
   json["settings"].erase("lightChoice");
   std::ofstream(dir_ / "bake.json", std::ios::trunc) << json.dump();
-  EXPECT_EQ(readManifest(dir_).settings.lightChoice, "power");
+  EXPECT_EQ(readManifest(dir_).settings.lightChoice, LightChoice::ByPower);
   json["settings"]["lightChoice"] = "brightest";
   std::ofstream(dir_ / "bake.json", std::ios::trunc) << json.dump();
   expectRefused("bake.json", "settings.lightChoice is \"brightest\", not place or power");

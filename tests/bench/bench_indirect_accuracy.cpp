@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   app.add_option("--texel-budget", bake.texelBudget,
                  "atlas texel budget (default 0: bounce-bake's texel rule)");
   app.add_option("--texel-size", bake.texelSize, "texel edge in metres (overrides the budget)");
-  app.add_option("--spp", bake.spp, "most samples per texel");
+  app.add_option("--spp", bake.maxSpp, "most samples per texel");
   app.add_option("--target-error", bake.targetError, "per-texel relative error target");
   app.add_option("--vpls", bake.vpls,
                  "most VPLs (default 0: the lightmap alone; a static instance the atlas leaves to "
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
           "est_error_mean,mean_abs_rel_error,bias,ref_rel_std_error,ref_noise_allowance,"
           "pixels\n");
     std::printf("%d,%.5f,%d,%d,%d,%.3f,%s,%.3f,%.4f,%.4f,%+.4f,%.4f,%.4f,%zu\n", bake.texelBudget,
-                baked.layout.texelSize, baked.layout.width, baked.layout.height, bake.spp,
+                baked.layout.texelSize, baked.layout.width, baked.layout.height, bake.maxSpp,
                 bake.targetError, denoise.c_str(), baked.manifest.measured.seconds.total,
                 baked.manifest.estimatedError.mean, c.meanAbsRelError, c.bias, c.meanRelStdError,
                 c.referenceNoise, c.pixels);

@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
         const Scene scene = uncut ? test::thinWallRoomsAsWritten(t) : test::thinWallRooms(t);
         SceneBakeSettings settings = test::lightmapOnlySettings();
         settings.texelSize = texel;
-        settings.spp = spp;
+        settings.maxSpp = spp;
         const Bake bake = bakeScene(scene, settings).folder;
         RendererSettings full;
         full.mode = RenderMode::Full;

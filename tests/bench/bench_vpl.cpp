@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 
+#include "bake_folder/bake_folder.h"
 #include "generated_vpl_bake.h"
 #include "gl/context.h"
 #include "gl/render_target.h"

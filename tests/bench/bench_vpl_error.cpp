@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "timed frames per configuration (median)")
       ->check(CLI::PositiveNumber);
   app.add_option("--texel-budget", lightmap.texelBudget, "lightmap atlas texel budget");
-  app.add_option("--spp", lightmap.spp, "lightmap: most samples per texel");
+  app.add_option("--spp", lightmap.maxSpp, "lightmap: most samples per texel");
   app.add_flag("--no-lightmap", noLightmap, "skip the lightmap's point");
   app.add_option("--out", outFile, "CSV file (default: stdout)");
   app.add_option("--image-dir", imageDir, "write each frame as EXR here");
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
     }
     if (!noLightmap) {
       std::fprintf(stderr, "bench_vpl_error: baking the lightmap (%d texels, <= %d spp)\n",
-                   lightmap.texelBudget, lightmap.spp);
+                   lightmap.texelBudget, lightmap.maxSpp);
       const Bake baked = bakeScene(scene, lightmap).folder;
       RendererSettings settings;
       settings.mode = RenderMode::Indirect;

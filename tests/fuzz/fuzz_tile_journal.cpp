@@ -10,6 +10,10 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bake/light_visibility_bake.h"
+#include "bake/texel_coverage.h"
+#include "bake/texel_irradiance.h"
+#include "bake/tile_grid.h"
 #include "bake/tile_payload.h"
 #include "fuzz_input_file.h"
 #include "pipeline/tile_journal.h"

@@ -17,19 +17,8 @@ MAX_PROJECT_HEADERS = 15
 # Headers over the limit today, with the count they may not exceed: the list only shrinks (a
 # header that is back under the limit must leave it, so no room is kept for growth).
 HEADERS_OVER_THE_LIMIT = {
-    "baker/apps/bake_mpi.h": 25,
-    "baker/apps/bake_summary.h": 24,
-    "baker/bake/lightmap_bake.h": 18,
-    "baker/bake/tile_exchange.h": 16,
-    "baker/mpi/mpi_tile_exchange.h": 17,
-    "baker/pipeline/bake_memory.h": 24,
-    "baker/pipeline/scene_bake.h": 23,
-    "baker/pipeline/scene_bake_settings.h": 17,
-    "baker/pipeline/tile_journal.h": 16,
-    "engine/apps/background_bake.h": 24,
-    "engine/render/forward_pass.h": 45,
-    "engine/render/forward_renderer.h": 33,
-    "engine/render/lightmap_pass.h": 18,
+    "engine/render/forward_pass.h": 39,
+    "engine/render/forward_renderer.h": 27,
     "engine/render/shadow_pass.h": 24,
     "engine/render/vpl_pass.h": 16,
 }

@@ -27,7 +27,7 @@ const fs::path kCornell = fs::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cor
 SceneBakeSettings smallBake() {
   SceneBakeSettings s;
   s.texelBudget = 1024;
-  s.spp = 32;
+  s.maxSpp = 32;
   s.vpls = 256;
   return s;
 }
@@ -95,7 +95,7 @@ TEST(SceneBake, AnObserverCancelsInEveryStage) {
 TEST(SceneBake, ACancelInTheMiddleOfAStageEndsIt) {
   const Scene scene = loadScene(kCornell);
   SceneBakeSettings settings = smallBake();
-  settings.spp = 4096;
+  settings.maxSpp = 4096;
   settings.targetError = 0.0f;  // every texel takes all its samples: seconds of work
   settings.threads = 1;
   struct MidStage final : BakeObserver {

@@ -240,7 +240,7 @@ TEST(Tiles, TheBakeDoesNotDependOnTheTileSizeOrTheThreads) {
   const Scene scene = loadScene(kCornell);
   SceneBakeSettings a;
   a.texelBudget = 2048;
-  a.spp = 32;
+  a.maxSpp = 32;
   a.vpls = 0;
   a.tileSize = 7;
   a.threads = 1;

@@ -69,7 +69,7 @@ Camera overTheRoom() {
 SceneBake bakeVisibility(const Scene& scene) {
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelSize = 0.025f;
-  settings.spp = 16;  // the direct frame does not read the irradiance
+  settings.maxSpp = 16;  // the direct frame does not read the irradiance
   settings.targetError = 0.0f;
   settings.denoise = false;
   return bakeScene(scene, settings);

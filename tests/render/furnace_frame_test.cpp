@@ -90,7 +90,7 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
   // CI-sized.
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.targetError = 0.025f;
-  settings.spp = 16384;
+  settings.maxSpp = 16384;
   settings.texelBudget = 4096;
   const Bake baked = bakeScene(scene, settings).folder;
   testContext();

@@ -35,7 +35,7 @@ TEST(LightmapAccuracy, CornellIndirectFrameMatchesThePathTracer) {
       loadScene(std::filesystem::path(BOUNCE_SOURCE_DIR) / "content/cornell_box/cornell_box.gltf");
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelBudget = 4096;
-  settings.spp = 1024;
+  settings.maxSpp = 1024;
   settings.targetError = 0.1f;
   settings.denoise = false;
   const Bake baked = bakeScene(scene, settings).folder;
@@ -90,7 +90,7 @@ TEST(LightmapAccuracy, NoSeamJumpsLargerThanInsideAChart) {
 
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelBudget = 4096;
-  settings.spp = 512;
+  settings.maxSpp = 512;
   settings.targetError = 0.1f;
   const Bake baked = bakeScene(scene, settings).folder;
   const LightmapCharts charts = findCharts(baked.layout);

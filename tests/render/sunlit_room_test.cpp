@@ -48,7 +48,7 @@ TEST(SunlitRoom, IndirectAndFullFramesWithinFivePercentOfThePathTracer) {
       loadScene(std::filesystem::path(BOUNCE_SOURCE_DIR) / "content/sunlit_room/sunlit_room.gltf");
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelSize = 0.1f;
-  settings.spp = 512;
+  settings.maxSpp = 512;
   constexpr int kReferenceSpp = 8192;
   const SceneBake baked = bakeScene(scene, settings);
   const Camera& camera = scene.cameras.at(scene.findCamera("room"));

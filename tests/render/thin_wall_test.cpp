@@ -73,7 +73,7 @@ TEST(ThinWallLeak, NoLightmapLightInTheBilinearLookupBeyondAWallThinnerThanATexe
   const Scene scene = test::thinWallRooms(t);
   SceneBakeSettings settings = test::lightmapOnlySettings();
   settings.texelSize = 0.1f;
-  settings.spp = 64;
+  settings.maxSpp = 64;
   const Bake bake = bakeScene(scene, settings).folder;
   double litSum = 0.0;
   int lit = 0;
@@ -106,7 +106,7 @@ TEST(ThinWallLeak, NoLightmapLightAtTheDarkRoomsMultisampledEdgePixels) {
   const Scene scene = test::thinWallRooms(0.02f);
   SceneBakeSettings settings = test::lightmapOnlySettings();
   settings.texelSize = 0.1f;
-  settings.spp = 64;
+  settings.maxSpp = 64;
   const Bake bake = bakeScene(scene, settings).folder;
   test::testContext();
   RendererSettings full;

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "bake_folder/bake_folder.h"
 #include "gl/shader.h"
 #include "lightmap_scenes.h"
 #include "render/forward_renderer.h"

@@ -1,0 +1,59 @@
+// Stages 3–7 of the scene bake (scene_bake_stages.h): the lightmap over its tiles.
+#include <stdexcept>
+#include <string>
+
+#include "atlas/atlas.h"
+#include "bake/lightmap_bake.h"
+#include "pipeline/scene_bake.h"
+#include "pipeline/scene_bake_stages.h"
+#include "pipeline/tile_journal.h"
+#include "pipeline/tile_sources.h"
+
+namespace bounce {
+namespace {
+
+// `layout` (instance indices into `scene`) renumbered for staticScene(scene), which keeps the
+// static instances in order: the lightmap bake runs in the static scene, the folder keeps the
+// file scene's numbering.
+LightmapLayout staticLayout(const Scene& scene, LightmapLayout layout) {
+  std::vector<uint32_t> renumbered(scene.instances.size(), 0);
+  uint32_t next = 0;
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].mobility != Mobility::Dynamic) renumbered[i] = next++;
+  for (InstanceLightmapUv& region : layout.instances)
+    region.instance = renumbered.at(region.instance);
+  return layout;
+}
+
+}  // namespace
+
+LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
+                            const SceneBakeSettings& o, const StagePlan& plan, SceneBake& result) {
+  LightmapBakeSettings settings = defaultBakeSettings();
+  settings.stages = &plan;
+  // The tiles: this bake's share, those a journal or the parts already hold, where new ones go.
+  TileSources tiles = openTileSources(
+      o, tileJournalKey(scene, o, atlas.layout.width, atlas.layout.height), result.notes);
+  settings.tiles = std::move(tiles.tiles);
+  settings.irradiance.maxSpp = o.maxSpp;
+  settings.irradiance.targetError = o.targetError;
+  settings.irradiance.maxDepth = o.maxDepth;
+  settings.irradiance.seed = o.seed;
+  settings.irradiance.lightChoice = o.lightChoice;
+  settings.irradiance.threads = o.threads;
+  settings.denoise = o.denoise;
+  settings.pointsPerTexel = o.pointsPerTexel;
+  LightmapBake bake = bakeLightmap(*statics.scene, *statics.geometry, *statics.kernel,
+                                   staticLayout(scene, atlas.layout), settings);
+  result.tiles = bake.tiles;
+  result.tilesRestored = bake.tilesRestored;
+  if (o.resume && bake.tilesRestored > 0)
+    result.notes.push_back("resumed: " + std::to_string(bake.tilesRestored) + " of " +
+                           std::to_string(bake.tilesShare) + " tiles were in " +
+                           o.journal.string());
+  if (!bake.partial && !bake.irradiance.allFinite())
+    throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
+  return bake;
+}
+
+}  // namespace bounce

@@ -1,0 +1,79 @@
+// The bake's settings schema (bake_folder/bake_settings.h): bake.json and the tile journal's key
+// write it with one codec, so every field must come back bit for bit from its text (a resume or
+// a merge bakes with the floats the first bake used), and a field missing or out of range is
+// refused with its name.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bake_folder/bake_settings.h"
+#include "scene/load_error.h"
+
+using namespace bounce;
+
+namespace {
+
+TEST(BakeSettingsJson, EveryFieldComesBackBitForBitFromItsText) {
+  BakeSettings s;
+  s.texelSize = 0.1f;  // no float is 0.1: the text must name the float's own value
+  s.texelBudget = 12345;
+  s.maxTexels = int64_t{1} << 40;
+  s.maxSpp = 777;
+  s.targetError = 0.037f;
+  s.maxDepth = 9;
+  s.seed = 0xfffffffeu;
+  s.denoise = true;
+  s.lightChoice = LightChoice::ByPower;
+  s.pointsPerTexel = 5;
+  s.vpls = 4321;
+  s.vplError = 0.0123f;
+  const nlohmann::json text = nlohmann::json::parse(bakeSettingsJson(s).dump());
+  const BakeSettings back = parseBakeSettings("key", text, "settings");
+  EXPECT_EQ(back.texelSize, s.texelSize);
+  EXPECT_EQ(back.texelBudget, s.texelBudget);
+  EXPECT_EQ(back.maxTexels, s.maxTexels);
+  EXPECT_EQ(back.maxSpp, s.maxSpp);
+  EXPECT_EQ(back.targetError, s.targetError);
+  EXPECT_EQ(back.maxDepth, s.maxDepth);
+  EXPECT_EQ(back.seed, s.seed);
+  EXPECT_EQ(back.denoise, s.denoise);
+  EXPECT_EQ(back.lightChoice, s.lightChoice);
+  EXPECT_EQ(back.pointsPerTexel, s.pointsPerTexel);
+  EXPECT_EQ(back.vpls, s.vpls);
+  EXPECT_EQ(back.vplError, s.vplError);
+  EXPECT_EQ(settingsHash(back), settingsHash(s));
+  EXPECT_EQ(text.size(), 12u);  // one key per field, nothing else
+
+  nlohmann::json old = text;  // written before the light pick existed: "power", the only one
+  old.erase("lightChoice");
+  EXPECT_EQ(parseBakeSettings("key", old, "settings").lightChoice, LightChoice::ByPower);
+}
+
+TEST(BakeSettingsJson, AFieldMissingOrOutOfRangeIsNamed) {
+  const nlohmann::json good = bakeSettingsJson(BakeSettings{});
+  const auto refusal = [](const nlohmann::json& j) {
+    try {
+      parseBakeSettings("bake.json", j, "settings");
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  nlohmann::json missing = good;
+  missing.erase("maxSpp");
+  EXPECT_NE(refusal(missing).find("\"settings.maxSpp\""), std::string::npos) << refusal(missing);
+  nlohmann::json big = good;
+  big["texelBudget"] = int64_t{1} << 40;  // over an int
+  EXPECT_NE(refusal(big).find("\"settings.texelBudget\" is 1099511627776, out of range"),
+            std::string::npos)
+      << refusal(big);
+  nlohmann::json choice = good;
+  choice["lightChoice"] = "brightest";
+  EXPECT_NE(refusal(choice).find("settings.lightChoice is \"brightest\", not place or power"),
+            std::string::npos)
+      << refusal(choice);
+}
+
+}  // namespace
