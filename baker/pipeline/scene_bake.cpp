@@ -11,6 +11,7 @@
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
 #include "pipeline/bake_memory.h"
+#include "pipeline/probe_stage.h"
 #include "pipeline/tile_journal.h"
 #include "scene/area_lights.h"
 #include "scene/world_geometry.h"
@@ -94,6 +95,7 @@ std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSett
     return stages;  // the merge, or the keeper, runs the rest
   stages.push_back(kStageFilters);
   if (settings.vpls > 0) stages.push_back(kStageVpls);
+  stages.push_back(kStageProbes);
   return stages;
 }
 
@@ -212,6 +214,9 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
     stage.reset();
   }
   const double vplSeconds = lap.lap();
+  ProbeStage probes =
+      runProbeStage(scene, statics, geometry, *kernel, atlas.vplLitInstances, o, plan);
+  lap.lap();
   // bake.json (bake_folder/bake_manifest.h): what was baked and how; run-dependent figures under
   // `measured` only.
   BakeManifest& manifest = result.folder.manifest;
@@ -277,6 +282,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   manifest.seams = {.count = bake.seams, .relativeMismatchAfterStitching = bake.seamMismatch};
   manifest.rays = {.traced = bake.rays, .backend = kernel->name()};
   if (o.vpls > 0) manifest.vpls = vplManifest(vpls, vplArea, o);
+  if (!probes.probes.grids.empty()) manifest.probes = probes.manifest;
   if (bake.visibility) {
     const VisibilityBakeReport& v = bake.visibilityReport;
     manifest.visibility = BakeManifest::Visibility{
@@ -308,6 +314,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
       .dilate = bake.seconds.dilate,
       .stitch = bake.seconds.stitch,
       .vpls = vplSeconds,
+      .probes = probes.seconds,
       .total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
   if (bake.visibility && bake.visibilityReport.texelsOverSlots > 0)
     result.notes.push_back(
@@ -322,6 +329,8 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   result.folder.irradiance = bake.irradiance;
   if (o.vpls > 0) result.folder.vpls = vpls.vpls;
   result.folder.visibility = bake.visibility;
+  if (!probes.probes.grids.empty()) result.folder.probes = std::move(probes.probes);
+  result.notes.insert(result.notes.end(), probes.notes.begin(), probes.notes.end());
   result.folder.relativeError = errorMap(bake);
   return result;
 }
