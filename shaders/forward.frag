@@ -2,7 +2,8 @@
 // One forward pass: outgoing radiance (W/(sr·m²)) of a Lambertian surface,
 //   L_o = ρ/π · (E_punctual + E_area + E_baked) + L_e,
 // into a linear float target; E_baked is the lightmap's irradiance on static surfaces, and the
-// mode picks the terms (lightmap.glsl); dynamic instances (and every surface in the vpl mode)
+// mode picks the terms (lightmap.glsl); static instances without a lightmap region read it from
+// their irradiance probes (probes.glsl); dynamic instances (and every surface in the vpl mode)
 // get their indirect light from the virtual point lights instead (vpl.glsl). ρ = albedo × base-colour texel (linear), clamped to [0,1] as the
 // path tracer does; L_e the surface's own emission (front face; both when double-sided).
 // Each fragment shades only the lights of its view cluster (light_grid.glsl).
@@ -12,6 +13,7 @@
 #include "baked_visibility.glsl"
 #include "lights.glsl"
 #include "shadows.glsl"
+#include "probes.glsl"
 #include "lightmap.glsl"
 #include "area_light.glsl"
 #include "vpl.glsl"
@@ -92,6 +94,8 @@ void main() {
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
-  fragRadiance =
-      vec4(shadeForMode(albedo, direct, uEmission, lightmapUv, vplClamped, vplRemoved), 1.0);
+  vec3 probe = vec3(0.0);
+  if (uHasProbes) probe = probeIrradiance(vWorldPosition, n);
+  fragRadiance = vec4(
+      shadeForMode(albedo, direct, uEmission, lightmapUv, vplClamped, vplRemoved, probe), 1.0);
 }

@@ -3,15 +3,19 @@
 // The lightmap holds the irradiance E (W/m², linear RGB) a static surface receives from light
 // that reflected at least once (plus the direct light of baked-only lights), one texel per atlas
 // texel, read bilinearly at the fragment's atlas UV (v = 0 is the top row, as stored). A
-// Lambertian surface of reflectance ρ reflects it as radiance ρ/π · E (W/(sr·m²)). Dynamic
-// instances have no atlas region: with VPLs (vpl.glsl) they get E_vpl instead, without none.
+// Lambertian surface of reflectance ρ reflects it as radiance ρ/π · E (W/(sr·m²)). A static
+// instance without an atlas region (too small or thin for texels) takes the same baked light from
+// its irradiance probes (probes.glsl). Dynamic instances have no atlas region: with VPLs
+// (vpl.glsl) they get E_vpl instead, without none.
 //
 // Modes (must match lightingModeIndex in engine/render/lightmap_pass.cpp):
 //   full      ρ/π · (E_direct + E_indirect) + L_e
 //   direct    ρ/π · E_direct + L_e                (real-time direct light only)
 //   indirect  ρ/π · E_indirect                    (compare with bounce-trace --indirect-only)
-//   lightmap  E_baked / π                         (the radiance of a white, ρ = 1, surface)
-//   charts    chart colour × a checker of lightmap texels (dynamic instances grey)
+//   lightmap  E_baked / π                         (the radiance of a white, ρ = 1, surface;
+//                                                  the probes' E on probe-lit instances)
+//   charts    chart colour × a checker of lightmap texels (probe-lit static instances magenta,
+//             dynamic instances grey)
 //   vpl       ρ/π · E_vpl on every surface        (the VPLs instead of the lightmap)
 //   vpl-clamp (lum(E_vpl), lum(E_removed), 0) / π: what the VPLs give and what their clamp
 //             removed, for a white surface (luminance; the clamp report sums these)
@@ -20,8 +24,9 @@
 //   validity  each texel sampled, filled from its neighbours or padding (the same way; the
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
 //   texel-density, cascades  false colours drawn by forward.frag (view_modes.glsl)
-// E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
-// LIGHTING_* and LUMINANCE_WEIGHTS come from the C++ (engine/render/shader_constants.h).
+// E_indirect = E_baked on static surfaces (lightmap or probes), E_vpl on dynamic ones
+// (uVplReceiver). LIGHTING_* and LUMINANCE_WEIGHTS come from the C++
+// (engine/render/shader_constants.h).
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region
@@ -42,20 +47,24 @@ bool modeUsesVpls() {
   return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT);
 }
 
-vec3 bakedIrradiance(vec2 atlasUv) {
-  return uHasLightmap ? texture(uLightmap, atlasUv).rgb : vec3(0.0);
+// E_baked (W/m²): the lightmap's, or `probeIrradiance` (probes.glsl) on a probe-lit instance.
+vec3 bakedIrradiance(vec2 atlasUv, vec3 probeIrradiance) {
+  if (uHasLightmap) return texture(uLightmap, atlasUv).rgb;
+  return uHasProbes ? probeIrradiance : vec3(0.0);
 }
 
+const vec3 PROBE_LIT_COLOUR = vec3(0.8, 0.2, 0.8);
+
 vec3 chartView(vec2 atlasUv) {
-  if (!uHasLightmap) return vec3(0.18);
+  if (!uHasLightmap) return uHasProbes ? PROBE_LIT_COLOUR : vec3(0.18);
   ivec2 texel = ivec2(floor(atlasUv * uLightmapSize));
   float checker = ((texel.x + texel.y) & 1) == 0 ? 1.0 : 0.55;
   return texture(uLightmapCharts, atlasUv).rgb * checker;
 }
 
-// E_indirect (W/m²): the lightmap's, or the VPLs' on a dynamic instance.
-vec3 indirectIrradiance(vec2 atlasUv, vec3 vplIrradiance) {
-  return uVplReceiver ? vplIrradiance : bakedIrradiance(atlasUv);
+// E_indirect (W/m²): the lightmap's or the probes', or the VPLs' on a dynamic instance.
+vec3 indirectIrradiance(vec2 atlasUv, vec3 vplIrradiance, vec3 probeIrradiance) {
+  return uVplReceiver ? vplIrradiance : bakedIrradiance(atlasUv, probeIrradiance);
 }
 
 // Rec. 709 luminance: engine/image/luminance.h's weights.
@@ -65,18 +74,20 @@ float luminance(vec3 c) {
 
 // Outgoing radiance for the current mode. `directIrradiance` is the live direct E (W/m²);
 // `vplIrradiance` the VPLs' clamped E and `vplRemoved` what the clamp removed (W/m²; zero
-// unless modeUsesVpls()).
+// unless modeUsesVpls()); `probeIrradiance` the probes' E (W/m²; zero unless uHasProbes).
 vec3 shadeForMode(vec3 albedo, vec3 directIrradiance, vec3 emission, vec2 atlasUv,
-                  vec3 vplIrradiance, vec3 vplRemoved) {
+                  vec3 vplIrradiance, vec3 vplRemoved, vec3 probeIrradiance) {
   if (uLightingMode == LIGHTING_DIRECT) return albedo / PI * directIrradiance + emission;
   if (uLightingMode == LIGHTING_INDIRECT)
-    return albedo / PI * indirectIrradiance(atlasUv, vplIrradiance);
-  if (uLightingMode == LIGHTING_LIGHTMAP) return bakedIrradiance(atlasUv) / PI;
+    return albedo / PI * indirectIrradiance(atlasUv, vplIrradiance, probeIrradiance);
+  if (uLightingMode == LIGHTING_LIGHTMAP) return bakedIrradiance(atlasUv, probeIrradiance) / PI;
   if (uLightingMode == LIGHTING_CHARTS) return chartView(atlasUv);
   if (uLightingMode == LIGHTING_ERROR)
     return uHasLightmap ? texture(uLightmapCharts, atlasUv).rgb : vec3(0.18);
   if (uLightingMode == LIGHTING_VPL) return albedo / PI * vplIrradiance;
   if (uLightingMode == LIGHTING_VPL_CLAMP)
     return vec3(luminance(vplIrradiance), luminance(vplRemoved), 0.0) / PI;
-  return albedo / PI * (directIrradiance + indirectIrradiance(atlasUv, vplIrradiance)) + emission;
+  return albedo / PI *
+             (directIrradiance + indirectIrradiance(atlasUv, vplIrradiance, probeIrradiance)) +
+         emission;
 }

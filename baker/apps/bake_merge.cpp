@@ -90,7 +90,7 @@ int bakeMergeMain(int argc, char** argv) {
   CLI::App app{
       "bounce-bake merge: writes the bake folder from the parts of a sharded bake (bounce-bake "
       "SCENE -o PART_K --shard K/N, one per K): it runs the stages that need the whole map "
-      "(dilation, seams, denoiser, VPLs). The folder is the same, byte for byte, as one "
+      "(dilation, seams, denoiser, VPLs, probes). The folder is the same, byte for byte, as one "
       "process's bake with the same settings."};
   MergeOptions o;
   app.add_option("parts", o.parts, "the part files, every shard once")

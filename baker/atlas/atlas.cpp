@@ -200,7 +200,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   float texelSize = density.texelSize;
   atlas.texelRule = density.rule;
   if (!density.note.empty()) atlas.notes.push_back(density.note);
-  // Instances too small for a lightmap of their own take the VPLs' light.
+  // Instances too small for a lightmap of their own take their baked light from probes.
   std::size_t tooSmall = 0;
   std::erase_if(statics, [&](const StaticInstance& s) {
     const double texels =
@@ -214,14 +214,14 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   if (tooSmall > 0)
     atlas.notes.push_back(std::to_string(tooSmall) + " static instances cover under " +
                           std::to_string(static_cast<int>(kMinLightmapTexels)) +
-                          " texels each: they get no lightmap and take their indirect light from "
-                          "the VPLs (a larger extras.bounce.lightmapScale keeps one)");
+                          " texels each: they get no lightmap and take their baked light from "
+                          "irradiance probes (a larger extras.bounce.lightmapScale keeps one)");
   if (statics.empty()) return atlas;
   // Instance i's texel edge: the scene's over its lightmapScale.
   const auto instanceTexel = [&](const StaticInstance& s) {
     return texelSize / scene.instances[s.instance].lightmapScale;
   };
-  // Instances whose lightmap would be mostly padding around sub-texel pieces take the VPLs'
+  // Instances whose lightmap would be mostly padding around sub-texel pieces take the probes'
   // light too (kMinLightmapFill). A mesh's own uv1 is one square region: never judged.
   std::vector<std::string> sparse;
   if (settings.minLightmapFill > 0.0)
@@ -247,7 +247,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     note << (sparse.size() > 8 ? ", …) would fill" : ") would fill");
     note << " under " << settings.minLightmapFill * 100.0
          << " % of their lightmap texels (the rest padding around pieces smaller than a texel): "
-            "they get no lightmap and take their indirect light from the VPLs (a larger "
+            "they get no lightmap and take their baked light from irradiance probes (a larger "
             "extras.bounce.lightmapScale keeps one)";
     atlas.notes.push_back(note.str());
   }

@@ -18,8 +18,9 @@ namespace bounce {
 
 // An instance whose surface (area × lightmapScale²) covers fewer texels than this gets no
 // lightmap: a chair leg or a screw narrower than a texel would only be padding around a smear.
-// Its indirect light comes from the VPLs, as a dynamic instance's. A user overrides it with
-// extras.bounce.lightmapScale: 0 sends any instance to the VPLs, a larger scale gives a small
+// Its baked light comes from irradiance probes around it (bake/irradiance_probes.h; from the VPLs,
+// as a dynamic instance's, in a bake without probes). A user overrides it with
+// extras.bounce.lightmapScale: 0 sends any instance to the probes, a larger scale gives a small
 // one enough texels to keep a lightmap.
 inline constexpr double kMinLightmapTexels = 2.0;
 
@@ -28,7 +29,7 @@ inline constexpr double kMinLightmapTexels = 2.0;
 // its lightmap would be mostly padding around pieces smaller than a texel (a chair's frame, a
 // cluster of 240 small boxes, wheels), each texel a smear over them. A single square chart of
 // side s texels, fully covered, fills s²/(s + 2)² with padding 2: 0.3 at s = 2.4 (12 cm at 5 cm
-// texels). Its light comes from the VPLs; a larger extras.bounce.lightmapScale raises the fill
+// texels). Its light comes from the probes; a larger extras.bounce.lightmapScale raises the fill
 // (texels shrink against the pieces) and keeps a lightmap, AtlasSettings::minLightmapFill = 0
 // turns the rule off.
 inline constexpr double kMinLightmapFill = 0.3;
@@ -49,8 +50,8 @@ struct AtlasSettings {
 struct Atlas {
   LightmapLayout layout;
   std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
-  // Static instances left without a lightmap region, their indirect light taken from the VPLs
-  // (as dynamic ones): lightmapScale 0, under kMinLightmapTexels of surface at their texel, or
+  // Static instances left without a lightmap region, their baked light taken from irradiance
+  // probes (bake/irradiance_probes.h; the name is from when the VPLs lit them): lightmapScale 0, under kMinLightmapTexels of surface at their texel, or
   // filling under minLightmapFill of their charts' padded texels.
   std::vector<uint32_t> vplLitInstances;
   // Added to the interface: the chart of every triangle, parallel to layout.instances[i].cornerUv

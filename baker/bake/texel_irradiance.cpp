@@ -7,6 +7,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
+#include "bake/baked_light.h"
 #include "bake/texel_coverage.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
@@ -21,9 +22,7 @@ namespace bounce {
 
 namespace {
 
-constexpr uint32_t kDimPoint = 0;
-constexpr uint32_t kDimBakedDirect = 1;
-constexpr uint32_t kDimIndirect = 5;
+constexpr uint32_t kDimPoint = 0;  // then baked_light.h's dimensions
 
 // Forwards every query to `inner` and counts it on the calling thread.
 class CountingRayKernel final : public RayKernel {
@@ -49,24 +48,6 @@ class CountingRayKernel final : public RayKernel {
   mutable tbb::enumerable_thread_specific<uint64_t> count_{0};
 };
 
-// The scene seen by the baked direct light: only the lights and emissive materials marked
-// bakeDirect.
-Scene bakedDirectScene(const Scene& scene) {
-  Scene copy = scene;
-  copy.lights.clear();
-  for (const Light& light : scene.lights)
-    if (light.bakeDirect) copy.lights.push_back(light);
-  for (Material& m : copy.materials)
-    if (!m.bakeDirect) m.emission = glm::vec3(0.0f);
-  return copy;
-}
-
-bool emits(const Scene& scene) {
-  for (const Material& m : scene.materials)
-    if (m.isEmissive()) return true;
-  return false;
-}
-
 }  // namespace
 
 TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geometry,
@@ -77,13 +58,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   trace.maxDepth = settings.maxDepth;
   trace.seed = settings.seed;
   trace.lightChoice = settings.lightChoice;
-  trace.paths = PathSet::IndirectOnly;
-  const PathTracer indirect(scene, geometry, counting, trace);
-  const Scene directScene = bakedDirectScene(scene);
-  const bool anyBakedDirect = !directScene.lights.empty() || emits(directScene);
-  TraceSettings directTrace = trace;
-  directTrace.paths = PathSet::DirectOnly;
-  const PathTracer bakedDirect(directScene, geometry, counting, directTrace);
+  const BakedLight light(scene, geometry, counting, trace);
 
   const std::size_t texels = coverage.texelCount();
   TexelIrradiance out;
@@ -118,18 +93,11 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         const uint32_t pick = std::min(
             points - 1, static_cast<uint32_t>(sampler.get1D() * static_cast<float>(points)));
         const TexelPoint& point = coverage.points[begin + pick];
-        glm::vec3 e(0.0f);
-        if (anyBakedDirect) {
-          sampler.setDimension(kDimBakedDirect);
-          bool bad = false;
-          e += bakedDirect.irradiance(point.position, point.shadingNormal, sampler, &bad);
-          nonFinite[texel] += bad ? 1 : 0;
-        }
-        sampler.setDimension(kDimIndirect);
-        bool bad = false, reached = false;
-        e += indirect.irradiance(point.position, point.shadingNormal, sampler, &bad, &reached);
-        nonFinite[texel] += bad ? 1 : 0;
-        reachedSurface += reached ? 1 : 0;
+        const BakedLight::Sample sample =
+            light.sample(point.position, point.shadingNormal, sampler);
+        const glm::vec3 e = sample.irradiance;
+        nonFinite[texel] += sample.nonFinite;
+        reachedSurface += sample.reachedSurface ? 1 : 0;
         sum += glm::dvec3(e);
         const double y = luminance(e);
         const double delta = y - mean;

@@ -1,13 +1,11 @@
 // Monte Carlo irradiance E (W/m², per linear-RGB channel) at every covered texel, with an
 // error estimate per texel.
 //
-// What is gathered: E from light that reflected at least once before arriving (PathSet::
-// IndirectOnly: the renderer adds direct light live), plus the direct light of the lights the
-// scene marks as baked (Light::bakeDirect, and emitters of a Material::bakeDirect), which the
-// renderer does not draw.
+// What is gathered: the light of baked_light.h (light that reflected at least once, plus the
+// direct light of the lights and emitters marked baked-only).
 //
 // Sample s of texel i uses the sampler pattern (seed, i): dimension 0 picks one of the texel's
-// points uniformly, the baked direct light uses dimensions 1–4 and the indirect path 5 on.
+// points uniformly, the baked light uses dimensions 1 on (baked_light.h).
 // The texel value is the mean over its samples, so it estimates the mean of E over the texel's
 // covered area. Samples are taken in batches of 16 until, from 128 samples on, the relative
 // standard error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is

@@ -10,6 +10,7 @@
 #include "bake/lightmap_bake.h"
 #include "bake/tile_exchange.h"
 #include "pipeline/bake_memory.h"
+#include "pipeline/probe_stage.h"
 #include "pipeline/scene_bake_stages.h"
 #include "pipeline/tile_journal.h"
 #include "scene/area_lights.h"
@@ -65,6 +66,7 @@ std::vector<std::string> sceneBakeStages(const Scene& scene, const SceneBakeSett
     return stages;  // the merge, or the keeper, runs the rest
   stages.push_back(kStageFilters);
   if (settings.vpls > 0) stages.push_back(kStageVpls);
+  stages.push_back(kStageProbes);
   return stages;
 }
 
@@ -82,6 +84,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   }
   vplStage(statics, o, plan, result);
   lightmapFolder(scene, o, atlas, bake, statics, result);
+  probeStage(scene, statics, atlas, o, plan, result);
   result.folder.manifest.measured.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

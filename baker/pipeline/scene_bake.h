@@ -1,6 +1,6 @@
 // The bake of a whole scene as one library call: bakeScene runs the numbered stages (atlas, ray
-// kernel, texel coverage, leak guard, irradiance, light visibility, filters, VPLs), reports each
-// to a BakeObserver that can cancel (trace/stage_progress.h), and returns the bake folder's
+// kernel, texel coverage, leak guard, irradiance, light visibility, filters, VPLs, probes), reports
+// each to a BakeObserver that can cancel (trace/stage_progress.h), and returns the bake folder's
 // contents with its manifest, ready for writeBake. Nothing is written here: a cancelled or
 // failed bake leaves no file. bounce-bake, the tests, the benchmarks and the viewer's re-bake
 // call it. GL-free.

@@ -5,6 +5,7 @@
 //                                           irradiance, light visibility, filters)
 //   8 VPLs              vplStage            scene_vpl_stage.cpp
 //   the folder          lightmapFolder      scene_bake_folder.cpp (files and bake.json)
+//   9 probes            probeStage          probe_stage.cpp (instances without a lightmap)
 // Each begins its stages on the plan (so an observer sees them and can cancel), writes what it
 // makes into the SceneBake (its files, its part of bake.json, its seconds under `measured`) and
 // returns what later stages need. Internal to baker/pipeline; GL-free.
@@ -62,5 +63,10 @@ void vplStage(const StaticGeometry& statics, const SceneBakeSettings& settings,
 // VPLs' part and the total seconds.
 void lightmapFolder(const Scene& scene, const SceneBakeSettings& settings, const Atlas& atlas,
                     const LightmapBake& bake, const StaticGeometry& statics, SceneBake& result);
+
+// 9: the irradiance probes of the static instances the atlas left without a lightmap region
+// (probe_stage.h) into the folder, bake.json's "probes" and the notes, when there are any.
+void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
+                const SceneBakeSettings& settings, const StagePlan& plan, SceneBake& result);
 
 }  // namespace bounce

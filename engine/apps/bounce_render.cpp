@@ -43,6 +43,7 @@ struct Options {
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::size_t vplGroups = bounce::kMaxVplGroups;
   bool noVplCulling = false;
+  bool noProbes = false;
   bool noVplShadows = false;
   bool noLightCulling = false;
   std::string dynamicVpls = "retrace";
@@ -64,6 +65,7 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.shadows.filterRadius = options.shadowFilterRadius;
   settings.vpls.groups = options.vplGroups;
   settings.vpls.culling = !options.noVplCulling;
+  settings.probes = !options.noProbes;
   settings.vpls.shadows.enabled = !options.noVplShadows;
   // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
   settings.lightCulling.enabled = !options.noLightCulling;
@@ -279,6 +281,9 @@ int main(int argc, char** argv) {
                  "VPL clamp distance r in metres: the geometry term is capped at 1/r^2; 0 "
                  "unclamped (default: the bake's)")
       ->check(CLI::Range(0.0f, 1e6f));
+  app.add_flag("--no-probes", options.noProbes,
+               "light the static instances without a lightmap region from the VPLs, as before "
+               "the bake's irradiance probes (for comparison)");
   app.add_flag("--no-vpl-culling", options.noVplCulling,
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-light-culling", options.noLightCulling,

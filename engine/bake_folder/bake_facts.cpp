@@ -22,6 +22,8 @@ BakeFacts bakeFacts(const Bake& bake, const std::filesystem::path& dir) {
   f.atlasHeight = bake.layout.height;
   f.texelSize = bake.layout.texelSize;
   f.vpls = bake.vpls ? bake.vpls->size() : 0;
+  f.probes = bake.probes ? bake.probes->probes.size() : 0;
+  f.probeGrids = bake.probes ? bake.probes->grids.size() : 0;
   f.bakedAreaLights = bake.visibility ? bake.visibility->lightCount : 0;
   f.punctualLights = bake.visibility ? bake.visibility->punctualCount : 0;
   f.errorMap = bake.relativeError.has_value();
@@ -68,6 +70,9 @@ std::vector<std::string> bakeFactLines(const BakeFacts& f) {
                            100.0 * *f.errorP95) +
                     (f.errorTarget ? format(" (target %.1f%%)", 100.0 * *f.errorTarget) : ""));
   if (f.vpls > 0) lines.push_back(format("%.0f VPLs", static_cast<double>(f.vpls)));
+  if (f.probes > 0)
+    lines.push_back(format("%.0f probes around %.0f instances without a lightmap",
+                           static_cast<double>(f.probes), static_cast<double>(f.probeGrids)));
   if (f.bakedAreaLights + f.punctualLights > 0)
     lines.push_back(format("baked visibility of %.0f area and %.0f punctual lights",
                            static_cast<double>(f.bakedAreaLights),

@@ -23,10 +23,11 @@ struct BakeFacts {
   std::optional<double> errorMean, errorP95, errorTarget;  // relative standard error
   std::optional<double> bakeSeconds;                       // wall time of the bake
   std::size_t vpls = 0;
-  std::size_t bakedAreaLights = 0;   // static area lights with baked visibility
-  std::size_t punctualLights = 0;    // punctual lights the visibility indexes (static: baked)
-  bool errorMap = false;             // error.exr present
-  std::optional<double> ageSeconds;  // since bake.json was written
+  std::size_t probes = 0, probeGrids = 0;  // irradiance probes, one grid per instance
+  std::size_t bakedAreaLights = 0;         // static area lights with baked visibility
+  std::size_t punctualLights = 0;          // punctual lights the visibility indexes (static: baked)
+  bool errorMap = false;                   // error.exr present
+  std::optional<double> ageSeconds;        // since bake.json was written
 };
 
 // `dir` is the folder the bake was read from (for its name and bake.json's time); empty for a

@@ -22,6 +22,7 @@
 #include "bake_folder/bake_input_file.h"
 #include "bake_folder/byte_stream.h"
 #include "bake_folder/manifest_rules.h"
+#include "bake_folder/probe_file.h"
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
 #include "image/atomic_file.h"
@@ -241,8 +242,8 @@ Image readLayoutExr(const fs::path& file, const LightmapLayout& layout) {
 }
 
 // The files a bake folder may hold besides bake.json; bake.json records each one present.
-constexpr const char* kFolderFiles[] = {kLayoutName, kLightmapName, kErrorMapName, kVplFileName,
-                                        kVisibilityFileName};
+constexpr const char* kFolderFiles[] = {kLayoutName,  kLightmapName,       kErrorMapName,
+                                        kVplFileName, kVisibilityFileName, kProbeFileName};
 
 // What the manifest says must agree with the folder's files: the first disagreement as (file,
 // reason), or nullopt. Shared by the writer (a caller's bug) and the reader (a damaged folder).
@@ -280,7 +281,36 @@ std::optional<std::pair<std::string, std::string>> disagreement(const BakeManife
                                               std::to_string(bake.visibility->punctualCount) +
                                               " punctual lights, bake.json says " +
                                               std::to_string(m.visibility->punctualLights)};
+  if (m.probes.has_value() != bake.probes.has_value())
+    return std::pair{kProbeFileName, bake.probes ? "present, but bake.json describes no probes"
+                                                 : "missing, bake.json describes probes"};
+  if (bake.probes && (m.probes->count != bake.probes->probes.size() ||
+                      m.probes->grids != bake.probes->grids.size()))
+    return std::pair{kProbeFileName, "holds " + std::to_string(bake.probes->probes.size()) +
+                                         " probes in " + std::to_string(bake.probes->grids.size()) +
+                                         " grids, bake.json says " +
+                                         std::to_string(m.probes->count) + " in " +
+                                         std::to_string(m.probes->grids)};
   return std::nullopt;
+}
+
+// Every probe grid lies around a static instance of `scene` that has no lightmap region.
+void checkProbesAgainstScene(const fs::path& file, const IrradianceProbes& probes,
+                             const LightmapLayout& layout, const Scene& scene) {
+  for (std::size_t i = 0; i < probes.grids.size(); ++i) {
+    const uint32_t instance = probes.grids[i].instance;
+    const std::string which =
+        "grid " + std::to_string(i) + ": instance " + std::to_string(instance);
+    if (instance >= scene.instances.size())
+      throw LoadError(file, which + " out of range (the scene has " +
+                                std::to_string(scene.instances.size()) + " instances)");
+    if (scene.instances[instance].mobility != Mobility::Static)
+      throw LoadError(file, which + " ('" + scene.instances[instance].name +
+                                "') is dynamic: its light comes from the VPLs");
+    if (layout.find(instance) != nullptr)
+      throw LoadError(file,
+                      which + " ('" + scene.instances[instance].name + "') has a lightmap region");
+  }
 }
 
 // Every file bake.json records is there with its recorded size and hash, and every file of the
@@ -396,6 +426,11 @@ Bake readBake(const fs::path& dir, const Scene& scene) {
                                           " punctual lights, " + scene.source + " has " +
                                           std::to_string(scene.lights.size()) + ": rebake");
   }
+  if (files.contains(kProbeFileName)) {
+    const fs::path probeFile = dir / kProbeFileName;
+    bake.probes = decodeProbes(probeFile, files[kProbeFileName]);
+    checkProbesAgainstScene(probeFile, *bake.probes, bake.layout, scene);
+  }
   if (const auto why = disagreement(manifest, bake)) throw LoadError(dir / why->first, why->second);
   checkManifestRules(manifestFile, bake, scene);
   return bake;
@@ -437,6 +472,7 @@ void writeBake(const fs::path& dir, const Bake& bake) {
     if (bake.vpls) writeVplFile(tmp / kVplFileName, *bake.vpls);
     if (bake.visibility) writeVisibilityFile(tmp / kVisibilityFileName, *bake.visibility);
     if (bake.relativeError) writeExr(tmp / kErrorMapName, *bake.relativeError);
+    if (bake.probes) writeProbeFile(tmp / kProbeFileName, *bake.probes);
     // The records are of the bytes on disk, read back, as readBake will see them.
     BakeManifest manifest = bake.manifest;
     manifest.files.clear();

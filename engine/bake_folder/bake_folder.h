@@ -11,6 +11,8 @@
 //   <dir>/vpls            the virtual point lights (optional; engine/bake_folder/vpl_file.h)
 //   <dir>/visibility.bin  the static area lights' visibility per texel (optional;
 //                         engine/bake_folder/visibility_file.h, bake_folder/light_visibility.h)
+//   <dir>/probes.bin      the irradiance probes of the static instances without a lightmap
+//                         region (optional; engine/bake_folder/probe_file.h, irradiance_probes.h)
 //   <dir>/error.exr       per texel, the estimated relative standard error of its irradiance
 //                         (dimensionless, the same in R, G and B; -1 where the texel has no
 //                         estimate of its own: uncovered, or filled from its neighbours)
@@ -26,6 +28,7 @@
 #include <vector>
 
 #include "bake_folder/bake_manifest.h"
+#include "bake_folder/irradiance_probes.h"
 #include "bake_folder/light_visibility.h"
 #include "bake_folder/lightmap_layout.h"
 #include "bake_folder/scene_hash.h"
@@ -46,6 +49,9 @@ struct Bake {
   std::optional<std::vector<Vpl>> vpls;
   // The static area lights' baked visibility (<dir>/visibility.bin when present).
   std::optional<BakedVisibility> visibility;
+  // The irradiance probes of the static instances without an atlas region (<dir>/probes.bin when
+  // present): a grid for each, no other instance's.
+  std::optional<IrradianceProbes> probes;
   // Per texel the estimated relative standard error of E, or kNoErrorEstimate (<dir>/error.exr
   // when present).
   std::optional<Image> relativeError;
@@ -67,7 +73,8 @@ class StaleBakeError : public LoadError {
 // why, where bake.json tells: another scene file ("scene"), which parts changed ("sceneParts",
 // scene_hash.h), or a scene file modified after bake.json), when a file's size or hash is not
 // the one bake.json records (damaged, or another bake's), when a file disagrees with the
-// manifest (atlas size, regions, VPL count, visibility lights), and when a value is out of its
+// manifest (atlas size, regions, VPL count, visibility lights, probe count), when a probe grid
+// names an instance that is not static or has a lightmap region, and when a value is out of its
 // documented range (docs/bake_folder.md: irradiance finite in [0, kMaxBakeIrradiance], UVs in
 // [0, 1], VPL flux and positions). A stale bake throws StaleBakeError.
 Bake readBake(const std::filesystem::path& dir, const Scene& scene);

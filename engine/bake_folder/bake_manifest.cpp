@@ -52,6 +52,21 @@ BakeManifest::Visibility readVisibility(const JsonFields& f) {
   return v;
 }
 
+BakeManifest::Probes readProbes(const JsonFields& f) {
+  BakeManifest::Probes p;
+  p.count = f.count("count");
+  p.grids = f.count("grids");
+  p.invalidFilled = f.count("invalidFilled");
+  p.unread = f.count("unread");
+  p.samplesTotal = f.count("samplesTotal");
+  p.samplesPerProbeMin = f.count("samplesPerProbeMin");
+  p.samplesPerProbeMax = f.count("samplesPerProbeMax");
+  p.meanRelativeError = f.real("meanRelativeError");
+  p.targetError = f.real("targetError");
+  p.leakTestRays = f.count("leakTestRays");
+  return p;
+}
+
 void readMeasured(const JsonFields& f, BakeManifest::Measured& m) {
   const JsonFields s = f.object("seconds");
   BakeManifest::Measured::Seconds& t = m.seconds;
@@ -68,6 +83,8 @@ void readMeasured(const JsonFields& f, BakeManifest::Measured& m) {
                             {"vpls", &t.vpls},
                             {"total", &t.total}})
     *value = s.real(key);
+  // Bakes before the probes have no probe stage.
+  if (s.find("probes")) t.probes = s.real("probes");
   m.raysPerSecond = f.real("raysPerSecond");
   m.peakBytes = f.real("peakBytes");
   m.estimatedPeakBytes = f.real("estimatedPeakBytes");
@@ -162,6 +179,7 @@ std::string manifestText(const BakeManifest& m) {
           {"dilate", t.dilate},
           {"stitch", t.stitch},
           {"vpls", t.vpls},
+          {"probes", t.probes},
           {"total", t.total}}},
         {"raysPerSecond", m.measured.raysPerSecond},
         {"peakBytes", m.measured.peakBytes},
@@ -207,6 +225,26 @@ std::string manifestText(const BakeManifest& m) {
         {"texelsOverSlots", v.texelsOverSlots},
         {"otherLightsShare", v.otherLightsShare},
         {"rays", v.rays}};
+  }
+  if (m.probes) {
+    const BakeManifest::Probes& p = *m.probes;
+    json["probes"] = {
+        {"file", "probes.bin"},
+        {"unit", "W/m^2"},
+        {"holds",
+         "per static instance without a lightmap region, a grid of probes, each the L1 spherical "
+         "harmonics of the irradiance E(n) it would give a surface of normal n, the light the "
+         "lightmap holds (docs/probes.md)"},
+        {"count", p.count},
+        {"grids", p.grids},
+        {"invalidFilled", p.invalidFilled},
+        {"unread", p.unread},
+        {"samplesTotal", p.samplesTotal},
+        {"samplesPerProbeMin", p.samplesPerProbeMin},
+        {"samplesPerProbeMax", p.samplesPerProbeMax},
+        {"meanRelativeError", p.meanRelativeError},
+        {"targetError", p.targetError},
+        {"leakTestRays", p.leakTestRays}};
   }
   return json.dump(1) + "\n";
 }
@@ -280,6 +318,7 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
   readMeasured(root.object("measured"), m.measured);
   if (root.find("vpls")) m.vpls = readVpls(root.object("vpls"));
   if (root.find("visibility")) m.visibility = readVisibility(root.object("visibility"));
+  if (root.find("probes")) m.probes = readProbes(root.object("probes"));
 
   if (root.find("files") == nullptr)
     root.fail("no \"files\" (the sizes and hashes of the folder's files): rebake");

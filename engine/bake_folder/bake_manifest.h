@@ -104,13 +104,26 @@ struct BakeManifest {
     double otherLightsShare = 0.0;
   };
   std::optional<Visibility> visibility;
+  // Present exactly when the folder has a probes.bin (bake_folder/probe_file.h).
+  struct Probes {
+    uint64_t count = 0, grids = 0;
+    // Probes inside geometry or behind a wall (most of their test rays met back faces), filled
+    // from the valid probes of their grid.
+    uint64_t invalidFilled = 0;
+    // Grid points no surface of their instance can read: not sampled, stored as 0.
+    uint64_t unread = 0;
+    uint64_t samplesTotal = 0, samplesPerProbeMin = 0, samplesPerProbeMax = 0;
+    double meanRelativeError = 0.0, targetError = 0.0;  // relative standard error of E(n)
+    uint64_t leakTestRays = 0;  // rays of the inside-geometry test (not of the estimate)
+  };
+  std::optional<Probes> probes;
 
   // Run-dependent: differs between two bakes of identical inputs.
   struct Measured {
     struct Seconds {
       double load = 0.0, atlas = 0.0, rayKernel = 0.0, coverage = 0.0, leakGuard = 0.0,
              irradiance = 0.0, visibility = 0.0, denoise = 0.0, dilate = 0.0, stitch = 0.0,
-             vpls = 0.0, total = 0.0;
+             vpls = 0.0, probes = 0.0, total = 0.0;
     } seconds;
     double raysPerSecond = 0.0;
     double peakBytes = 0.0;  // the process's peak resident set at the end of the bake

@@ -11,8 +11,9 @@ ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
                shaderConstants()) {}
 
 void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
-                       const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,
-                       RenderMode mode, const glm::mat4& viewProjection, gl::RenderTarget& target) {
+                       const ShadowPass& shadows, const LightmapPass& lightmap,
+                       const ProbePass& probes, const VplPass& vpls, RenderMode mode,
+                       const glm::mat4& viewProjection, gl::RenderTarget& target) {
   target.bind();
   gl::clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   gl::setDepthTest(true);
@@ -27,13 +28,15 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Li
   program_.set("uAlbedoTexture", TextureUnit::kAlbedo);
   scene.bindEmitters(TextureUnit::kEmitters);
   lightmap.bind(program_, mode);
+  probes.bind(program_);
   vpls.bind(program_);
 
   const std::span<const GpuInstance> instances = scene.instances();
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const GpuInstance& instance = instances[i];
     lightmap.setInstance(program_, i);
-    vpls.setInstance(program_, scene, i, lightmap.lightmapped(i));
+    probes.setInstance(program_, i);
+    vpls.setInstance(program_, scene, i, lightmap.lightmapped(i) || probes.probeLit(i));
     const GpuMaterial& material = scene.bindMaterial(instance, program_, TextureUnit::kAlbedo);
     // glTF: a single-sided surface is invisible from behind (and emits only forwards).
     gl::setBackFaceCulling(!material.doubleSided, instance.mirrored);

@@ -1,6 +1,6 @@
 // The lit forward pass: every instance with its own model matrix, shaded by shaders/forward.frag
 // (emission + the punctual lights with their shadow maps + the area lights of each fragment's
-// view cluster (light_culling.h), the lightmap or the VPLs for
+// view cluster (light_culling.h), the lightmap, the irradiance probes or the VPLs for
 // indirect light) into a linear float target:
 // outgoing radiance, W/(sr·m²).
 #pragma once
@@ -13,6 +13,7 @@
 #include "render/light_culling.h"
 #include "render/light_table.h"
 #include "render/lightmap_pass.h"
+#include "render/probe_pass.h"
 #include "render/shadow_pass.h"
 #include "render/vpl_pass.h"
 
@@ -24,8 +25,9 @@ class ForwardPass {
 
   // Clears `target` to black and draws the scene seen through `viewProjection`.
   void draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
-            const ShadowPass& shadows, const LightmapPass& lightmap, const VplPass& vpls,
-            RenderMode mode, const glm::mat4& viewProjection, gl::RenderTarget& target);
+            const ShadowPass& shadows, const LightmapPass& lightmap, const ProbePass& probes,
+            const VplPass& vpls, RenderMode mode, const glm::mat4& viewProjection,
+            gl::RenderTarget& target);
 
  private:
   gl::Program program_;

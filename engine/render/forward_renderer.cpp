@@ -26,6 +26,7 @@ struct ForwardRenderer::Passes {
   LightTable lightTable;
   LightCulling culling;
   LightmapPass lightmap;
+  ProbePass probes;
   VplPass vpls;
   ForwardPass forward;
 
@@ -157,6 +158,8 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
   p.lightmap.attach(bake, p.scene);
+  p.probes.attach(bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{},
+                  p.scene.instances().size());
   if (!p.lightmap.visibilityRefusal().empty())
     warnings_.push_back("the bake's area-light visibility is not used (" +
                         p.lightmap.visibilityRefusal() + "): area lights use their shadow maps");
@@ -304,12 +307,21 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
                        floor))
     p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   followDynamicMoves();
-  p.vpls.renderShadows(p.scene);
+  // The VPL shadow cubes only where some surface of this mode takes the VPLs' light: with every
+  // static surface baked (lightmap or probes) and nothing dynamic, none is drawn.
+  std::vector<uint8_t> baked(p.scene.instances().size(), 0);
+  for (std::size_t i = 0; i < baked.size(); ++i)
+    baked[i] = p.lightmap.lightmapped(i) || p.probes.probeLit(i) ? 1 : 0;
+  const bool everySurface =
+      settings_.mode == RenderMode::Vpl || settings_.mode == RenderMode::VplClamp;
+  const bool vplsShaded =
+      everySurface || settings_.mode == RenderMode::Full || settings_.mode == RenderMode::Indirect;
+  if (vplsShaded && p.vpls.anyReceiver(p.scene, baked, everySurface)) p.vpls.renderShadows(p.scene);
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
                    p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
   p.lightTable.update();
-  p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.vpls, settings_.mode,
-                 cameraViewProjection, target);
+  p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.probes, p.vpls,
+                 settings_.mode, cameraViewProjection, target);
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height, int samples) {

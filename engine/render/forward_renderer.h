@@ -60,6 +60,9 @@ struct RendererSettings {
   // (traced without them), their paths cut where the dynamic instances block them
   // (vpl_runtime/vpl_occlusion.h), which misses the light those instances reflect.
   VplTracer vplTracer;
+  // false: the static instances without a lightmap region take the VPLs' light even when the
+  // bake has irradiance probes for them, as before the probes (bounce-render --no-probes).
+  bool probes = true;
 };
 
 class ForwardRenderer {

@@ -1,5 +1,6 @@
 #include "render/lightmap_pass.h"
 
+#include "bake_folder/bake_folder.h"
 #include "bake_folder/lightmap_charts.h"
 #include "bake_folder/texel_error.h"
 #include "render/shader_constants.h"

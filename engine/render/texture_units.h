@@ -11,9 +11,10 @@ struct TextureUnit {
   static constexpr int kSpotShadow0 = 2;        // sampler2DShadow × kMaxSpotShadows (2..5)
   static constexpr int kPointShadow0 = 6;       // samplerCubeShadow × kMaxPointShadows (6..7)
   static constexpr int kDirectionalShadow = 8;  // reserved: cascades (shadow_directional.glsl)
-  // sampler2DArray: every area-light slot's cube, 6 layers each (area_shadow_maps.h); 10, 11 free
+  // sampler2DArray: every area-light slot's cube, 6 layers each (area_shadow_maps.h)
   static constexpr int kAreaShadow0 = 9;
-  static constexpr int kLightmap = 12;        // sampler2D: baked irradiance (lightmap.glsl)
+  static constexpr int kProbes = 10;    // samplerBuffer: irradiance probes (probes.glsl); 11 free
+  static constexpr int kLightmap = 12;  // sampler2D: baked irradiance (lightmap.glsl)
   static constexpr int kLightmapCharts = 13;  // sampler2D: chart colours (lightmap.glsl)
   static constexpr int kLightTable = 14;      // samplerBuffer: every light (render/light_table.h)
   // sampler2DArrayShadow: the VPL groups' shadow cubes (vpl_shadows.glsl). Beyond the 16 units

@@ -139,13 +139,23 @@ void VplPass::bind(gl::Program& program) const {
 }
 
 void VplPass::setInstance(gl::Program& program, const GpuScene& scene, std::size_t index,
-                          bool lightmapped) const {
+                          bool baked) const {
   const std::span<const GpuInstance> instances = scene.instances();
-  // Every surface without a lightmap takes the VPLs' light: dynamic instances, and static ones
-  // the atlas left without a region (too small, or lightmapScale 0; atlas/atlas.h).
+  // Every surface without baked light takes the VPLs' light: dynamic instances, and static ones
+  // with neither a lightmap region nor probes (a bake made before the probes).
   const bool receiver = attached_ && index < instances.size() &&
-                        (instances[index].mobility == Mobility::Dynamic || !lightmapped);
+                        (instances[index].mobility == Mobility::Dynamic || !baked);
   program.set("uVplReceiver", receiver ? 1 : 0);
+}
+
+bool VplPass::anyReceiver(const GpuScene& scene, std::span<const uint8_t> baked,
+                          bool everySurface) const {
+  if (!attached_) return false;
+  if (everySurface) return true;
+  const std::span<const GpuInstance> instances = scene.instances();
+  for (std::size_t i = 0; i < instances.size(); ++i)
+    if (instances[i].mobility == Mobility::Dynamic || i >= baked.size() || !baked[i]) return true;
+  return false;
 }
 
 }  // namespace bounce

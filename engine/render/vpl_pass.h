@@ -61,9 +61,12 @@ class VplPass {
   void bind(gl::Program& program) const;
   // Per draw: whether instance `index` (into GpuScene::instances) is lit by the VPLs in the
   // full and indirect modes (when VPLs are attached: a dynamic instance, or a static one without
-  // a lightmap region, `lightmapped` false).
+  // baked light, `baked` false: no lightmap region and no probes).
   void setInstance(gl::Program& program, const GpuScene& scene, std::size_t index,
-                   bool lightmapped) const;
+                   bool baked) const;
+  // Whether any instance of `scene` is drawn from the VPLs in `mode` (the vpl modes: all; full
+  // and indirect: the dynamic ones and the static ones without baked light, baked[i] false).
+  bool anyReceiver(const GpuScene& scene, std::span<const uint8_t> baked, bool everySurface) const;
 
   // The light table's VPL sections (render/light_table.h): 3 texels per light, then the cuts.
   const std::vector<glm::vec4>& lightTexels() const { return lightTexels_; }

@@ -408,7 +408,7 @@ class GltfBuilder {
   }
 
   // extras.bounce.lightmapScale of a node, else its parent's: a number in [0, kMaxLightmapScale]
-  // (0: no lightmap, indirect light from the VPLs).
+  // (0: no lightmap, baked light from irradiance probes).
   float lightmapScale(const tinygltf::Node& node, float inherited, const std::string& what) const {
     if (!node.extras.Has("bounce")) return inherited;
     const tinygltf::Value& bounce = node.extras.Get("bounce");
@@ -418,7 +418,7 @@ class GltfBuilder {
     if (!(scale >= 0.0 && scale <= kMaxLightmapScale))
       fail(what + ": extras.bounce.lightmapScale must be a number in [0, " +
            std::to_string(static_cast<int>(kMaxLightmapScale)) +
-           "] (texels per metre relative to the scene's; 0: no lightmap, light from the VPLs)");
+           "] (texels per metre relative to the scene's; 0: no lightmap, light from probes)");
     return static_cast<float>(scale);
   }
 

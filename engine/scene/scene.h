@@ -74,7 +74,7 @@ struct Instance {
   Mobility mobility = Mobility::Static;
   // Lightmap texels per metre relative to the scene's density (glTF extras.bounce.lightmapScale,
   // inherited by child nodes): 2 gives texels half as wide, 4× as many per m². In [0, 64]; 0
-  // gives it no lightmap: its indirect light comes from the VPLs, as a dynamic instance's (the
+  // gives it no lightmap: its baked light comes from irradiance probes around it (the
   // atlas does the same for an instance under kMinLightmapTexels, atlas/atlas.h).
   float lightmapScale = 1.0f;
 };

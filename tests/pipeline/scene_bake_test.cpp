@@ -46,7 +46,7 @@ TEST(SceneBake, StagesReachTheObserverInOrderEachFinished) {
   const Scene scene = loadScene(kCornell);
   const SceneBakeSettings settings = smallBake();
   const std::vector<std::string> plan = sceneBakeStages(scene, settings);
-  ASSERT_EQ(plan.size(), 8u);  // the box's light is a static area light: visibility runs
+  ASSERT_EQ(plan.size(), 9u);  // the box's light is a static area light: visibility runs
   RecordingObserver observer;
   const SceneBake baked = bakeScene(scene, settings, &observer);
   int stage = 0;

@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake_folder/probe_file.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/tile_journal.h"
 #include "scene/load.h"
@@ -233,6 +234,35 @@ TEST_F(TileBake, MpiRanksBakeTheBytesOfOneProcess) {
   expectSameBake(dir_ / "whole.bake", dir_ / "mpi.bake", "mpirun -np 2");
 }
 #endif
+
+// The probe stage the same way: the Cornell box's short block sent to the probes
+// (lightmapScale 0), baked on one thread with 7-texel tiles and on all cores with 64-texel tiles,
+// gives the same probes.bin bytes (each probe a function of the scene, the settings and its index).
+TEST(Tiles, TheProbesDoNotDependOnTheTileSizeOrTheThreads) {
+  Scene scene = loadScene(kCornell);
+  bool found = false;
+  for (Instance& instance : scene.instances)
+    if (instance.name == "short_block") {
+      instance.lightmapScale = 0.0f;
+      found = true;
+    }
+  ASSERT_TRUE(found);
+  SceneBakeSettings a;
+  a.texelBudget = 1024;
+  a.spp = 256;
+  a.vpls = 0;
+  a.tileSize = 7;
+  a.threads = 1;
+  SceneBakeSettings b = a;
+  b.tileSize = 64;
+  b.threads = 0;
+  const SceneBake x = bakeScene(scene, a), y = bakeScene(scene, b);
+  ASSERT_TRUE(x.folder.probes && y.folder.probes);
+  EXPECT_GE(x.folder.probes->grids.size(), 1u);  // the block, and what the coarse atlas adds
+  EXPECT_EQ(encodeProbes(*x.folder.probes), encodeProbes(*y.folder.probes));
+  ASSERT_TRUE(x.folder.manifest.probes && y.folder.manifest.probes);
+  EXPECT_EQ(x.folder.manifest.probes->samplesTotal, y.folder.manifest.probes->samplesTotal);
+}
 
 // In the library: 7-texel tiles on one thread and 64-texel tiles on all cores give the same
 // lightmap, error map and visibility bit for bit.

@@ -275,8 +275,9 @@ TEST(VplRender, DynamicInstanceInIndirectModeGetsTheVpls) {
 }
 
 // A static instance the atlas left without a region (too small for a lightmap, or
-// lightmapScale 0: atlas/atlas.h) takes the VPLs' light as a dynamic one does, in full and
-// indirect alike (without the rule it read no indirect light at all).
+// lightmapScale 0: atlas/atlas.h), in a bake without irradiance probes for it (this one is made
+// by hand), takes the VPLs' light as a dynamic one does, in full and indirect alike (without the
+// rule it read no indirect light at all).
 TEST(VplRender, StaticInstanceWithoutALightmapRegionGetsTheVpls) {
   expectIndirectIsTheVplFrame(Mobility::Static);
 }

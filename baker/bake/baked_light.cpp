@@ -1,0 +1,52 @@
+#include "bake/baked_light.h"
+
+namespace bounce {
+namespace {
+
+bool emits(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (m.isEmissive()) return true;
+  return false;
+}
+
+TraceSettings withPaths(TraceSettings trace, PathSet paths) {
+  trace.paths = paths;
+  return trace;
+}
+
+}  // namespace
+
+Scene bakedDirectScene(const Scene& scene) {
+  Scene copy = scene;
+  copy.lights.clear();
+  for (const Light& light : scene.lights)
+    if (light.bakeDirect) copy.lights.push_back(light);
+  for (Material& m : copy.materials)
+    if (!m.bakeDirect) m.emission = glm::vec3(0.0f);
+  return copy;
+}
+
+BakedLight::BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
+                       TraceSettings trace)
+    : directScene_(bakedDirectScene(scene)),
+      anyBakedDirect_(!directScene_.lights.empty() || emits(directScene_)),
+      indirect_(scene, geometry, kernel, withPaths(trace, PathSet::IndirectOnly)),
+      bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {}
+
+BakedLight::Sample BakedLight::sample(glm::vec3 position, glm::vec3 normal,
+                                      SobolSampler& sampler) const {
+  Sample s;
+  if (anyBakedDirect_) {
+    sampler.setDimension(kDimBakedDirect);
+    bool bad = false;
+    s.irradiance += bakedDirect_.irradiance(position, normal, sampler, &bad);
+    s.nonFinite += bad ? 1 : 0;
+  }
+  sampler.setDimension(kDimIndirect);
+  bool bad = false;
+  s.irradiance += indirect_.irradiance(position, normal, sampler, &bad, &s.reachedSurface);
+  s.nonFinite += bad ? 1 : 0;
+  return s;
+}
+
+}  // namespace bounce

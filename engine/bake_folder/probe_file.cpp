@@ -1,0 +1,141 @@
+#include "bake_folder/probe_file.h"
+
+#include <cmath>
+#include <string>
+
+#include "bake_folder/bake_manifest.h"  // the ranges
+#include "bake_folder/byte_stream.h"
+#include "image/atomic_file.h"
+#include "scene/load_error.h"
+
+namespace bounce {
+namespace {
+
+constexpr char kMagic[8] = {'B', 'N', 'C', 'P', 'R', 'B', 'S', '\0'};
+constexpr std::size_t kHeaderBytes = 20;
+constexpr std::size_t kGridBytes = 48;
+constexpr std::size_t kProbeBytes = 48;
+
+// Each coordinate finite and within ±limit (NaN fails the comparison).
+bool within(glm::vec3 v, float limit) {
+  return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
+}
+
+glm::vec3 readVec3(ByteReader& in, const char* what) {
+  glm::vec3 v;
+  for (int c = 0; c < 3; ++c) v[c] = in.f32(what);
+  return v;
+}
+
+void checkGrid(const std::filesystem::path& file, const ProbeGrid& g, std::size_t index,
+               uint64_t expectedFirst, uint64_t probes, const ProbeGrid* previous) {
+  const std::string which = "grid " + std::to_string(index) + ": ";
+  if (previous && g.instance <= previous->instance)
+    throw LoadError(file, which + "instance " + std::to_string(g.instance) +
+                              " does not follow the previous grid's " +
+                              std::to_string(previous->instance) + " (ascending, one grid each)");
+  for (int a = 0; a < 3; ++a)
+    if (g.counts[a] < 2 || g.counts[a] > kMaxProbeGridCount)
+      throw LoadError(file, which + "counts " + std::to_string(g.counts.x) + "x" +
+                                std::to_string(g.counts.y) + "x" + std::to_string(g.counts.z) +
+                                ": each must be in [2, " + std::to_string(kMaxProbeGridCount) +
+                                "]");
+  if (g.first != expectedFirst)
+    throw LoadError(file, which + "first probe " + std::to_string(g.first) +
+                              ", the grids before it hold " + std::to_string(expectedFirst));
+  if (expectedFirst + g.probeCount() > probes)
+    throw LoadError(file, which + "its probes run past the " + std::to_string(probes) +
+                              " the header announces");
+  if (!within(g.origin, kMaxBakeLength))
+    throw LoadError(file,
+                    which + "origin is not finite or beyond " + shortNumber(kMaxBakeLength) + " m");
+  for (int a = 0; a < 3; ++a)
+    if (!(g.spacing[a] > 0.0f && g.spacing[a] <= kMaxBakeLength))
+      throw LoadError(file, which + "spacing is not in (0, " + shortNumber(kMaxBakeLength) +
+                                "] m on every axis");
+  if (!(g.normalOffset >= 0.0f && g.normalOffset <= kMaxBakeLength))
+    throw LoadError(file,
+                    which + "normal offset is not in [0, " + shortNumber(kMaxBakeLength) + "] m");
+}
+
+void checkProbe(const std::filesystem::path& file, const ProbeIrradiance& p, std::size_t index) {
+  const std::string which = "probe " + std::to_string(index) + ": ";
+  for (const glm::vec3& c : p.sh)
+    if (!within(c, kMaxBakeIrradiance))
+      throw LoadError(file, which + "a coefficient is not finite or beyond " +
+                                shortNumber(kMaxBakeIrradiance) + " W/m^2");
+  for (int c = 0; c < 3; ++c)
+    if (!(kShY00 * p.sh[0][c] >= 0.0f))
+      throw LoadError(file, which + "mean irradiance Y00*E00 is negative");
+}
+
+}  // namespace
+
+std::vector<unsigned char> encodeProbes(const IrradianceProbes& probes) {
+  ByteWriter out;
+  out.raw(kMagic, sizeof kMagic);
+  out.u32(kProbeFormatVersion);
+  out.u32(static_cast<uint32_t>(probes.grids.size()));
+  out.u32(static_cast<uint32_t>(probes.probes.size()));
+  for (const ProbeGrid& g : probes.grids) {
+    out.u32(g.instance);
+    out.u32(g.first);
+    for (int a = 0; a < 3; ++a) out.u32(g.counts[a]);
+    for (int a = 0; a < 3; ++a) out.f32(g.origin[a]);
+    for (int a = 0; a < 3; ++a) out.f32(g.spacing[a]);
+    out.f32(g.normalOffset);
+  }
+  for (const ProbeIrradiance& p : probes.probes)
+    for (const glm::vec3& c : p.sh)
+      for (int k = 0; k < 3; ++k) out.f32(c[k]);
+  return out.take();
+}
+
+IrradianceProbes decodeProbes(const std::filesystem::path& file,
+                              std::span<const unsigned char> bytes) {
+  ByteReader in(file, bytes);
+  in.need(kHeaderBytes, "the header");
+  if (!in.matches(kMagic, sizeof kMagic))
+    throw LoadError(file, "bad magic: not a bounce probe file");
+  const uint32_t version = in.u32("the version");
+  if (version != kProbeFormatVersion)
+    throw LoadError(file, "format version " + std::to_string(version) +
+                              ", this build reads version " + std::to_string(kProbeFormatVersion) +
+                              ": rebake");
+  const uint64_t grids = in.u32("the grid count");
+  const uint64_t count = in.u32("the probe count");
+  const uint64_t expected = kHeaderBytes + kGridBytes * grids + kProbeBytes * count;
+  if (bytes.size() != expected)
+    throw LoadError(file, std::to_string(grids) + " grids and " + std::to_string(count) +
+                              " probes announced need " + std::to_string(expected) +
+                              " bytes, the file has " + std::to_string(bytes.size()));
+  IrradianceProbes probes;
+  probes.grids.resize(grids);
+  uint64_t next = 0;
+  for (std::size_t i = 0; i < grids; ++i) {
+    ProbeGrid& g = probes.grids[i];
+    g.instance = in.u32("a grid");
+    g.first = in.u32("a grid");
+    for (int a = 0; a < 3; ++a) g.counts[a] = in.u32("a grid");
+    g.origin = readVec3(in, "a grid");
+    g.spacing = readVec3(in, "a grid");
+    g.normalOffset = in.f32("a grid");
+    checkGrid(file, g, i, next, count, i > 0 ? &probes.grids[i - 1] : nullptr);
+    next += g.probeCount();
+  }
+  if (next != count)
+    throw LoadError(file, "the grids hold " + std::to_string(next) + " probes, the header " +
+                              std::to_string(count));
+  probes.probes.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    for (glm::vec3& c : probes.probes[i].sh) c = readVec3(in, "a probe");
+    checkProbe(file, probes.probes[i], i);
+  }
+  return probes;
+}
+
+void writeProbeFile(const std::filesystem::path& file, const IrradianceProbes& probes) {
+  writeFileAtomically(file, encodeProbes(probes));
+}
+
+}  // namespace bounce

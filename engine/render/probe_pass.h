@@ -1,0 +1,48 @@
+// The probe stage of the lit pass (shaders/probes.glsl): uploads a bake's irradiance probes
+// (bake_folder/irradiance_probes.h) as one RGBA32F texture buffer, 3 texels per probe, and tells
+// the forward shader, per draw, the grid of the instance drawn: a static instance without a
+// lightmap region takes its baked light ρ/π·E(n) from its grid's 8 probes around the pixel
+// (constant work per pixel), not from the VPLs. Without probes it binds a 1-texel stand-in and
+// no draw reads it. GL calls only through engine/gl.
+//
+// Texel c (0, 1, 2: red, green, blue) of probe i, at 3i + c: (Y00·E00, Y1·E11, Y1·E1−1, Y1·E10)
+// of channel c, so that E_c(n) = t.x + dot(t.yzw, n) (W/m²).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake_folder/irradiance_probes.h"
+#include "gl/shader.h"
+#include "gl/texture_buffer.h"
+
+namespace bounce {
+
+// The 3 texels of each probe, in order (the layout above).
+std::vector<glm::vec4> probeTexels(const IrradianceProbes& probes);
+
+class ProbePass {
+ public:
+  ProbePass();
+  // `probes` already checked against the scene by readBake; `instances` the scene's count.
+  void attach(const IrradianceProbes& probes, std::size_t instances);
+  // Whether instance `index` (into GpuScene::instances) takes its baked light from probes.
+  bool probeLit(std::size_t index) const { return index < gridOf_.size() && gridOf_[index] >= 0; }
+  std::size_t probeCount() const { return probeCount_; }
+
+  // Per frame: the buffer.
+  void bind(gl::Program& program) const;
+  // Per draw: instance `index`'s grid, or uHasProbes false.
+  void setInstance(gl::Program& program, std::size_t index) const;
+
+ private:
+  std::optional<gl::TextureBuffer> buffer_;
+  std::vector<ProbeGrid> grids_;
+  std::vector<int> gridOf_;  // per instance, index into grids_ or −1
+  std::size_t probeCount_ = 0;
+};
+
+}  // namespace bounce
