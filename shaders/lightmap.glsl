@@ -20,6 +20,8 @@
 //   validity  each texel sampled, filled from its neighbours or padding (the same way; the
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
 //   texel-density, cascades  false colours drawn by forward.frag (view_modes.glsl)
+//   cost      shaded as full (direct without a bake), written as the counts of lights, VPLs
+//             and shadow-map taps the fragment evaluated (cost.glsl; forward.frag)
 // E_indirect = E_baked on lightmapped (static) surfaces, E_vpl on dynamic ones (uVplReceiver).
 const int LIGHTING_FULL = 0;
 const int LIGHTING_DIRECT = 1;
@@ -31,6 +33,7 @@ const int LIGHTING_VPL_CLAMP = 6;
 const int LIGHTING_ERROR = 7;
 const int LIGHTING_TEXEL_DENSITY = 8;
 const int LIGHTING_CASCADES = 9;
+const int LIGHTING_COST = 10;
 
 uniform int uLightingMode;
 uniform bool uHasLightmap;           // this draw: a static instance with an atlas region
@@ -42,13 +45,15 @@ uniform bool uVplReceiver;           // this draw: a dynamic instance lit by the
 
 // Whether the mode needs the live direct light at all.
 bool modeUsesDirectLight() {
-  return uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_DIRECT;
+  return uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_DIRECT ||
+         uLightingMode == LIGHTING_COST;
 }
 
 // Whether this draw evaluates the VPLs (vpl.glsl).
 bool modeUsesVpls() {
   if (uLightingMode == LIGHTING_VPL || uLightingMode == LIGHTING_VPL_CLAMP) return true;
-  return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT);
+  return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT ||
+                          uLightingMode == LIGHTING_COST);
 }
 
 vec3 bakedIrradiance(vec2 atlasUv) {

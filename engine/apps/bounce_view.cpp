@@ -38,7 +38,6 @@
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "cli/viewer_script.h"
-#include "gl/gpu_timer.h"
 #include "gl/panel_layer.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
@@ -175,10 +174,15 @@ class Viewer {
       handleInput(dt);
       runScriptBeforeFrame();
       takeRebakedPass();
-      gpuTimer_.begin();
       draw();
-      gpuTimer_.end();
-      times_.add(ms, gpuTimer_.lastMilliseconds());
+      // The GPU time of the newest frame whose pass timers are in (a frame or two late).
+      times_.add(ms, renderer_.profile().lastGpuFrame());
+      // The panel's table: each pass over the last 60 frames.
+      if (frame % 60 == 59) {
+        passTimes_ = renderer_.profile().gpuPasses();
+        cpuTimes_ = renderer_.profile().cpu();
+        renderer_.clearProfile(false);
+      }
       if (panel_ && panelShown_) drawPanel();
       const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
       if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
@@ -374,6 +378,8 @@ class Viewer {
     view.lights = &scene_.lights;
     view.bakeStale = bakeStale_;
     view.times = &times_;
+    view.passTimes = &passTimes_;
+    view.cpuTimes = &cpuTimes_;
     view.rebaking = rebake_ && rebake_->running();
     view.rebakeStatus = rebake_ ? rebake_->status() : "";
     view.rebakeFraction = rebake_ ? rebake_->fraction() : 0.0;
@@ -622,6 +628,7 @@ class Viewer {
       compare_.draw(target_->color(), *compared_, referenceView_);
     }
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
+    const bounce::gl::GpuPassTimers::Scope timed(&renderer_.gpuTimers(), "tone map");
     tonemap_.draw(shown().color(), exposure_);
   }
 
@@ -699,8 +706,8 @@ class Viewer {
   bounce::RenderMode modeBeforeCharts_ = bounce::RenderMode::Full;
   std::optional<bounce::gl::PanelLayer> panel_;  // none when ImGui cannot start
   bool panelShown_ = false;
-  bounce::gl::GpuTimer gpuTimer_;
   bounce::FrameTimes times_;
+  std::vector<bounce::TimeSummary> passTimes_, cpuTimes_;  // the last 60 frames, per pass
   std::vector<std::string> bakeLines_;
   bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
   bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written

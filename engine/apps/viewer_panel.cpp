@@ -186,6 +186,14 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
   if (view.times && ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
     plot("CPU", view.times->cpu);
     plot("GPU", view.times->gpu);
+    const auto table = [](const char* title, const std::vector<TimeSummary>* rows) {
+      if (!rows || rows->empty()) return;
+      ImGui::TextUnformatted(title);
+      for (const TimeSummary& row : *rows)
+        ImGui::Text("  %-28s %7.2f %7.2f", row.name.c_str(), row.mean, row.p95);
+    };
+    table("GPU per pass, ms (mean, p95; last 60 frames)", view.passTimes);
+    table("CPU, ms (frame: build + submit, no wait)", view.cpuTimes);
   }
   ImGui::End();
   return requests;

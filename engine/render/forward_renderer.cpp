@@ -1,12 +1,14 @@
 #include "render/forward_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "bake_folder/vpl_clamp.h"
+#include "gl/draw_state.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
@@ -27,6 +29,7 @@ struct ForwardRenderer::Passes {
   LightmapPass lightmap;
   VplPass vpls;
   ForwardPass forward;
+  gl::GpuPassTimers timers;
 
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
          const RendererSettings& settings, std::vector<std::string>& warnings)
@@ -290,8 +293,21 @@ void ForwardRenderer::setMode(RenderMode mode) {
   settings_.mode = mode;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
 void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
+  const Clock::time_point cpuStart = Clock::now();
+  p.timers.beginFrame();
+  using Timed = gl::GpuPassTimers::Scope;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   // Without culling every light is shaded everywhere: any light that brings light competes.
@@ -300,21 +316,65 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   ViewVolume view(cameraViewProjection, p.scene.bounds());
   view.eye = camera.position();
   if (p.shadows.render(p.scene, p.lights, view, cascadeCamera_ ? *cascadeCamera_ : camera, aspect,
-                       floor))
+                       floor, &p.timers))
     p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   followDynamicMoves();
-  p.vpls.renderShadows(p.scene);
+  {
+    const Timed timed(&p.timers, "VPL shadow cubes");
+    p.vpls.renderShadows(p.scene);
+  }
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
                    p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
   p.lightTable.update();
-  p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.vpls, settings_.mode,
-                 cameraViewProjection, target);
+  {
+    const Timed timed(&p.timers, "lit forward pass");
+    p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.vpls, settings_.mode,
+                   cameraViewProjection, target);
+  }
+  profile_.addCpu("frame", millisecondsSince(cpuStart));
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height, int samples) {
   gl::RenderTarget target(width, height, samples);
   render(camera, target);
-  return target.read();
+  return readBack(target);
+}
+
+Image ForwardRenderer::readBack(const gl::RenderTarget& target) {
+  Passes& p = *passes_;
+  const Clock::time_point waitStart = Clock::now();
+  gl::finish();
+  profile_.addCpu("gpu wait", millisecondsSince(waitStart));
+  const Clock::time_point readStart = Clock::now();
+  Image image;
+  {
+    const gl::GpuPassTimers::Scope timed(&p.timers, "readback");
+    image = target.read();
+  }
+  profile_.addCpu("readback", millisecondsSince(readStart));
+  return image;
+}
+
+const FrameProfile& ForwardRenderer::profile(bool waitForGpu) {
+  Passes& p = *passes_;
+  if (waitForGpu) p.timers.finish();
+  for (const gl::GpuFrameTimes& frame : p.timers.takeFinished()) {
+    std::vector<std::pair<std::string, double>> passes;
+    for (const gl::GpuFrameTimes::Pass& pass : frame.passes)
+      passes.emplace_back(pass.name, pass.milliseconds);
+    profile_.addGpuFrame(passes);
+  }
+  return profile_;
+}
+
+void ForwardRenderer::clearProfile(bool waitForGpu) {
+  if (waitForGpu) passes_->timers.finish();
+  (void)passes_->timers.takeFinished();
+  profile_.clear();
+}
+
+gl::GpuPassTimers& ForwardRenderer::gpuTimers() {
+  return passes_->timers;
 }
 
 }  // namespace bounce

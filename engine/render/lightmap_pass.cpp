@@ -33,6 +33,8 @@ int lightingModeIndex(RenderMode mode) {
       return 8;
     case RenderMode::Cascades:
       return 9;
+    case RenderMode::Cost:
+      return 10;
   }
   return 1;
 }
