@@ -93,6 +93,10 @@ LightGridStats ForwardRenderer::lightGridStats() const {
   return passes_->culling.lastFrame();
 }
 
+const ClusterGrid& ForwardRenderer::clusterGrid() const {
+  return passes_->culling.grid();
+}
+
 ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
   return passes_->shadows.lastFrame();
 }

@@ -157,6 +157,8 @@ class ForwardRenderer {
   void setLightCulling(const LightCullingSettings& culling);
   // The light lists of the last frame.
   LightGridStats lightGridStats() const;
+  // The last frame's view clusters (render/cluster_grid.h).
+  const ClusterGrid& clusterGrid() const;
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;

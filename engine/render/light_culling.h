@@ -54,6 +54,8 @@ class LightCulling {
   void bind(gl::Program& program) const;
 
   const LightGridStats& lastFrame() const { return stats_; }
+  // The last frame's clusters (the lists are in the light table).
+  const ClusterGrid& grid() const { return grid_; }
 
  private:
   LightCullingSettings settings_;
