@@ -97,6 +97,10 @@ const ClusterGrid& ForwardRenderer::clusterGrid() const {
   return passes_->culling.grid();
 }
 
+uint64_t ForwardRenderer::lightGridBuilds() const {
+  return passes_->culling.gridBuilds();
+}
+
 ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
   return passes_->shadows.lastFrame();
 }

@@ -159,6 +159,9 @@ class ForwardRenderer {
   LightGridStats lightGridStats() const;
   // The last frame's view clusters (render/cluster_grid.h).
   const ClusterGrid& clusterGrid() const;
+  // How many frames rebuilt the light lists (LightCulling::gridBuilds): a still camera's frames
+  // do not.
+  uint64_t lightGridBuilds() const;
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;

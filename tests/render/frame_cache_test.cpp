@@ -1,0 +1,73 @@
+// What the CPU keeps between frames (issue 27): a still camera's second frame does not rebuild
+// the light lists (LightCulling::gridBuilds); moving an instance (it changes the scene's box) or
+// a light does, and the frame then equals a fresh renderer's.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 32;
+
+Scene litFloorWithABox() {
+  Scene scene;
+  Material white;
+  white.name = "floor";
+  white.albedo = glm::vec3(0.5f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, white);
+  addQuad(scene, {-0.1f, 0.3f, 0.1f}, {0.2f, 0, 0}, {0, 0, -0.2f}, white);
+  scene.instances[1].mobility = Mobility::Dynamic;
+  for (int i = 0; i < 3; ++i) {
+    Light light;
+    light.type = LightType::Point;
+    light.name = "point " + std::to_string(i);
+    light.position = {-0.3f + 0.3f * static_cast<float>(i), 0.5f, 0.0f};
+    light.intensity = glm::vec3(0.2f);
+    scene.lights.push_back(light);
+  }
+  return scene;
+}
+
+TEST(FrameCache, StillCameraKeepsTheLightListsAndAMoveRebuildsThemAsAFreshRenderer) {
+  testContext();
+  const Scene scene = litFloorWithABox();
+  const Camera camera = downCamera(1.0f);
+  ForwardRenderer renderer(scene, gl::shaderDirectory());
+  const Image first = renderer.renderImage(camera, kSize, kSize);
+  const uint64_t builds = renderer.lightGridBuilds();
+  EXPECT_EQ(builds, 1u);
+  const Image second = renderer.renderImage(camera, kSize, kSize);
+  EXPECT_EQ(renderer.lightGridBuilds(), builds) << "a still camera rebuilt the light lists";
+  EXPECT_EQ(first.pixels, second.pixels);
+
+  // The box rises 0.4 m: the scene's box grows, the lists are rebuilt.
+  const glm::mat4 raised = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.4f, 0.0f));
+  renderer.setInstanceTransform(1, raised * scene.instances[1].transform);
+  const Image moved = renderer.renderImage(camera, kSize, kSize);
+  EXPECT_EQ(renderer.lightGridBuilds(), builds + 1);
+  Scene placed = scene;
+  placed.instances[1].transform = raised * placed.instances[1].transform;
+  ForwardRenderer fresh(placed, gl::shaderDirectory());
+  const Image expected = fresh.renderImage(camera, kSize, kSize);
+  EXPECT_EQ(moved.pixels, expected.pixels);
+
+  // A light moved (setLight) changes its reach: rebuilt, and drawn as a fresh renderer does.
+  Light light = scene.lights[0];
+  light.position.x = 0.4f;
+  renderer.setLight(0, light);
+  const Image relit = renderer.renderImage(camera, kSize, kSize);
+  EXPECT_EQ(renderer.lightGridBuilds(), builds + 2);
+  placed.lights[0] = light;
+  ForwardRenderer freshLit(placed, gl::shaderDirectory());
+  EXPECT_EQ(relit.pixels, freshLit.renderImage(camera, kSize, kSize).pixels);
+
+  // The camera moves: rebuilt.
+  renderer.renderImage(downCamera(0.9f), kSize, kSize);
+  EXPECT_EQ(renderer.lightGridBuilds(), builds + 3);
+}
+
+}  // namespace
+}  // namespace bounce::test
