@@ -331,8 +331,10 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
     const Timed timed(&p.timers, "VPL shadow cubes");
     p.vpls.renderShadows(p.scene);
   }
+  const Clock::time_point cullingStart = Clock::now();
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
                    p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
+  profile_.addCpu("light culling", millisecondsSince(cullingStart));
   p.lightTable.update();
   {
     const Timed timed(&p.timers, "lit forward pass");

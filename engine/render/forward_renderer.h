@@ -89,7 +89,8 @@ class ForwardRenderer {
   // spot maps", "shadow: point cubes", "shadow: directional cascades", "shadow: area-light
   // cubes", "VPL shadow cubes", "lit forward pass" (MSAA resolve included), "readback", and what
   // the caller times with gpuTimers(), e.g. the viewer's "tone map"), the CPU time of render()
-  // ("frame": building and submitting, no wait for the GPU) and of readBack. GPU times arrive a
+  // ("frame": building and submitting, no wait for the GPU; "light culling": the part of it that
+  // builds the light lists) and of readBack. GPU times arrive a
   // frame or two late (gl/gpu_pass_timers.h); `waitForGpu` collects every frame in flight (after
   // a benchmark's last frame).
   const FrameProfile& profile(bool waitForGpu = false);

@@ -1,6 +1,7 @@
-// What the CPU keeps between frames (issue 27): a still camera's second frame does not rebuild
-// the light lists (LightCulling::gridBuilds); moving an instance (it changes the scene's box) or
-// a light does, and the frame then equals a fresh renderer's.
+// What the renderer keeps between frames (issue 27): a still camera's second frame neither
+// rebuilds the light lists (LightCulling::gridBuilds) nor redraws the point lights' shadow cubes
+// (shadow_map_stamp.h); moving an instance (it changes the scene's box and the casters) or a
+// light does, and the frame then equals a fresh renderer's bit for bit.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -39,8 +40,10 @@ TEST(FrameCache, StillCameraKeepsTheLightListsAndAMoveRebuildsThemAsAFreshRender
   const Image first = renderer.renderImage(camera, kSize, kSize);
   const uint64_t builds = renderer.lightGridBuilds();
   EXPECT_EQ(builds, 1u);
+  EXPECT_GT(renderer.shadowDrawCount().views, 0);
   const Image second = renderer.renderImage(camera, kSize, kSize);
   EXPECT_EQ(renderer.lightGridBuilds(), builds) << "a still camera rebuilt the light lists";
+  EXPECT_EQ(renderer.shadowDrawCount().views, 0) << "a still scene redrew its shadow cubes";
   EXPECT_EQ(first.pixels, second.pixels);
 
   // The box rises 0.4 m: the scene's box grows, the lists are rebuilt.
@@ -48,6 +51,7 @@ TEST(FrameCache, StillCameraKeepsTheLightListsAndAMoveRebuildsThemAsAFreshRender
   renderer.setInstanceTransform(1, raised * scene.instances[1].transform);
   const Image moved = renderer.renderImage(camera, kSize, kSize);
   EXPECT_EQ(renderer.lightGridBuilds(), builds + 1);
+  EXPECT_GT(renderer.shadowDrawCount().views, 0);
   Scene placed = scene;
   placed.instances[1].transform = raised * placed.instances[1].transform;
   ForwardRenderer fresh(placed, gl::shaderDirectory());
@@ -64,9 +68,10 @@ TEST(FrameCache, StillCameraKeepsTheLightListsAndAMoveRebuildsThemAsAFreshRender
   ForwardRenderer freshLit(placed, gl::shaderDirectory());
   EXPECT_EQ(relit.pixels, freshLit.renderImage(camera, kSize, kSize).pixels);
 
-  // The camera moves: rebuilt.
-  renderer.renderImage(downCamera(0.9f), kSize, kSize);
+  // The camera moves: the lists are rebuilt; the cubes faces already drawn stay.
+  const Image lower = renderer.renderImage(downCamera(0.9f), kSize, kSize);
   EXPECT_EQ(renderer.lightGridBuilds(), builds + 3);
+  EXPECT_EQ(lower.pixels, freshLit.renderImage(downCamera(0.9f), kSize, kSize).pixels);
 }
 
 }  // namespace
