@@ -17,6 +17,7 @@
 #include "image/image_io.h"
 #include "render/cost_view.h"
 #include "render/forward_renderer.h"
+#include "render/gpu_scene.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/view.h"
 #include "scene/framing.h"
@@ -120,17 +121,6 @@ void writeCostView(const Options& options, const bounce::Image& counts) {
 }
 
 int run(const Options& options) {
-  bounce::Scene scene = bounce::loadScene(options.scene);
-  bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
-  for (const std::string& warning : scene.warnings)
-    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-  bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
-  if (framed)
-    std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
-                 options.scene.c_str());
-
   std::optional<bounce::gl::ContextBackend> backend;
   if (options.context == "osmesa") backend = bounce::gl::ContextBackend::OSMesa;
   if (options.context == "egl") backend = bounce::gl::ContextBackend::EGL;
@@ -141,6 +131,18 @@ int run(const Options& options) {
   std::fprintf(stderr, "bounce-render: context %s: OpenGL %s, %s\n",
                bounce::gl::backendName(context->backend()), context->version().c_str(),
                context->renderer().c_str());
+  // Refused before the minutes a million emitters take to cut and group: the frame could not
+  // draw them (render/gpu_scene.h).
+  bounce::Scene scene = bounce::loadScene(options.scene, bounce::GpuScene::sceneLimits());
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
+  if (framed)
+    std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
+                 options.scene.c_str());
 
   using Clock = std::chrono::steady_clock;
   const auto ms = [](Clock::time_point a, Clock::time_point b) {
