@@ -76,3 +76,42 @@ TEST(FrameCache, StillCameraKeepsTheLightListsAndAMoveRebuildsThemAsAFreshRender
 
 }  // namespace
 }  // namespace bounce::test
+
+namespace bounce::test {
+namespace {
+
+// The quad slides sideways within the floor: the scene's box, hence the cascades' fit, stays; only
+// the casters moved.
+TEST(FrameCache, StillCameraKeepsTheSunsCascadesAndAMoveRedrawsThemAsAFreshRenderer) {
+  testContext();
+  Scene scene;
+  Material white;
+  white.name = "floor";
+  white.albedo = glm::vec3(0.5f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, white);
+  addQuad(scene, {-0.1f, 0.3f, 0.1f}, {0.2f, 0, 0}, {0, 0, -0.2f}, white);
+  scene.instances[1].mobility = Mobility::Dynamic;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.name = "sun";
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  sun.irradiance = glm::vec3(2.0f);
+  scene.lights = {sun};
+  const Camera camera = downCamera(1.0f);
+  ForwardRenderer renderer(scene, gl::shaderDirectory());
+  (void)renderer.renderImage(camera, kSize, kSize);
+  EXPECT_GT(renderer.shadowDrawCount().views, 0);
+  (void)renderer.renderImage(camera, kSize, kSize);
+  EXPECT_EQ(renderer.shadowDrawCount().views, 0) << "a still camera redrew the cascades";
+  const glm::mat4 shifted = glm::translate(glm::mat4(1.0f), glm::vec3(0.15f, 0.0f, 0.0f));
+  renderer.setInstanceTransform(1, shifted * scene.instances[1].transform);
+  const Image moved = renderer.renderImage(camera, kSize, kSize);
+  EXPECT_GT(renderer.shadowDrawCount().views, 0);
+  Scene placed = scene;
+  placed.instances[1].transform = shifted * placed.instances[1].transform;
+  ForwardRenderer fresh(placed, gl::shaderDirectory());
+  EXPECT_EQ(moved.pixels, fresh.renderImage(camera, kSize, kSize).pixels);
+}
+
+}  // namespace
+}  // namespace bounce::test
