@@ -99,6 +99,7 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
       }
       ImGui::EndCombo();
     }
+    if (!view.costLegend.empty()) ImGui::TextWrapped("%s", view.costLegend.c_str());
     float exposure = view.exposure;
     if (ImGui::SliderFloat("exposure (EV)", &exposure, -10.0f, 10.0f, "%+.1f"))
       requests.exposure = exposure;

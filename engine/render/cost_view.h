@@ -12,7 +12,8 @@
 
 namespace bounce {
 
-enum class CostCount { Lights, Vpls, ShadowTaps };
+// The values are the frame's channels: R lights, G VPLs, B shadow-map taps.
+enum class CostCount { Lights = 0, Vpls = 1, ShadowTaps = 2 };
 
 std::string_view costCountName(CostCount count);  // "lights", "vpls", "taps"
 std::optional<CostCount> parseCostCount(std::string_view name);

@@ -80,6 +80,10 @@ ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path
 
 ForwardRenderer::~ForwardRenderer() = default;
 
+std::size_t ForwardRenderer::areaLightCount() const {
+  return passes_->scene.areaLights().lights.size();
+}
+
 std::size_t ForwardRenderer::emitterTriangleCount() const {
   return static_cast<std::size_t>(passes_->scene.emitterCount());
 }

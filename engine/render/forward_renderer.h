@@ -177,6 +177,7 @@ class ForwardRenderer {
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t emitterTriangleCount() const;
+  std::size_t areaLightCount() const;
 
  private:
   struct Passes;
