@@ -15,8 +15,8 @@ TEST(FrameProfile, Percentile95IsTheNearestRank) {
   std::vector<double> hundred, twenty;
   for (int i = 100; i >= 1; --i) hundred.push_back(i);  // order does not matter
   for (int i = 1; i <= 20; ++i) twenty.push_back(i);
-  EXPECT_EQ(percentile95(hundred), 95.0);  // rank ceil(95) = 95
-  EXPECT_EQ(percentile95(twenty), 19.0);   // rank ceil(19) = 19
+  EXPECT_EQ(percentile95(hundred), 95.0);               // rank ceil(95) = 95
+  EXPECT_EQ(percentile95(twenty), 19.0);                // rank ceil(19) = 19
   EXPECT_EQ(percentile95({1, 2, 3, 4, 5, 6, 7}), 7.0);  // rank ceil(6.65) = 7
   EXPECT_EQ(percentile95({7.0}), 7.0);
   EXPECT_EQ(percentile95({}), 0.0);
