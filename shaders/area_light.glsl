@@ -15,6 +15,7 @@
 //   else 0, 0); the static lights come first. A baked light is skipped once a bake is attached
 //   (uHasBake): its direct light is in the lightmap.
 
+#include "cost.glsl"
 #include "light_grid.glsl"
 
 uniform sampler2D uEmitters;
@@ -83,6 +84,7 @@ vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTe
   vec3 irradiance = vec3(0.0);
   int count = lights.all ? uAreaLightCount : lights.areaCount;
   for (int k = 0; k < count; ++k) {
+    gCostLights += 1;
     int l = areaLightIndex(lights, k);  // its own row: baked visibility and shadows by index
     vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
     if (rows.z > 0.5 && uHasBake) continue;

@@ -9,7 +9,9 @@
 // Each fragment shades only the lights of its view cluster (light_grid.glsl).
 // Punctual lights are shadowed by their maps (shadows.glsl); area lights by their baked
 // visibility on static surfaces (baked_visibility.glsl), else by their maps (shadow_area.glsl:
-// percentage-closer soft shadows).
+// percentage-closer soft shadows). The cost mode writes what the fragment evaluated instead
+// (cost.glsl): lights, VPLs and shadow-map taps as R, G, B.
+#include "cost.glsl"
 #include "baked_visibility.glsl"
 #include "lights.glsl"
 #include "shadows.glsl"
@@ -96,6 +98,11 @@ void main() {
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
   vec3 probe = vec3(0.0);
   if (uHasProbes) probe = probeIrradiance(vWorldPosition, n);
+  // The cost view: what the lines above evaluated (cost.glsl), as raw counts.
+  if (uLightingMode == LIGHTING_COST) {
+    fragRadiance = vec4(float(gCostLights), float(gCostVpls), float(gCostShadowTaps), 1.0);
+    return;
+  }
   fragRadiance = vec4(
       shadeForMode(albedo, direct, uEmission, lightmapUv, vplClamped, vplRemoved, probe), 1.0);
 }

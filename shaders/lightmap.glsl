@@ -24,6 +24,8 @@
 //   validity  each texel sampled, filled from its neighbours or padding (the same way; the
 //             renderer's mode index is LIGHTING_ERROR's, only the bound colours differ)
 //   texel-density, cascades  false colours drawn by forward.frag (view_modes.glsl)
+//   cost      shaded as full (direct without a bake), written as the counts of lights, VPLs
+//             and shadow-map taps the fragment evaluated (cost.glsl; forward.frag)
 // E_indirect = E_baked on static surfaces (lightmap or probes), E_vpl on dynamic ones
 // (uVplReceiver). LIGHTING_* and LUMINANCE_WEIGHTS come from the C++
 // (engine/render/shader_constants.h).
@@ -38,13 +40,15 @@ uniform bool uVplReceiver;           // this draw: a dynamic instance lit by the
 
 // Whether the mode needs the live direct light at all.
 bool modeUsesDirectLight() {
-  return uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_DIRECT;
+  return uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_DIRECT ||
+         uLightingMode == LIGHTING_COST;
 }
 
 // Whether this draw evaluates the VPLs (vpl.glsl).
 bool modeUsesVpls() {
   if (uLightingMode == LIGHTING_VPL || uLightingMode == LIGHTING_VPL_CLAMP) return true;
-  return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT);
+  return uVplReceiver && (uLightingMode == LIGHTING_FULL || uLightingMode == LIGHTING_INDIRECT ||
+                          uLightingMode == LIGHTING_COST);
 }
 
 // E_baked (W/m²): the lightmap's, or `probeIrradiance` (probes.glsl) on a probe-lit instance.

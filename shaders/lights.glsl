@@ -13,6 +13,7 @@
 // panning). The shadow map still draws the dynamic instances, so V = min(V_map, V_baked): each
 // is ≈ 0 where its occluders hide the light, and the baked one corrects the map's leaks.
 
+#include "cost.glsl"
 #include "light_table.glsl"
 #include "light_grid.glsl"
 
@@ -41,6 +42,7 @@ vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibili
   vec3 irradiance = vec3(0.0);
   int count = lights.all ? uPunctualCount : lights.punctualCount;
   for (int k = 0; k < count; ++k) {
+    gCostLights += 1;
     PunctualLight light = punctualLight(punctualLightIndex(lights, k));
     if (light.power == vec3(0.0)) continue;
     if (light.type == LIGHT_DIRECTIONAL) {

@@ -44,6 +44,7 @@ uniform vec3 uAreaShadowPoints[MAX_AREA_SHADOWS * AREA_SHADOW_SAMPLES];  // x_k,
 float areaShadowDistance(int light, vec3 direction, bool dynamicOnly) {
   vec3 uvFace = cubeFaceUv(direction);
   vec3 at = vec3(uvFace.xy, float(6 * light) + uvFace.z);
+  gCostShadowTaps += 1;
   float stored = dynamicOnly ? texture(uAreaDynamicShadowMaps, at).r : texture(uAreaShadowMaps, at).r;
   return stored * uAreaShadowParams[light].x;
 }

@@ -18,6 +18,8 @@
 // showed acne without it once the kernel lay within R (docs/shadows.md lists what was tried).
 // A shadow touching its caster starts b·sinθ ≤ 0.25 texel late. Both terms scale with w: a
 // finer map shifts edges less.
+#include "cost.glsl"
+
 uniform int uShadowFilter;  // 0: one hardware 2×2 tap; 1: 16 rotated Poisson taps
 
 // 16 points of a Poisson disk in the unit circle (the outermost at radius 1, minimum spacing

@@ -34,6 +34,7 @@ float cascadeVisibility(int i, vec3 p, vec3 ng, vec3 l) {
   float texel = 0.5 / params.w;  // one cascade texel in atlas coordinates
   vec2 lo = tile + vec2(0.5 * texel), hi = tile + vec2(0.5 - 0.5 * texel);
   vec2 uv = tile + q.xy * 0.5;
+  gCostShadowTaps += uShadowFilter == 0 ? 1 : 16;
   if (uShadowFilter == 0) return texture(uCascadeMap, vec3(clamp(uv, lo, hi), q.z));
   mat2 rotation = shadowKernelRotation();
   float lit = 0.0;

@@ -7,6 +7,7 @@ uniform samplerCubeShadow uPointShadowMap[MAX_POINT_SHADOWS];
 uniform vec4 uPointShadowParams[MAX_POINT_SHADOWS];
 
 float pointShadowTaps(samplerCubeShadow map, vec3 d, float reference, float step) {
+  gCostShadowTaps += uShadowFilter == 0 ? 1 : 16;
   if (uShadowFilter == 0) return texture(map, vec4(d, reference));
   // The kernel lies in the plane perpendicular to d; `step` is its radius in metres at |d|.
   vec3 axis = abs(d.y) < 0.99 * length(d) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);

@@ -7,6 +7,7 @@ uniform mat4 uSpotShadowMatrix[MAX_SPOT_SHADOWS];  // world → the map's clip s
 uniform vec4 uSpotShadowParams[MAX_SPOT_SHADOWS];
 
 float spotShadowTaps(sampler2DShadow map, vec3 q, float radius, float resolution) {
+  gCostShadowTaps += uShadowFilter == 0 ? 1 : 16;
   if (uShadowFilter == 0) return texture(map, q);
   mat2 rotation = shadowKernelRotation();
   float lit = 0.0;

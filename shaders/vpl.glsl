@@ -17,6 +17,8 @@
 //   cuts:   per cell (first entry, entry count), cells x fastest, then the entries, each a
 //           range of lights (first, count); entry indices count from the section's first texel.
 
+#include "cost.glsl"
+
 // Visibility (0..1) of shadow cube `cube` from p; defined in vpl_shadows.glsl.
 float vplVisibility(int cube, vec3 p, vec3 ng);
 
@@ -36,6 +38,7 @@ void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 remo
   for (uint e = cellEntries.x; e < cellEntries.x + cellEntries.y; ++e) {
     uvec2 range = vplCutRange(int(e));
     for (uint i = range.x; i < range.x + range.y; ++i) {
+      gCostVpls += 1;
       vec4 positionGroup = vplTexel(int(i), 0);
       vec3 d = positionGroup.xyz - p;
       float d2 = dot(d, d);

@@ -29,5 +29,6 @@ float vplVisibility(int cube, vec3 p, vec3 ng) {
   float reference = (length(d) - bias.y) / uVplShadowParams.y;
   vec3 uvFace = cubeFaceUv(d);
   float layer = float(cube * 6) + uvFace.z;
+  gCostShadowTaps += 1;
   return texture(uVplShadowMap, vec4(uvFace.xy, layer, reference));
 }

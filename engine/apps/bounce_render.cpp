@@ -15,7 +15,9 @@
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
+#include "render/cost_view.h"
 #include "render/forward_renderer.h"
+#include "render/gpu_scene.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/view.h"
 #include "scene/framing.h"
@@ -51,6 +53,8 @@ struct Options {
   int msaa = 4;                      // samples per pixel
   std::optional<uint64_t> vplPaths;  // draw the VPLs of the bake's first N light paths
   std::optional<float> vplClamp;     // VPL clamp distance, m (default: the bake's)
+  std::string costCount = "vpls";    // the count the cost mode's PNG shows
+  std::optional<float> costMax;      // the end of its colour scale (default: from the frame)
 };
 
 bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) {
@@ -73,18 +77,52 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   return settings;
 }
 
-int run(const Options& options) {
-  bounce::Scene scene = bounce::loadScene(options.scene);
-  bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
-  for (const std::string& warning : scene.warnings)
-    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-  bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
-  if (framed)
-    std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
-                 options.scene.c_str());
+// Each pass's GPU time and the frame's CPU spans, mean and 95th percentile over the frames.
+void printProfile(const bounce::FrameProfile& profile) {
+  std::fprintf(stderr, "bounce-render: %-34s %7s %9s %9s\n", "GPU pass", "frames", "mean ms",
+               "p95 ms");
+  for (const bounce::TimeSummary& row : profile.gpuPasses())
+    std::fprintf(stderr, "bounce-render:   %-32s %7zu %9.3f %9.3f\n", row.name.c_str(), row.frames,
+                 row.mean, row.p95);
+  std::fprintf(stderr, "bounce-render: %-34s %7s %9s %9s\n", "CPU (frame: build + submit, no wait)",
+               "frames", "mean ms", "p95 ms");
+  for (const bounce::TimeSummary& row : profile.cpu())
+    std::fprintf(stderr, "bounce-render:   %-32s %7zu %9.3f %9.3f\n", row.name.c_str(), row.frames,
+                 row.mean, row.p95);
+}
 
+// The cost mode: the counts per pixel (EXR: raw, R lights, G VPLs, B shadow-map taps; PNG: one
+// count in false colour with its legend bar) and their means.
+void writeCostView(const Options& options, const bounce::Image& counts) {
+  const bounce::CostStats stats = bounce::costStats(counts);
+  std::fprintf(stderr,
+               "bounce-render: cost per pixel (mean / max over the frame, background 0%s): "
+               "lights %.2f / %g, VPLs %.2f / %g, shadow-map taps %.2f / %g\n",
+               options.msaa > 1 ? "; means over each pixel's samples" : "", stats.meanLights,
+               static_cast<double>(stats.maxLights), stats.meanVpls,
+               static_cast<double>(stats.maxVpls), stats.meanShadowTaps,
+               static_cast<double>(stats.maxShadowTaps));
+  const bounce::CostCount count = *bounce::parseCostCount(options.costCount);  // CLI11 checked
+  const float largest = count == bounce::CostCount::Lights ? stats.maxLights
+                        : count == bounce::CostCount::Vpls ? stats.maxVpls
+                                                           : stats.maxShadowTaps;
+  const float scaleMax = options.costMax.value_or(bounce::costScaleMax(largest));
+  bool png = false;
+  for (const std::string& out : options.outputs) {
+    if (std::filesystem::path(out).extension() == ".png") {
+      bounce::writeDisplayPng(out, bounce::costFalseColour(counts, count, scaleMax));
+      png = true;
+    } else {
+      bounce::writeExr(out, counts);
+    }
+    std::fprintf(stderr, "bounce-render: wrote %s\n", out.c_str());
+  }
+  if (png)
+    std::fprintf(stderr, "bounce-render: cost view PNG: %s\n",
+                 bounce::describeCostLegend(count, scaleMax).c_str());
+}
+
+int run(const Options& options) {
   std::optional<bounce::gl::ContextBackend> backend;
   if (options.context == "osmesa") backend = bounce::gl::ContextBackend::OSMesa;
   if (options.context == "egl") backend = bounce::gl::ContextBackend::EGL;
@@ -95,6 +133,18 @@ int run(const Options& options) {
   std::fprintf(stderr, "bounce-render: context %s: OpenGL %s, %s\n",
                bounce::gl::backendName(context->backend()), context->version().c_str(),
                context->renderer().c_str());
+  // Refused before the minutes a million emitters take to cut and group: the frame could not
+  // draw them (render/gpu_scene.h).
+  bounce::Scene scene = bounce::loadScene(options.scene, bounce::GpuScene::sceneLimits());
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
+  if (framed)
+    std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
+                 options.scene.c_str());
 
   using Clock = std::chrono::steady_clock;
   const auto ms = [](Clock::time_point a, Clock::time_point b) {
@@ -179,15 +229,21 @@ int run(const Options& options) {
         bounce::describeAreaShadowChoice(renderer.areaShadowChoice(), renderer.areaShadowSlots())
             .c_str());
   if (options.frames > 1) {
-    // Benchmark: the same frame again into the same target, read back each time.
+    // Benchmark: the same frame again into the same target, read back each time; where the
+    // time goes, pass by pass (the first frame, with the driver's shader JIT, left out).
     bounce::gl::RenderTarget target(options.width, options.height, options.msaa);
+    // One frame into this target first: llvmpipe compiles shader variants for it lazily.
+    renderer.render(camera, target);
+    (void)renderer.readBack(target);
+    renderer.clearProfile();
     const auto repeatStart = Clock::now();
     for (int i = 1; i < options.frames; ++i) {
       renderer.render(camera, target);
-      (void)target.read();
+      (void)renderer.readBack(target);
     }
     std::fprintf(stderr, "bounce-render: %d more frames: %.2f ms per frame (render + readback)\n",
                  options.frames - 1, ms(repeatStart, Clock::now()) / (options.frames - 1));
+    printProfile(renderer.profile(true));
   }
 
   const bool dynamicInstances = std::any_of(
@@ -208,6 +264,10 @@ int run(const Options& options) {
                  renderer.vpls().groups().groupCount(), static_cast<double>(clamp.clampDistance));
   }
 
+  if (settings.mode == bounce::RenderMode::Cost) {
+    writeCostView(options, image);
+    return 0;
+  }
   // All outputs or none (image_io.h): a failing --out leaves no other one behind.
   std::vector<bounce::ImageOutput> outputs;
   for (const std::string& out : options.outputs) outputs.push_back({out, &image, options.exposure});
@@ -243,7 +303,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"osmesa", "egl"}));
   app.add_option("--exposure", options.exposure, "exposure in EV for PNG files (default 0)");
   app.add_option("--frames", options.frames,
-                 "render the frame this many times and report the mean time (benchmark)")
+                 "render the frame this many times and report the mean time and, per pass, the GPU "
+                 "time (mean and 95th percentile), the frame's CPU time (building and "
+                 "submitting it), the wait for the GPU and the readback (benchmark)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--bake", options.bake,
                  "bake folder (bounce-bake's output) for this scene: adds its baked light "
@@ -268,7 +330,10 @@ int main(int argc, char** argv) {
                  "blue: padding), texel-density (lightmap texels per metre against the bake's "
                  "texel size: blue half or less, green equal, red twice or more, over a checker of "
                  "texels), cascades (the directional light's shadow cascade: red, green, blue, "
-                 "yellow from near to far, cross-faded where they blend; needs no bake)")
+                 "yellow from near to far, cross-faded where they blend; needs no bake), cost "
+                 "(what each pixel evaluated, shaded as full: EXR R lights, G VPLs, B shadow-map "
+                 "taps, raw counts; PNG one count, --cost-count, in false colour with a legend "
+                 "bar at the bottom, its scale printed; needs no bake)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")
@@ -311,6 +376,13 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")
       ->check(CLI::Range(0.0f, 64.0f));
+  app.add_option("--cost-count", options.costCount,
+                 "mode cost: the count the PNG shows, lights, vpls or taps (default vpls)")
+      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
+  app.add_option("--cost-max", options.costMax,
+                 "mode cost: the count at the red end of the PNG's scale (default: 1, 2 or 5 "
+                 "x 10^k at or above the frame's largest)")
+      ->check(CLI::PositiveNumber);
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {

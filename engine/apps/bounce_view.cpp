@@ -38,7 +38,6 @@
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "cli/viewer_script.h"
-#include "gl/gpu_timer.h"
 #include "gl/panel_layer.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
@@ -80,8 +79,10 @@ struct Options {
   bool noPanel = false;            // start with the panel hidden
   std::vector<std::string> moves;  // NAME X Y Z, repeated
   std::string dynamicVpls = "retrace";
-  std::string reference;          // a reference EXR (bounce-trace) to compare the frame with
-  std::string compare = "split";  // how, with --reference (render/reference_view.h)
+  std::string reference;           // a reference EXR (bounce-trace) to compare the frame with
+  std::string compare = "split";   // how, with --reference (render/reference_view.h)
+  std::string costCount = "vpls";  // the count the cost view shows
+  std::optional<float> costMax;    // the end of its scale (default: costDisplay())
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -175,10 +176,15 @@ class Viewer {
       handleInput(dt);
       runScriptBeforeFrame();
       takeRebakedPass();
-      gpuTimer_.begin();
       draw();
-      gpuTimer_.end();
-      times_.add(ms, gpuTimer_.lastMilliseconds());
+      // The GPU time of the newest frame whose pass timers are in (a frame or two late).
+      times_.add(ms, renderer_.profile().lastGpuFrame());
+      // The panel's table: each pass over the last 60 frames.
+      if (frame % 60 == 59) {
+        passTimes_ = renderer_.profile().gpuPasses();
+        cpuTimes_ = renderer_.profile().cpu();
+        renderer_.clearProfile(false);
+      }
       if (panel_ && panelShown_) drawPanel();
       const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
       if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
@@ -373,7 +379,11 @@ class Viewer {
     view.objectCount = selection_.count();
     view.lights = &scene_.lights;
     view.bakeStale = bakeStale_;
+    if (const auto cost = costDisplay())
+      view.costLegend = bounce::describeCostLegend(cost->count, cost->scaleMax);
     view.times = &times_;
+    view.passTimes = &passTimes_;
+    view.cpuTimes = &cpuTimes_;
     view.rebaking = rebake_ && rebake_->running();
     view.rebakeStatus = rebake_ ? rebake_->status() : "";
     view.rebakeFraction = rebake_ ? rebake_->fraction() : 0.0;
@@ -622,7 +632,28 @@ class Viewer {
       compare_.draw(target_->color(), *compared_, referenceView_);
     }
     bounce::gl::bindDefaultFramebuffer(size.x, size.y);
-    tonemap_.draw(shown().color(), exposure_);
+    const bounce::gl::GpuPassTimers::Scope timed(&renderer_.gpuTimers(), "tone map");
+    tonemap_.draw(shown().color(), exposure_, costDisplay());
+  }
+
+  // The cost view's count and scale (none in the other modes): --cost-count, --cost-max, else
+  // 1, 2 or 5 x 10^k at or above what a pixel can reach of it (lights: all of them; VPLs: the
+  // largest lightcut; taps: 64, four 16-tap lights).
+  std::optional<bounce::TonemapPass::CostDisplay> costDisplay() const {
+    if (renderer_.settings().mode != bounce::RenderMode::Cost) return std::nullopt;
+    const bounce::CostCount count = *bounce::parseCostCount(options_.costCount);  // CLI11 checked
+    float bound = 64.0f;
+    if (count == bounce::CostCount::Lights)
+      bound = static_cast<float>(scene_.lights.size() + renderer_.areaLightCount());
+    if (count == bounce::CostCount::Vpls) {
+      // The largest lightcut: what a dynamic pixel evaluates at most (docs/vpl.md).
+      bound = 1.0f;
+      const bounce::VplLightCuts& cuts = renderer_.vpls().cuts();
+      for (std::size_t cell = 0; renderer_.hasVpls() && cell < cuts.cellEntries.size(); ++cell)
+        bound = std::max(bound, static_cast<float>(cuts.lightsEvaluated(cell)));
+    }
+    return bounce::TonemapPass::CostDisplay{count,
+                                            options_.costMax.value_or(bounce::costScaleMax(bound))};
   }
 
   bool comparing() const {
@@ -699,8 +730,8 @@ class Viewer {
   bounce::RenderMode modeBeforeCharts_ = bounce::RenderMode::Full;
   std::optional<bounce::gl::PanelLayer> panel_;  // none when ImGui cannot start
   bool panelShown_ = false;
-  bounce::gl::GpuTimer gpuTimer_;
   bounce::FrameTimes times_;
+  std::vector<bounce::TimeSummary> passTimes_, cpuTimes_;  // the last 60 frames, per pass
   std::vector<std::string> bakeLines_;
   bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
   bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written
@@ -780,8 +811,17 @@ int main(int argc, char** argv) {
                  "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
                  "error (each texel's estimated relative error in false colour), validity, "
                  "texel-density (lightmap texels per metre against the bake's texel size), "
-                 "cascades (the directional light's shadow cascade index)")
+                 "cascades (the directional light's shadow cascade index), cost (the lights, VPLs "
+                 "or shadow-map taps each pixel evaluated, --cost-count, in false colour with a "
+                 "legend bar)")
       ->check(CLI::IsMember(bounce::renderModeNames()));
+  app.add_option("--cost-count", options.costCount,
+                 "mode cost: the count shown, lights, vpls or taps (default vpls)")
+      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
+  app.add_option("--cost-max", options.costMax,
+                 "mode cost: the count at the red end of the scale (default: 1, 2 or 5 x 10^k at "
+                 "or above the lights in the scene, the largest VPL lightcut, or 64 taps)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--dynamic-vpls", options.dynamicVpls,
                  "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
                  "again with it in place) or cut (the bake's paths cut where it blocks them; "

@@ -99,6 +99,7 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
       }
       ImGui::EndCombo();
     }
+    if (!view.costLegend.empty()) ImGui::TextWrapped("%s", view.costLegend.c_str());
     float exposure = view.exposure;
     if (ImGui::SliderFloat("exposure (EV)", &exposure, -10.0f, 10.0f, "%+.1f"))
       requests.exposure = exposure;
@@ -186,6 +187,14 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
   if (view.times && ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
     plot("CPU", view.times->cpu);
     plot("GPU", view.times->gpu);
+    const auto table = [](const char* title, const std::vector<TimeSummary>* rows) {
+      if (!rows || rows->empty()) return;
+      ImGui::TextUnformatted(title);
+      for (const TimeSummary& row : *rows)
+        ImGui::Text("  %-28s %7.2f %7.2f", row.name.c_str(), row.mean, row.p95);
+    };
+    table("GPU per pass, ms (mean, p95; last 60 frames)", view.passTimes);
+    table("CPU, ms (frame: build + submit, no wait)", view.cpuTimes);
   }
   ImGui::End();
   return requests;

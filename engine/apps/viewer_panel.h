@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/frame_profile.h"
 #include "render/reference_view.h"
 #include "render/render_mode.h"
 #include "scene/scene.h"
@@ -55,6 +56,11 @@ struct ViewerPanelView {
   const std::vector<Light>* lights = nullptr;  // the scene's punctual lights, as drawn now
   bool bakeStale = false;  // the bake no longer matches the scene (file or a light edit)
   const FrameTimes* times = nullptr;
+  std::string costLegend;  // the cost view's scale (render/cost_view.h); empty in other modes
+  // Per pass, GPU ms (gl/gpu_pass_timers.h), and the CPU spans of the frame (mean, p95 over the
+  // last 60 frames; ForwardRenderer::profile).
+  const std::vector<TimeSummary>* passTimes = nullptr;
+  const std::vector<TimeSummary>* cpuTimes = nullptr;
 };
 
 struct ViewerPanelRequests {

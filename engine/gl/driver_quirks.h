@@ -30,6 +30,12 @@ struct DriverQuirks {
   // allocations as "<unknown module>" that no suppression can name. Sanitized builds pin every
   // loaded GL driver with RTLD_NODELETE (gl_functions.cpp); normal builds leave them alone.
   bool driversUnloadBeforeLeakCheck = true;
+
+  // llvmpipe: a GL_TIME_ELAPSED query that spans a scene flush (a shadow map drawn and then
+  // sampled within it) reports end − 0, the machine's uptime (434,645 ms for the Cornell box's
+  // lit pass at 440 s uptime). Pass timers use pairs of GL_TIMESTAMP queries instead
+  // (gpu_pass_timers.h).
+  bool timeElapsedAcrossFlushes = true;
 };
 
 inline constexpr DriverQuirks kDriverQuirks{};

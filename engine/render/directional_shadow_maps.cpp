@@ -34,6 +34,13 @@ ShadowDrawCount DirectionalShadowMaps::render(const GpuScene& scene, const Camer
   const Bounds bounds{box.lower, box.upper, box.empty()};
   camera_ = camera;
   cascades_ = fitCascades(camera, aspect, light_->direction, bounds, cascadeSettings_);
+  bool still = drawn_.size() == cascades_.size();
+  for (std::size_t i = 0; still && i < cascades_.size(); ++i)
+    still = drawn_[i].matches(cascades_[i].worldToClip, scene.instances());
+  if (still) return count;
+  drawn_.assign(cascades_.size(), ShadowMapStamp{});
+  for (std::size_t i = 0; i < cascades_.size(); ++i)
+    drawn_[i].set(cascades_[i].worldToClip, scene.instances());
   target.bind(*atlas_);
   gl::clearDepth();
   gl::setDepthTest(true);

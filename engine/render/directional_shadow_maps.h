@@ -12,6 +12,7 @@
 #include "gl/shader.h"
 #include "render/cascades.h"
 #include "render/gpu_scene.h"
+#include "render/shadow_map_stamp.h"
 #include "render/shadow_settings.h"
 
 namespace bounce {
@@ -24,14 +25,23 @@ class DirectionalShadowMaps {
   int add(const Light& light);
   // The light with the cascades turned or changed, or another light takes them (the next
   // render fits them again). The cascades must exist (add).
-  void setLight(const Light& light) { light_ = light; }
+  void setLight(const Light& light) {
+    light_ = light;
+    drawn_.clear();
+  }
   // No light has the cascades: they are not rendered (uCascadeCount 0).
-  void release() { released_ = true; }
+  void release() {
+    released_ = true;
+    drawn_.clear();
+  }
   void assign(const Light& light) {
     light_ = light;
     released_ = false;
+    drawn_.clear();
   }
-  // Fits the cascades to `camera` (image aspect `aspect`) and renders them.
+  // Fits the cascades to `camera` (image aspect `aspect`) and renders them, unless every cascade
+  // and every instance is where it was when the atlas was last drawn (shadow_map_stamp.h): a
+  // still camera over a still scene draws them once.
   ShadowDrawCount render(const GpuScene& scene, const Camera& camera, float aspect,
                          gl::DepthTarget& target);
   // Binds the atlas and sets uCascade*, uView* on the forward program (uCascadeCount 0 when no
@@ -48,6 +58,7 @@ class DirectionalShadowMaps {
   std::optional<gl::Program> depth_;
   std::optional<gl::DepthTexture2D> atlas_;
   std::vector<Cascade> cascades_;
+  std::vector<ShadowMapStamp> drawn_;  // per cascade, what the atlas holds
   Camera camera_;
   std::filesystem::path shaderDir_;
 };

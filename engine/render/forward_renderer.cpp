@@ -1,6 +1,7 @@
 #include "render/forward_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_clamp.h"
+#include "gl/draw_state.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"
@@ -29,6 +31,7 @@ struct ForwardRenderer::Passes {
   ProbePass probes;
   VplPass vpls;
   ForwardPass forward;
+  gl::GpuPassTimers timers;
 
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
          const RendererSettings& settings, std::vector<std::string>& warnings)
@@ -79,6 +82,10 @@ ForwardRenderer::ForwardRenderer(const Scene& scene, const std::filesystem::path
 
 ForwardRenderer::~ForwardRenderer() = default;
 
+std::size_t ForwardRenderer::areaLightCount() const {
+  return passes_->scene.areaLights().lights.size();
+}
+
 std::size_t ForwardRenderer::emitterTriangleCount() const {
   return static_cast<std::size_t>(passes_->scene.emitterCount());
 }
@@ -90,6 +97,14 @@ void ForwardRenderer::setLightCulling(const LightCullingSettings& culling) {
 
 LightGridStats ForwardRenderer::lightGridStats() const {
   return passes_->culling.lastFrame();
+}
+
+const ClusterGrid& ForwardRenderer::clusterGrid() const {
+  return passes_->culling.grid();
+}
+
+uint64_t ForwardRenderer::lightGridBuilds() const {
+  return passes_->culling.gridBuilds();
 }
 
 ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
@@ -294,8 +309,21 @@ void ForwardRenderer::setMode(RenderMode mode) {
   settings_.mode = mode;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
 void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   Passes& p = *passes_;
+  const Clock::time_point cpuStart = Clock::now();
+  p.timers.beginFrame();
+  using Timed = gl::GpuPassTimers::Scope;
   const float aspect = static_cast<float>(target.width()) / static_cast<float>(target.height());
   const glm::mat4 cameraViewProjection = viewProjection(camera, aspect);
   // Without culling every light is shaded everywhere: any light that brings light competes.
@@ -304,30 +332,78 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   ViewVolume view(cameraViewProjection, p.scene.bounds());
   view.eye = camera.position();
   if (p.shadows.render(p.scene, p.lights, view, cascadeCamera_ ? *cascadeCamera_ : camera, aspect,
-                       floor))
+                       floor, &p.timers))
     p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
   followDynamicMoves();
   // The VPL shadow cubes only where some surface of this mode takes the VPLs' light: with every
-  // static surface baked (lightmap or probes) and nothing dynamic, none is drawn.
+  // static surface baked (lightmap or probes) and nothing dynamic, none is drawn. The cost view
+  // counts what the full frame does.
   std::vector<uint8_t> baked(p.scene.instances().size(), 0);
   for (std::size_t i = 0; i < baked.size(); ++i)
     baked[i] = p.lightmap.lightmapped(i) || p.probes.probeLit(i) ? 1 : 0;
   const bool everySurface =
       settings_.mode == RenderMode::Vpl || settings_.mode == RenderMode::VplClamp;
-  const bool vplsShaded =
-      everySurface || settings_.mode == RenderMode::Full || settings_.mode == RenderMode::Indirect;
-  if (vplsShaded && p.vpls.anyReceiver(p.scene, baked, everySurface)) p.vpls.renderShadows(p.scene);
+  const bool vplsShaded = everySurface || settings_.mode == RenderMode::Full ||
+                          settings_.mode == RenderMode::Indirect ||
+                          settings_.mode == RenderMode::Cost;
+  if (vplsShaded && p.vpls.anyReceiver(p.scene, baked, everySurface)) {
+    const Timed timed(&p.timers, "VPL shadow cubes");
+    p.vpls.renderShadows(p.scene);
+  }
+  const Clock::time_point cullingStart = Clock::now();
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
                    p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
+  profile_.addCpu("light culling", millisecondsSince(cullingStart));
   p.lightTable.update();
-  p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.probes, p.vpls,
-                 settings_.mode, cameraViewProjection, target);
+  {
+    const Timed timed(&p.timers, "lit forward pass");
+    p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.probes, p.vpls,
+                   settings_.mode, cameraViewProjection, target);
+  }
+  profile_.addCpu("frame", millisecondsSince(cpuStart));
 }
 
 Image ForwardRenderer::renderImage(const Camera& camera, int width, int height, int samples) {
   gl::RenderTarget target(width, height, samples);
   render(camera, target);
-  return target.read();
+  return readBack(target);
+}
+
+Image ForwardRenderer::readBack(const gl::RenderTarget& target) {
+  Passes& p = *passes_;
+  const Clock::time_point waitStart = Clock::now();
+  gl::finish();
+  profile_.addCpu("gpu wait", millisecondsSince(waitStart));
+  const Clock::time_point readStart = Clock::now();
+  Image image;
+  {
+    const gl::GpuPassTimers::Scope timed(&p.timers, "readback");
+    image = target.read();
+  }
+  profile_.addCpu("readback", millisecondsSince(readStart));
+  return image;
+}
+
+const FrameProfile& ForwardRenderer::profile(bool waitForGpu) {
+  Passes& p = *passes_;
+  if (waitForGpu) p.timers.finish();
+  for (const gl::GpuFrameTimes& frame : p.timers.takeFinished()) {
+    std::vector<std::pair<std::string, double>> passes;
+    for (const gl::GpuFrameTimes::Pass& pass : frame.passes)
+      passes.emplace_back(pass.name, pass.milliseconds);
+    profile_.addGpuFrame(passes);
+  }
+  return profile_;
+}
+
+void ForwardRenderer::clearProfile(bool waitForGpu) {
+  if (waitForGpu) passes_->timers.finish();
+  (void)passes_->timers.takeFinished();
+  profile_.clear();
+}
+
+gl::GpuPassTimers& ForwardRenderer::gpuTimers() {
+  return passes_->timers;
 }
 
 }  // namespace bounce

@@ -18,9 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "gl/gpu_pass_timers.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/area_shadow_budget.h"
+#include "render/frame_profile.h"
 #include "render/light_culling.h"
 #include "render/render_mode.h"
 #include "render/shadow_settings.h"
@@ -83,6 +85,24 @@ class ForwardRenderer {
   // Renders offscreen at width x height with `samples` per pixel (multisampling, resolved to
   // each pixel's mean radiance) and reads the radiance back, rows top to bottom.
   Image renderImage(const Camera& camera, int width, int height, int samples = 1);
+  // Reads `target` back as renderImage does, timing the wait for the GPU (CPU, "gpu wait") and
+  // the readback (GPU pass "readback" and CPU "readback") into the profile.
+  Image readBack(const gl::RenderTarget& target);
+
+  // Where the frames' time went since the last clearProfile(): each pass's GPU time ("shadow:
+  // spot maps", "shadow: point cubes", "shadow: directional cascades", "shadow: area-light
+  // cubes", "VPL shadow cubes", "lit forward pass" (MSAA resolve included), "readback", and what
+  // the caller times with gpuTimers(), e.g. the viewer's "tone map"), the CPU time of render()
+  // ("frame": building and submitting, no wait for the GPU; "light culling": the part of it that
+  // builds the light lists) and of readBack. GPU times arrive a
+  // frame or two late (gl/gpu_pass_timers.h); `waitForGpu` collects every frame in flight (after
+  // a benchmark's last frame).
+  const FrameProfile& profile(bool waitForGpu = false);
+  // Forgets what was measured; `waitForGpu` also drops the frames in flight (else they land in
+  // the next profile).
+  void clearProfile(bool waitForGpu = true);
+  // The renderer's pass timers, for passes drawn outside it into the same frame.
+  gl::GpuPassTimers& gpuTimers();
 
   // Moves instance `index` (object → world) without re-uploading its mesh. After moving dynamic
   // instances, the next frame re-traces the VPLs once (RendererSettings::vplTracer), else
@@ -142,6 +162,11 @@ class ForwardRenderer {
   void setLightCulling(const LightCullingSettings& culling);
   // The light lists of the last frame.
   LightGridStats lightGridStats() const;
+  // The last frame's view clusters (render/cluster_grid.h).
+  const ClusterGrid& clusterGrid() const;
+  // How many frames rebuilt the light lists (LightCulling::gridBuilds): a still camera's frames
+  // do not.
+  uint64_t lightGridBuilds() const;
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;
@@ -156,6 +181,7 @@ class ForwardRenderer {
   // Set-ups that make no sense or that the renderer does not support, one sentence each.
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t emitterTriangleCount() const;
+  std::size_t areaLightCount() const;
 
  private:
   struct Passes;
@@ -182,6 +208,7 @@ class ForwardRenderer {
   std::optional<Camera> cascadeCamera_;
   std::vector<std::string> warnings_;
   std::unique_ptr<Passes> passes_;
+  FrameProfile profile_;
 };
 
 }  // namespace bounce

@@ -112,6 +112,17 @@ GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
 
 GpuScene::~GpuScene() = default;
 
+SceneLimits GpuScene::sceneLimits() {
+  const auto rows = static_cast<std::size_t>(gl::Texture2D::maxSize());
+  SceneLimits limits;
+  limits.maxEmissiveTriangles = rows - 1;
+  limits.emissiveLimitReason =
+      "the renderer's emitter table holds GL_MAX_TEXTURE_SIZE = " + std::to_string(rows) +
+      " rows, one per emissive triangle and one per area light, and evaluates every triangle's "
+      "exact irradiance per pixel: merge the emitter into fewer, larger triangles";
+  return limits;
+}
+
 void GpuScene::uploadEmitters() {
   // The area lights cut by their shape (scene/area_lights.h) at the instances' current places,
   // their triangles 4 texels a row, then one row per light: see shaders/area_light.glsl.

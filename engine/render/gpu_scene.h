@@ -18,6 +18,7 @@
 #include "gl/texture.h"
 #include "render/frustum.h"
 #include "scene/area_lights.h"
+#include "scene/load.h"
 #include "scene/scene.h"
 
 namespace bounce {
@@ -44,6 +45,10 @@ class GpuScene {
  public:
   // Appends what the GPU cannot represent (too many emitters, empty textures) to `warnings`.
   GpuScene(const Scene& scene, std::vector<std::string>& warnings);
+  // What loadScene may hand this context's GpuScene: at most GL_MAX_TEXTURE_SIZE − 1 emissive
+  // triangles (the emitter table's rows, one per triangle and one per area light; beyond, lights
+  // are dropped from the frame). Needs a current context.
+  static SceneLimits sceneLimits();
   ~GpuScene();
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;

@@ -7,6 +7,9 @@
 // that by at most ρ/π · E_floor per light left out of its cluster (docs/renderer.md).
 #pragma once
 
+#include <cstdint>
+#include <optional>
+
 #include <cstddef>
 #include <vector>
 
@@ -54,6 +57,12 @@ class LightCulling {
   void bind(gl::Program& program) const;
 
   const LightGridStats& lastFrame() const { return stats_; }
+  // How many times the lists were built: a still view whose lights and scene box did not change
+  // keeps the last frame's (the camera, the image size, the scene's box, a light's reach or the
+  // settings changing rebuilds them).
+  uint64_t gridBuilds() const { return gridBuilds_; }
+  // The last frame's clusters (the lists are in the light table).
+  const ClusterGrid& grid() const { return grid_; }
 
  private:
   LightCullingSettings settings_;
@@ -62,6 +71,16 @@ class LightCulling {
   bool reachStale_ = true;
   ClusterGrid grid_;
   LightGridStats stats_;
+  // What the lists were built for.
+  struct BuiltFor {
+    glm::mat4 cameraToWorld{0.0f};
+    glm::vec4 lens{0.0f};  // yfov, aspect, znear, zfar
+    glm::ivec2 size{0};
+    Box sceneBox;
+    std::vector<LightReach> punctual, area;
+  };
+  std::optional<BuiltFor> builtFor_;
+  uint64_t gridBuilds_ = 0;
 };
 
 }  // namespace bounce

@@ -35,6 +35,8 @@ ShaderLighting shaderLighting(RenderMode mode) {
       return ShaderLighting::TexelDensity;
     case RenderMode::Cascades:
       return ShaderLighting::Cascades;
+    case RenderMode::Cost:
+      return ShaderLighting::Cost;
   }
   return ShaderLighting::Direct;
 }

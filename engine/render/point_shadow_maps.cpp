@@ -18,7 +18,7 @@ int cubeResolution(const ShadowSettings& settings, const Light& light, const Box
 int PointShadowMaps::add(const Light& light, const Box& sceneBox) {
   if (static_cast<int>(cubes_.size()) == kMaxPointShadows) return -1;
   const int resolution = cubeResolution(settings_, light, sceneBox);
-  cubes_.push_back({light, gl::DepthCubeMap(resolution), resolution, 1.0f});
+  cubes_.push_back({light, gl::DepthCubeMap(resolution), resolution, 1.0f, true, {}});
   return static_cast<int>(cubes_.size()) - 1;
 }
 
@@ -35,6 +35,7 @@ void PointShadowMaps::assign(int slot, const Light& light, const Box& sceneBox) 
   }
   cube.light = light;
   cube.used = true;
+  for (ShadowMapStamp& face : cube.drawn) face.invalidate();
 }
 
 ShadowDrawCount PointShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
@@ -48,6 +49,9 @@ ShadowDrawCount PointShadowMaps::render(const GpuScene& scene, const ViewVolume&
           cubeFaceShadowView(cube.light.position, face, sceneBox, cube.resolution);
       cube.far = faceView.far;
       if (!view.mayReach(faceView.viewProjection, sceneBox)) continue;
+      ShadowMapStamp& drawn = cube.drawn[static_cast<std::size_t>(face)];
+      if (drawn.matches(faceView.viewProjection, scene.instances())) continue;
+      drawn.set(faceView.viewProjection, scene.instances());
       target.bind(cube.texture, face);
       count += {1, drawShadowCasters(scene, faceView, cube.light.position, depthProgram)};
     }

@@ -10,6 +10,7 @@
 #include "render/gpu_scene.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
+#include "render/shadow_map_stamp.h"
 
 namespace bounce {
 
@@ -28,8 +29,10 @@ class PointShadowMaps {
   // The light of cube `slot` moved or changed (its faces follow on the next render).
   void setLight(int slot, const Light& light) {
     cubes_.at(static_cast<std::size_t>(slot)).light = light;
+    for (ShadowMapStamp& face : cubes_.at(static_cast<std::size_t>(slot)).drawn) face.invalidate();
   }
-  // Renders the faces that may reach `view` (ViewVolume::mayReach).
+  // Renders the faces that may reach `view` (ViewVolume::mayReach) and whose light or casters
+  // changed since they were last drawn (shadow_map_stamp.h).
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
                          gl::DepthTarget& target);
   void bind(gl::Program& forward) const;
@@ -41,6 +44,7 @@ class PointShadowMaps {
     int resolution = 0;
     float far = 1.0f;
     bool used = true;
+    std::array<ShadowMapStamp, 6> drawn;  // what each face holds (shadow_map_stamp.h)
   };
   ShadowSettings settings_;
   std::vector<Cube> cubes_;

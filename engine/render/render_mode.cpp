@@ -5,10 +5,10 @@
 namespace bounce {
 namespace {
 
-constexpr std::array kModes = {RenderMode::Full,         RenderMode::Direct,  RenderMode::Indirect,
-                               RenderMode::Lightmap,     RenderMode::Charts,  RenderMode::Vpl,
-                               RenderMode::VplClamp,     RenderMode::Error,   RenderMode::Validity,
-                               RenderMode::TexelDensity, RenderMode::Cascades};
+constexpr std::array kModes = {RenderMode::Full,         RenderMode::Direct,   RenderMode::Indirect,
+                               RenderMode::Lightmap,     RenderMode::Charts,   RenderMode::Vpl,
+                               RenderMode::VplClamp,     RenderMode::Error,    RenderMode::Validity,
+                               RenderMode::TexelDensity, RenderMode::Cascades, RenderMode::Cost};
 
 }  // namespace
 
@@ -36,12 +36,14 @@ std::string_view renderModeName(RenderMode mode) {
       return "texel-density";
     case RenderMode::Cascades:
       return "cascades";
+    case RenderMode::Cost:
+      return "cost";
   }
   return "direct";
 }
 
 bool renderModeNeedsBake(RenderMode mode) {
-  return mode != RenderMode::Direct && mode != RenderMode::Cascades;
+  return mode != RenderMode::Direct && mode != RenderMode::Cascades && mode != RenderMode::Cost;
 }
 
 bool renderModeNeedsVpls(RenderMode mode) {

@@ -27,6 +27,9 @@ enum class RenderMode {
                  // a checker of texels (render/view_mode_colours.h; needs a bake)
   Cascades,      // the directional light's shadow cascade index as a false colour
                  // (render/view_mode_colours.h; no bake needed)
+  Cost,          // what each pixel evaluated, shading as Full (Direct without a bake): the
+                 // counts of lights, VPLs and shadow-map taps as R, G, B (shaders/cost.glsl;
+                 // render/cost_view.h draws them in false colour; no bake needed)
 };
 
 // Whether the mode reads the lightmap, its layout or the VPLs (and so needs a bake).

@@ -55,6 +55,7 @@ gl::ShaderDefines makeConstants() {
       {"LIGHTING_ERROR", lighting(ShaderLighting::Error)},
       {"LIGHTING_TEXEL_DENSITY", lighting(ShaderLighting::TexelDensity)},
       {"LIGHTING_CASCADES", lighting(ShaderLighting::Cascades)},
+      {"LIGHTING_COST", lighting(ShaderLighting::Cost)},
       {"LIGHT_POINT", light(LightType::Point)},
       {"LIGHT_SPOT", light(LightType::Spot)},
       {"LIGHT_DIRECTIONAL", light(LightType::Directional)},

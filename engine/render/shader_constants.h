@@ -22,6 +22,7 @@ enum class ShaderLighting : int {
   Error = 7,
   TexelDensity = 8,
   Cascades = 9,
+  Cost = 10,  // the full frame's per-pixel work counted (shaders/cost.glsl)
 };
 
 // The baked-visibility table's light code for a slot that stands for every light the texel does

@@ -101,14 +101,28 @@ void ShadowPass::setLight(std::size_t index, const Light& light) {
 }
 
 bool ShadowPass::render(const GpuScene& scene, const PunctualLights& lights, const ViewVolume& view,
-                        const Camera& camera, float aspect, float floor) {
+                        const Camera& camera, float aspect, float floor,
+                        gl::GpuPassTimers* timers) {
   lastFrame_ = {};
   if (!settings_.enabled) return false;
   const bool slotsChanged = choosePunctualMaps(scene, lights, view, floor);
-  lastFrame_ += spot_.render(scene, view, depth_, target_);
-  lastFrame_ += point_.render(scene, view, depth_, target_);
-  lastFrame_ += directional_.render(scene, camera, aspect, target_);
-  lastFrame_ += area_.render(scene, view, floor, depth_, target_);
+  using Timed = gl::GpuPassTimers::Scope;
+  {
+    const Timed timed(timers, "shadow: spot maps");
+    lastFrame_ += spot_.render(scene, view, depth_, target_);
+  }
+  {
+    const Timed timed(timers, "shadow: point cubes");
+    lastFrame_ += point_.render(scene, view, depth_, target_);
+  }
+  {
+    const Timed timed(timers, "shadow: directional cascades");
+    lastFrame_ += directional_.render(scene, camera, aspect, target_);
+  }
+  {
+    const Timed timed(timers, "shadow: area-light cubes");
+    lastFrame_ += area_.render(scene, view, floor, depth_, target_);
+  }
   gl::checkErrors("shadow pass");
   return slotsChanged;
 }

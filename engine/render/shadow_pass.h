@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gl/depth_texture.h"
+#include "gl/gpu_pass_timers.h"
 #include "gl/shader.h"
 #include "render/area_shadow_maps.h"
 #include "render/directional_shadow_maps.h"
@@ -33,8 +34,9 @@ class ShadowPass {
   // the image's `aspect`: what the directional cascades are fitted to. `floor` (W/m²): a light
   // bringing less where the maps are read gets none (shadow_choice.h). `lights`: the punctual
   // lights as drawn now. Returns true when lightSlots() changed (the light table holds them).
+  // `timers` (may be null) times each kind's maps as a pass of its own.
   bool render(const GpuScene& scene, const PunctualLights& lights, const ViewVolume& view,
-              const Camera& camera, float aspect, float floor);
+              const Camera& camera, float aspect, float floor, gl::GpuPassTimers* timers = nullptr);
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.

@@ -8,7 +8,7 @@ namespace bounce {
 int SpotShadowMaps::add(const Light& light, const Box& sceneBox) {
   if (static_cast<int>(maps_.size()) == kMaxSpotShadows) return -1;
   const ShadowView view = spotShadowViewFor(light, sceneBox, settings_);
-  maps_.push_back({light, gl::DepthTexture2D(view.resolution, view.resolution), view});
+  maps_.push_back({light, gl::DepthTexture2D(view.resolution, view.resolution), view, true, {}});
   return static_cast<int>(maps_.size()) - 1;
 }
 
@@ -24,6 +24,7 @@ void SpotShadowMaps::assign(int slot, const Light& light, const Box& sceneBox) {
   map.light = light;
   map.view = view;
   map.used = true;
+  map.drawn.invalidate();
 }
 
 ShadowDrawCount SpotShadowMaps::render(const GpuScene& scene, const ViewVolume& view,
@@ -36,6 +37,8 @@ ShadowDrawCount SpotShadowMaps::render(const GpuScene& scene, const ViewVolume& 
     map.view =
         spotShadowView(map.light, sceneBox, map.view.resolution, settings_.filterRadius + 2.0f);
     if (!view.mayReach(map.view.viewProjection, sceneBox)) continue;
+    if (map.drawn.matches(map.view.viewProjection, scene.instances())) continue;
+    map.drawn.set(map.view.viewProjection, scene.instances());
     target.bind(map.texture);
     count += {1, drawShadowCasters(scene, map.view, map.light.position, depthProgram)};
   }

@@ -9,6 +9,7 @@
 #include "render/gpu_scene.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
+#include "render/shadow_map_stamp.h"
 
 namespace bounce {
 
@@ -26,8 +27,10 @@ class SpotShadowMaps {
   // The light of map `slot` moved or changed (its view follows on the next render).
   void setLight(int slot, const Light& light) {
     maps_.at(static_cast<std::size_t>(slot)).light = light;
+    maps_.at(static_cast<std::size_t>(slot)).drawn.invalidate();
   }
-  // Renders the maps that may reach `view` (ViewVolume::mayReach).
+  // Renders the maps that may reach `view` (ViewVolume::mayReach) and whose light or casters
+  // changed since they were last drawn (shadow_map_stamp.h).
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, gl::Program& depthProgram,
                          gl::DepthTarget& target);
   // Binds the maps and sets uSpotShadow* on the forward program.
@@ -39,6 +42,7 @@ class SpotShadowMaps {
     gl::DepthTexture2D texture;
     ShadowView view;
     bool used = true;
+    ShadowMapStamp drawn;  // what the texture holds (a still scene's map is drawn once)
   };
   ShadowSettings settings_;
   std::vector<Map> maps_;

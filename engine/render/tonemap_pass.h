@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "gl/texture.h"
+#include "render/cost_view.h"
 
 namespace bounce {
 
@@ -16,8 +18,15 @@ class TonemapPass {
   TonemapPass(const TonemapPass&) = delete;
   TonemapPass& operator=(const TonemapPass&) = delete;
 
-  // Fills the bound framebuffer's viewport with toneMap(radiance, exposureEV).
-  void draw(const gl::Texture2D& radiance, float exposureEV);
+  // Fills the bound framebuffer's viewport with toneMap(radiance, exposureEV); with `cost`, the
+  // texture holds the cost view's counts and one of them is drawn in false colour with its
+  // legend bar (render/cost_view.h, shaders/cost_colour.glsl).
+  struct CostDisplay {
+    CostCount count = CostCount::Vpls;
+    float scaleMax = 1.0f;
+  };
+  void draw(const gl::Texture2D& radiance, float exposureEV,
+            std::optional<CostDisplay> cost = std::nullopt);
 
  private:
   struct Gpu;

@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 
+#include "scene/area_lights.h"
 #include "scene/closed_shells.h"
 #include "scene/crossing_cuts.h"
 #include "scene/loaders.h"
@@ -35,8 +36,15 @@ Scene loadSceneAsWritten(const std::filesystem::path& path) {
   return scene;
 }
 
-Scene loadScene(const std::filesystem::path& path) {
+Scene loadScene(const std::filesystem::path& path, const SceneLimits& limits) {
   Scene scene = loadSceneAsWritten(path);
+  if (limits.maxEmissiveTriangles != SIZE_MAX) {
+    const std::size_t emissive = emitterTriangles(scene).size();
+    if (emissive > limits.maxEmissiveTriangles)
+      throw LoadError(path, std::to_string(emissive) + " emissive triangles, more than the " +
+                                std::to_string(limits.maxEmissiveTriangles) + " allowed (" +
+                                limits.emissiveLimitReason + ")");
+  }
   if (const ShellOrientation shells = orientClosedShells(scene); shells.turned > 0)
     scene.warnings.push_back(
         std::to_string(shells.turned) + " of " + std::to_string(shells.closedShells) +

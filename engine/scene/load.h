@@ -7,13 +7,25 @@
 // cutAtCrossings themselves.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "scene/load_error.h"
 #include "scene/scene.h"
 
 namespace bounce {
 
-Scene loadScene(const std::filesystem::path& path);
+// What a caller can draw or bake at most, checked as soon as the file is read (before the
+// shells and the crossing cuts, which take minutes on a million triangles).
+struct SceneLimits {
+  // Emissive triangles (scene/surface_rules.h): the renderer's emitter table holds one row per
+  // triangle plus one per area light, GL_MAX_TEXTURE_SIZE rows (render/gpu_scene.h).
+  std::size_t maxEmissiveTriangles = SIZE_MAX;
+  std::string emissiveLimitReason;  // why, for the message
+};
+
+Scene loadScene(const std::filesystem::path& path, const SceneLimits& limits = {});
 
 }  // namespace bounce

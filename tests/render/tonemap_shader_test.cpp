@@ -41,3 +41,43 @@ TEST(TonemapShader, MatchesCpuToneMap) {
 
 }  // namespace
 }  // namespace bounce::test
+
+namespace bounce::test {
+namespace {
+
+// The viewer's cost view (shaders/cost_colour.glsl) draws what bounce-render's PNG holds
+// (render/cost_view.h, costFalseColour): the ramp over each count and the legend bar with its
+// ticks, for each of the three counts. Counts 0 … 2.5 × scaleMax cover every ramp segment and
+// the white beyond; 64 × 64 gives a 4-row bar.
+TEST(TonemapShader, CostViewMatchesTheCpuFalseColourAndLegend) {
+  testContext();
+  constexpr int kSize = 64;
+  const float scaleMax = 50.0f;
+  Image counts(kSize, kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float c = static_cast<float>(x + kSize * y) * 2.5f * scaleMax / (kSize * kSize);
+      counts.at(x, y) = {c, 2.0f * c, 0.5f * c};
+    }
+  // Texture rows go bottom-up (GL), the image's top-down.
+  std::vector<glm::vec3> texels;
+  for (int y = kSize - 1; y >= 0; --y)
+    for (int x = 0; x < kSize; ++x) texels.push_back(counts.at(x, y));
+  const gl::Texture2D input(kSize, kSize, texels, gl::Filter::Nearest);
+  gl::RenderTarget target(kSize, kSize);
+  TonemapPass pass(gl::shaderDirectory());
+  for (const CostCount count : {CostCount::Lights, CostCount::Vpls, CostCount::ShadowTaps}) {
+    target.bind();
+    pass.draw(input, 0.0f, TonemapPass::CostDisplay{count, scaleMax});
+    const Image out = target.read();
+    const Image expected = costFalseColour(counts, count, scaleMax);
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(out.at(x, y)[c], expected.at(x, y)[c], 1e-5f)
+              << "pixel (" << x << ", " << y << ") count " << costCountName(count);
+  }
+}
+
+}  // namespace
+}  // namespace bounce::test

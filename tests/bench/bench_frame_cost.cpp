@@ -1,0 +1,127 @@
+// Where a frame's time goes, per content scene (docs/renderer.md, "Frame cost"): the full frame
+// and the lightmap-only frame (--mode lightmap) rendered --frames times at --width x --height,
+// their ratio, each pass's GPU time (ForwardRenderer::profile, pass timers), the CPU time of
+// building and submitting the frame, and the cost view's counts (mean lights, VPLs and shadow-map
+// taps per pixel, RenderMode::Cost). Run by hand; a tiny smoke run is registered with CTest.
+//
+//   bench_frame_cost SCENE[=BAKE_DIR|=none]... [--width W] [--height H] [--frames N]
+//
+// BAKE_DIR: the scene's bake; none: no bake (full is then the direct frame and the lightmap
+// frame is not drawn); nothing: SCENE.bake beside the scene or the build step's bake.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bake_folder/bake_folder.h"
+#include "bake_folder/bake_search.h"
+#include "gl/context.h"
+#include "gl/shader.h"
+#include "render/cost_view.h"
+#include "render/forward_renderer.h"
+#include "scene/framing.h"
+#include "scene/load.h"
+
+namespace {
+
+struct Options {
+  std::vector<std::string> scenes;
+  int width = 480, height = 270, frames = 10;
+};
+
+struct FrameTimes {
+  double gpuTotal = 0.0;  // Σ of the passes' mean GPU times, ms
+  double cpuFrame = 0.0;  // mean CPU time of render(), ms
+  std::vector<bounce::TimeSummary> passes;
+};
+
+// `frames` frames of `mode` after one warm-up frame (llvmpipe compiles variants lazily).
+FrameTimes measure(bounce::ForwardRenderer& renderer, const bounce::Camera& camera,
+                   bounce::RenderMode mode, const Options& options) {
+  renderer.setMode(mode);
+  bounce::gl::RenderTarget target(options.width, options.height, 1);
+  renderer.render(camera, target);
+  (void)renderer.readBack(target);
+  renderer.clearProfile();
+  for (int i = 0; i < options.frames; ++i) {
+    renderer.render(camera, target);
+    (void)renderer.readBack(target);
+  }
+  FrameTimes times;
+  const bounce::FrameProfile& profile = renderer.profile(true);
+  times.passes = profile.gpuPasses();
+  for (const bounce::TimeSummary& pass : times.passes) times.gpuTotal += pass.mean;
+  for (const bounce::TimeSummary& cpu : profile.cpu())
+    if (cpu.name == "frame") times.cpuFrame = cpu.mean;
+  return times;
+}
+
+void benchScene(const std::string& argument, const Options& options) {
+  const std::size_t equals = argument.find('=');
+  const std::string path = argument.substr(0, equals);
+  const std::optional<std::string> bakeArg =
+      equals == std::string::npos ? std::nullopt : std::optional(argument.substr(equals + 1));
+  const bounce::Scene scene = bounce::loadScene(path);
+  std::optional<bounce::Bake> bake;
+  if (bakeArg && *bakeArg != "none") bake = bounce::readBake(*bakeArg, scene);
+  if (!bakeArg) bake = bounce::findSceneBake(path, scene, bounce::toolDirectory()).bake;
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  const bounce::Camera camera = bounce::pickCamera(scene, "", aspect, nullptr);
+  bounce::RendererSettings settings;
+  settings.mode = bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct;
+  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
+                                   bake ? &*bake : nullptr);
+  const FrameTimes full = measure(renderer, camera, settings.mode, options);
+  std::optional<FrameTimes> lightmap;
+  if (bake) lightmap = measure(renderer, camera, bounce::RenderMode::Lightmap, options);
+  renderer.setMode(bounce::RenderMode::Cost);
+  const bounce::CostStats cost =
+      bounce::costStats(renderer.renderImage(camera, options.width, options.height, 1));
+  std::printf("| %s | %s | %.1f | %.1f | %s | %s | %.2f | %.1f | %.1f |\n", path.c_str(),
+              bake ? "yes" : "no", full.gpuTotal, full.cpuFrame,
+              lightmap ? (std::to_string(lightmap->gpuTotal).substr(0, 6)).c_str() : "-",
+              lightmap && lightmap->gpuTotal > 0.0
+                  ? (std::to_string(full.gpuTotal / lightmap->gpuTotal).substr(0, 5)).c_str()
+                  : "-",
+              cost.meanLights, cost.meanVpls, cost.meanShadowTaps);
+  std::string passes;
+  for (const bounce::TimeSummary& pass : full.passes) {
+    char cell[96];
+    std::snprintf(cell, sizeof cell, "%s%s %.2f/%.2f", passes.empty() ? "" : "; ",
+                  pass.name.c_str(), pass.mean, pass.p95);
+    passes += cell;
+  }
+  std::fprintf(stderr, "bench_frame_cost: %s full frame GPU passes, mean/p95 ms: %s\n",
+               path.c_str(), passes.c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Frame cost per scene: full vs lightmap-only frame, GPU passes, cost counts",
+               "bench_frame_cost"};
+  app.add_option("scenes", options.scenes, "SCENE[=BAKE_DIR|=none] ...")->required();
+  app.add_option("--width", options.width, "pixels")->check(CLI::Range(1, 8192));
+  app.add_option("--height", options.height, "pixels")->check(CLI::Range(1, 8192));
+  app.add_option("--frames", options.frames, "frames measured per mode")
+      ->check(CLI::Range(1, 10000));
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const auto context = bounce::gl::createOffscreenContext(std::nullopt, nullptr);
+    std::fprintf(stderr, "bench_frame_cost: %s, %dx%d, %d frames per mode, msaa 1\n",
+                 context->renderer().c_str(), options.width, options.height, options.frames);
+    std::printf(
+        "| scene | bake | full GPU ms | full CPU ms | lightmap GPU ms | full / lightmap | "
+        "lights/px | VPLs/px | taps/px |\n|---|---|---|---|---|---|---|---|---|\n");
+    for (const std::string& scene : options.scenes) benchScene(scene, options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_frame_cost: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
