@@ -38,6 +38,7 @@
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
 #include "cli/viewer_script.h"
+#include "gl/gpu_pass_timers.h"
 #include "gl/panel_layer.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"

@@ -10,6 +10,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_clamp.h"
 #include "gl/draw_state.h"
+#include "gl/gpu_pass_timers.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
 #include "render/gpu_scene.h"

@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "gl/gpu_pass_timers.h"
 #include "gl/render_target.h"
 #include "image/image.h"
 #include "render/area_shadow_budget.h"
@@ -30,6 +29,9 @@
 #include "scene/scene.h"
 
 namespace bounce {
+namespace gl {
+class GpuPassTimers;  // gl/gpu_pass_timers.h
+}  // namespace gl
 
 struct Bake;  // bake_folder/bake_folder.h
 

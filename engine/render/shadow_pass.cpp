@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/draw_state.h"
+#include "gl/gpu_pass_timers.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/shader_constants.h"
 #include "render/shadow_receivers.h"

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "gl/depth_texture.h"
-#include "gl/gpu_pass_timers.h"
 #include "gl/shader.h"
 #include "render/area_shadow_maps.h"
 #include "render/directional_shadow_maps.h"
@@ -24,6 +23,9 @@
 #include "render/spot_shadow_maps.h"
 
 namespace bounce {
+namespace gl {
+class GpuPassTimers;  // gl/gpu_pass_timers.h
+}  // namespace gl
 
 class ShadowPass {
  public:

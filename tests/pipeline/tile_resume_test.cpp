@@ -249,7 +249,7 @@ TEST(Tiles, TheProbesDoNotDependOnTheTileSizeOrTheThreads) {
   ASSERT_TRUE(found);
   SceneBakeSettings a;
   a.texelBudget = 1024;
-  a.spp = 256;
+  a.maxSpp = 256;
   a.vpls = 0;
   a.tileSize = 7;
   a.threads = 1;
@@ -356,7 +356,7 @@ TEST(TileJournalFile, AResumeAfterTheSceneFileChangedNeverMixesTheTwoScenes) {
   fs::copy_file(kCornell, sceneFile);
   SceneBakeSettings settings;
   settings.texelBudget = 1024;
-  settings.spp = 32;
+  settings.maxSpp = 32;
   settings.vpls = 0;
   settings.tileSize = 8;
   settings.threads = 1;

@@ -69,7 +69,7 @@ TEST(ProbeAccuracy, ATiltedPlateLitByProbesMatchesThePathTracer) {
   const PlateInABox s = plateInABox();
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelBudget = 4096;
-  settings.spp = 2048;
+  settings.maxSpp = 2048;
   settings.targetError = 0.05f;
   settings.denoise = false;
   const Bake baked = bakeScene(s.scene, settings).folder;
