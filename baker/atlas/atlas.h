@@ -51,8 +51,9 @@ struct Atlas {
   LightmapLayout layout;
   std::vector<std::string> notes;  // one sentence each: why a mesh's own uv1 was not used, …
   // Static instances left without a lightmap region, their baked light taken from irradiance
-  // probes (bake/irradiance_probes.h; the name is from when the VPLs lit them): lightmapScale 0, under kMinLightmapTexels of surface at their texel, or
-  // filling under minLightmapFill of their charts' padded texels.
+  // probes (bake/irradiance_probes.h; the name is from when the VPLs lit them): lightmapScale 0,
+  // under kMinLightmapTexels of surface at their texel, or filling under minLightmapFill of their
+  // charts' padded texels.
   std::vector<uint32_t> vplLitInstances;
   // Added to the interface: the chart of every triangle, parallel to layout.instances[i].cornerUv
   // (one per triangle), chart ids in [0, layout.chartCount). Texels of different charts never
