@@ -125,6 +125,16 @@ struct Placement {
 std::optional<Placement> placeCharts(std::vector<Chart>& charts,
                                      const std::vector<glm::ivec2>& cells, int padding,
                                      int maxSize) {
+  // Each chart's mask and rectangle covers at least about its triangles' area in texels (the
+  // triangles do not overlap; the rasteriser's shrunk squares lose only slivers): when that sum
+  // is over twice the atlas, neither packing fits, so the texel sizes the coarsening loop is
+  // bound to leave cost no mask. Twice: a safe margin for the slivers; the result is unchanged.
+  double chartTexels = 0.0;
+  for (const Chart& chart : charts)
+    for (std::size_t k = 0; k + 2 < chart.cornerUv.size(); k += 3)
+      chartTexels +=
+          std::abs(signedArea(chart.cornerUv[k], chart.cornerUv[k + 1], chart.cornerUv[k + 2]));
+  if (chartTexels > 2.0 * static_cast<double>(maxSize) * maxSize) return std::nullopt;
   std::vector<glm::ivec2> rects;
   for (const glm::ivec2 c : cells) rects.push_back(c + padding);
   const std::optional<Packing> byRect = packRectangles(rects, maxSize);
