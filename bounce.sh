@@ -11,7 +11,7 @@ cd "$(dirname "$0")"
 
 # Debian 12 packages bounce builds with (see docs/dependencies.md); the demo needs only these.
 packages=(
-  cmake g++ make pkg-config python3-glad
+  cmake ninja-build make g++ lld pkg-config python3-glad
   libosmesa6-dev libegl1-mesa-dev libgles-dev libglfw3-dev libglm-dev
   libopenmesh-dev libeigen3-dev libstb-dev libembree-dev libtbb-dev
   libtinygltf-dev libtinyobjloader-dev libtinyexr-dev
