@@ -84,6 +84,7 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   VplLightCutSettings cutSettings;
   cutSettings.kappa = settings.culling ? settings.kappa : std::numeric_limits<float>::infinity();
   cutSettings.maxCellsPerAxis = settings.culling ? settings.maxCellsPerAxis : 1;
+  cutSettings.maxLights = settings.culling ? settings.maxLights : 0;
   const glm::vec3 lo = bounds.empty() ? glm::vec3(0.0f) : bounds.lower;
   const glm::vec3 hi = bounds.empty() ? glm::vec3(0.0f) : bounds.upper;
   cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
@@ -96,16 +97,17 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
     cutSettings.maxCellsPerAxis /= 2;
     cuts_ = buildVplLightCuts(groups_, lo, hi, cutSettings);
   }
-  if (settings.culling && !vpls.empty()) {
+  if (settings.culling && !vpls.empty() &&
+      (settings.maxLights == 0 || vpls.size() <= settings.maxLights)) {
     // A cut that keeps more than half the VPLs costs more than it saves (its per-cell lists
     // are read through the texture cache; docs/vpl_measurements.md, "Frame time"): one cell, every
-    // VPL.
+    // VPL, when that is within the light bound.
     double evaluated = 0.0;
     for (std::size_t c = 0; c < cuts_.cellEntries.size(); ++c)
       evaluated += static_cast<double>(cuts_.lightsEvaluated(c));
     if (evaluated / static_cast<double>(cuts_.cellEntries.size()) >
         0.5 * static_cast<double>(vpls.size()))
-      cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1});
+      cuts_ = buildVplLightCuts(groups_, lo, hi, {std::numeric_limits<float>::infinity(), 1, 0});
   }
   clampDistance_ = clampDistance;
   cubes_ = vplShadowCubes(groups_, shadows_ ? shadows_->cubesPerGroup() : 1);

@@ -30,6 +30,9 @@ struct VplRenderSettings {
   bool culling = true;
   float kappa = 4.0f;  // a tree node is far beyond κ node radii (vpl_groups.h)
   int maxCellsPerAxis = 16;
+  // Lights a fragment evaluates at most (VplLightCutSettings::maxLights; 0: no bound), whatever
+  // the VPL count: the dynamic objects' cost per pixel.
+  uint32_t maxLights = VplLightCutSettings{}.maxLights;
   // Visibility: one shadow cube per group (render/vpl_shadow_maps.h); shadows.enabled = false
   // draws every VPL unoccluded.
   VplShadowSettings shadows;

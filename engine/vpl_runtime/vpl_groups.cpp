@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "image/luminance.h"
 #include "vpl_runtime/vpl_reduce.h"
 
 namespace bounce {
@@ -154,43 +155,103 @@ VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 
   const std::span<const Vpl> lights = groups.lights();
   const std::span<const VplNode> nodes = groups.nodes();
   const auto n = static_cast<uint32_t>(groups.vplCount());
-  std::vector<int32_t> stack;
   const std::size_t cellCount = static_cast<std::size_t>(cuts.cells.x) *
                                 static_cast<std::size_t>(cuts.cells.y) *
                                 static_cast<std::size_t>(cuts.cells.z);
+  const uint32_t bound =
+      settings.maxLights == 0
+          ? std::numeric_limits<uint32_t>::max()
+          : std::max(settings.maxLights, static_cast<uint32_t>(groups.groupCount()));
+  // A node waiting to be refined, with its far-field error estimate lum(Φ)·s²/d⁴ (W·m⁻⁴ scale;
+  // only the order matters). d is clamped to a hundredth of the cell's half-diagonal: a node
+  // around the cell is refined before any node away from it.
+  struct Candidate {
+    double error;
+    int32_t node;
+    bool operator<(const Candidate& o) const {
+      return error < o.error || (error == o.error && node > o.node);
+    }
+  };
+  std::vector<Candidate> heap;
+  std::vector<int32_t> cut;  // the nodes kept: far, leaves expanded (count < 0 marks a leaf's VPLs)
   cuts.cellEntries.reserve(cellCount);
   for (int z = 0; z < cuts.cells.z; ++z)
     for (int y = 0; y < cuts.cells.y; ++y)
       for (int x = 0; x < cuts.cells.x; ++x) {
         const glm::vec3 centre = lo + (glm::vec3(x, y, z) + 0.5f) * cuts.cellSize;
+        const auto distanceOf = [&](const VplNode& node) {
+          return glm::length(lights[node.representative].position - centre) - halfDiagonal;
+        };
+        const auto errorOf = [&](const VplNode& node) {
+          const double d = std::max(static_cast<double>(distanceOf(node)), 0.01 * halfDiagonal);
+          const double s = node.radius;
+          return static_cast<double>(luminance(lights[node.representative].flux)) * s * s /
+                 (d * d * d * d);
+        };
+        // Near: not far by κ and more than one VPL (a lone VPL is exact as itself).
+        const auto near = [&](const VplNode& node) {
+          return node.count > 1 && !(distanceOf(node) > settings.kappa * node.radius);
+        };
+        heap.clear();
+        cut.clear();
+        uint32_t lightsUsed = 0;
+        for (const VplGroup& group : groups.groups()) {
+          const VplNode& root = nodes[group.root];
+          ++lightsUsed;
+          if (near(root))
+            heap.push_back({errorOf(root), static_cast<int32_t>(group.root)});
+          else
+            cut.push_back(static_cast<int32_t>(group.root));
+        }
+        std::make_heap(heap.begin(), heap.end());
+        while (!heap.empty()) {
+          std::pop_heap(heap.begin(), heap.end());
+          const int32_t index = heap.back().node;
+          heap.pop_back();
+          const VplNode& node = nodes[static_cast<std::size_t>(index)];
+          // A leaf becomes its VPLs (count lights instead of 1), an inner node its two children.
+          const uint32_t more = node.left < 0 ? node.count - 1 : 1;
+          if (lightsUsed + more > bound) {
+            cut.push_back(index);  // stays its representative
+            continue;
+          }
+          lightsUsed += more;
+          if (node.left < 0) {
+            cut.push_back(-1 - index);
+            continue;
+          }
+          for (const int32_t child : {node.left, node.right}) {
+            const VplNode& c = nodes[static_cast<std::size_t>(child)];
+            if (near(c)) {
+              heap.push_back({errorOf(c), child});
+              std::push_heap(heap.begin(), heap.end());
+            } else {
+              cut.push_back(child);
+            }
+          }
+        }
+        // Light-table order (the nodes of a cut are disjoint ranges: by their first member),
+        // consecutive VPL ranges merged.
+        const auto nodeOf = [&](int32_t entry) -> const VplNode& {
+          return nodes[static_cast<std::size_t>(entry < 0 ? -1 - entry : entry)];
+        };
+        std::sort(cut.begin(), cut.end(),
+                  [&](int32_t a, int32_t b) { return nodeOf(a).first < nodeOf(b).first; });
         const auto first = static_cast<uint32_t>(cuts.entries.size());
-        // Appends a range, merged with the previous one when they are consecutive VPLs.
-        const auto add = [&](uint32_t begin, uint32_t count) {
-          if (cuts.entries.size() > first && begin < n) {
+        for (const int32_t entry : cut) {
+          const VplNode& node = nodeOf(entry);
+          // An expanded leaf is its VPLs; any other node its representative (a lone VPL's is
+          // the VPL itself, or its group's slot for a group of one).
+          const uint32_t begin = entry < 0 ? node.first : node.representative;
+          const uint32_t count = entry < 0 ? node.count : 1u;
+          if (begin < n && cuts.entries.size() > first) {
             glm::uvec2& last = cuts.entries.back();
-            if (last.x + last.y == begin && last.x < n) {
+            if (last.x < n && last.x + last.y == begin) {
               last.y += count;
-              return;
+              continue;
             }
           }
           cuts.entries.emplace_back(begin, count);
-        };
-        for (const VplGroup& group : groups.groups()) {
-          stack.assign(1, static_cast<int32_t>(group.root));
-          while (!stack.empty()) {
-            const VplNode& node = nodes[static_cast<std::size_t>(stack.back())];
-            stack.pop_back();
-            const float distance =
-                glm::length(lights[node.representative].position - centre) - halfDiagonal;
-            if (node.count == 1 || distance > settings.kappa * node.radius)
-              add(node.representative, 1u);
-            else if (node.left < 0)
-              add(node.first, node.count);
-            else {
-              stack.push_back(node.right);  // left first: consecutive ranges merge
-              stack.push_back(node.left);
-            }
-          }
         }
         cuts.cellEntries.emplace_back(first, static_cast<uint32_t>(cuts.entries.size()) - first);
       }

@@ -96,6 +96,12 @@ class VplGroups {
 struct VplLightCutSettings {
   float kappa = 4.0f;  // far when the cell is more than κ node radii away; ∞: no culling
   int maxCellsPerAxis = 16;
+  // At most this many lights per cell (0: no bound), so that a receiver's cost does not grow
+  // with the VPL count. The cut is refined worst node first, by the far-field error estimate
+  // lum(Φ)·s²/d⁴ (the second-order term of a node of flux Φ and radius s seen from d), until
+  // every node is far, a leaf's VPLs, or the next refinement would pass the bound. Under the
+  // bound the cut is the unbounded one. Raised to the group count when below it.
+  uint32_t maxLights = 512;
 };
 
 struct VplLightCuts {
@@ -114,7 +120,8 @@ struct VplLightCuts {
 };
 
 // The grid over [lo, hi] (metres; a degenerate axis gets one cell) with, per cell, the cut of
-// every group's tree: far nodes as their representative, near leaves as their VPLs.
+// every group's tree: far nodes as their representative, near leaves as their VPLs (within the
+// settings' light bound: the nodes left near when it is reached are their representative).
 VplLightCuts buildVplLightCuts(const VplGroups& groups, glm::vec3 lo, glm::vec3 hi,
                                const VplLightCutSettings& settings);
 

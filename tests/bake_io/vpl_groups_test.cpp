@@ -84,53 +84,56 @@ TEST(VplGroups, EveryCellCountsEveryVplOnceAndRepresentativesKeepTheFlux) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(representative[c], members[c], 1e-6 * members[c]);
   }
 
-  const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {8.0f, 8});
-  ASSERT_EQ(cuts.cellEntries.size(), static_cast<std::size_t>(cuts.cells.x) *
-                                         static_cast<std::size_t>(cuts.cells.y) *
-                                         static_cast<std::size_t>(cuts.cells.z));
-  // Every node's representative stands for its members; a cell's entries must cover every VPL
-  // exactly once, either itself or through one representative.
-  std::vector<const VplNode*> nodeOf(groups.lights().size(), nullptr);
-  for (const VplNode& node : groups.nodes()) {
-    if (node.count > 1) nodeOf[node.representative] = &node;
-    // A node's representative keeps its members' flux.
-    if (node.count > 1) {
-      glm::dvec3 members(0.0);
-      for (uint32_t i = node.first; i < node.first + node.count; ++i)
-        members += glm::dvec3(groups.lights()[i].flux);
-      const glm::dvec3 representative(groups.lights()[node.representative].flux);
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(representative[c], members[c], 1e-6 * members[c]);
+  for (const uint32_t maxLights : {0u, 100u}) {
+    SCOPED_TRACE(maxLights);
+    const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {8.0f, 8, maxLights});
+    ASSERT_EQ(cuts.cellEntries.size(), static_cast<std::size_t>(cuts.cells.x) *
+                                           static_cast<std::size_t>(cuts.cells.y) *
+                                           static_cast<std::size_t>(cuts.cells.z));
+    // Every node's representative stands for its members; a cell's entries must cover every VPL
+    // exactly once, either itself or through one representative.
+    std::vector<const VplNode*> nodeOf(groups.lights().size(), nullptr);
+    for (const VplNode& node : groups.nodes()) {
+      if (node.count > 1) nodeOf[node.representative] = &node;
+      // A node's representative keeps its members' flux.
+      if (node.count > 1) {
+        glm::dvec3 members(0.0);
+        for (uint32_t i = node.first; i < node.first + node.count; ++i)
+          members += glm::dvec3(groups.lights()[i].flux);
+        const glm::dvec3 representative(groups.lights()[node.representative].flux);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(representative[c], members[c], 1e-6 * members[c]);
+      }
     }
-  }
-  const std::size_t n = groups.vplCount();
-  std::size_t entries = 0;
-  for (const glm::uvec2 cell : cuts.cellEntries) {
-    std::vector<int> seen(n, 0);
-    for (uint32_t e = cell.x; e < cell.x + cell.y; ++e) {
-      const glm::uvec2 range = cuts.entries[e];
-      ASSERT_GE(range.y, 1u);
-      if (range.x < n) {
-        ASSERT_LE(range.x + range.y, n);
-        for (uint32_t i = range.x; i < range.x + range.y; ++i) ++seen[i];
-      } else {
-        ASSERT_EQ(range.y, 1u);
-        const uint32_t g = groups.groupOf(range.x);
-        const VplNode* node = nodeOf[range.x];
-        if (node == nullptr) {  // a lone VPL's group slot
-          ASSERT_EQ(groups.groups()[g].count, 1u);
-          ++seen[groups.groups()[g].first];
+    const std::size_t n = groups.vplCount();
+    std::size_t entries = 0;
+    for (const glm::uvec2 cell : cuts.cellEntries) {
+      std::vector<int> seen(n, 0);
+      for (uint32_t e = cell.x; e < cell.x + cell.y; ++e) {
+        const glm::uvec2 range = cuts.entries[e];
+        ASSERT_GE(range.y, 1u);
+        if (range.x < n) {
+          ASSERT_LE(range.x + range.y, n);
+          for (uint32_t i = range.x; i < range.x + range.y; ++i) ++seen[i];
         } else {
-          for (uint32_t i = node->first; i < node->first + node->count; ++i) {
-            EXPECT_EQ(groups.groupOf(i), g);
-            ++seen[i];
+          ASSERT_EQ(range.y, 1u);
+          const uint32_t g = groups.groupOf(range.x);
+          const VplNode* node = nodeOf[range.x];
+          if (node == nullptr) {  // a lone VPL's group slot
+            ASSERT_EQ(groups.groups()[g].count, 1u);
+            ++seen[groups.groups()[g].first];
+          } else {
+            for (uint32_t i = node->first; i < node->first + node->count; ++i) {
+              EXPECT_EQ(groups.groupOf(i), g);
+              ++seen[i];
+            }
           }
         }
+        ++entries;
       }
-      ++entries;
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i], 1) << "VPL " << i;
     }
-    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(seen[i], 1) << "VPL " << i;
+    EXPECT_LT(entries, cuts.cellEntries.size() * n / 4);  // the cut is not the whole set
   }
-  EXPECT_LT(entries, cuts.cellEntries.size() * n / 4);  // the cut is not the whole set
 }
 
 // Error of the cut at receivers against the full sum. A far node (d ≥ κ·s from its
@@ -144,7 +147,7 @@ TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
   const float r = vplClampDistance(room.area, room.vpls.size());
   const VplGroups groups(room.vpls, 64);
   for (const float kappa : {2.0f, 4.0f, 8.0f}) {
-    const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {kappa, 16});
+    const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {kappa, 16, 0});
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     double worst = 0.0, evaluated = 0.0;
@@ -180,12 +183,68 @@ TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
   }
 }
 
+// The light bound (VplLightCutSettings::maxLights): a receiver's cost does not grow with the
+// VPL count. In the room with 1,024 and 16,384 VPLs every cell evaluates at most 256 lights (the
+// unbounded κ = 4 cut takes more at 16,384). Its accuracy: refined worst node first, a cut of 256
+// lights is at least as accurate as the unbounded κ = 2 cut (which takes fewer lights than that,
+// on average, and whose far-field bound 1/κ² = 25% holds at every receiver), so its worst relative
+// error at 200 receivers is held to 1/2².
+TEST(VplGroups, BoundedCutKeepsItsCostWhateverTheVplCount) {
+  for (const std::size_t count : {std::size_t{1024}, std::size_t{16384}}) {
+    SCOPED_TRACE(count);
+    const Room room = makeRoom(count, 11);
+    const float r = vplClampDistance(room.area, room.vpls.size());
+    const VplGroups groups(room.vpls, 64);
+    const VplLightCuts bounded = buildVplLightCuts(groups, room.lo, room.hi, {4.0f, 16, 256});
+    const VplLightCuts loose = buildVplLightCuts(groups, room.lo, room.hi, {2.0f, 16, 0});
+    std::size_t most = 0;
+    for (std::size_t c = 0; c < bounded.cellEntries.size(); ++c)
+      most = std::max(most, bounded.lightsEvaluated(c));
+    EXPECT_LE(most, 256u);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const glm::vec3 e = room.hi - room.lo;
+    double worst = 0.0, looseLights = 0.0;
+    int receivers = 0;
+    for (int i = 0; i < 200; ++i) {
+      glm::vec3 p, n;
+      if (i % 2 == 0) {
+        p = {u(rng) * e.x, 0.0f, u(rng) * e.z};
+        n = {0, 1, 0};
+      } else {
+        p = room.lo + glm::vec3(0.1f) + glm::vec3(u(rng), u(rng), u(rng)) * (e - 0.2f);
+        n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+      }
+      const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, r);
+      if (!(full.irradiance.r > 0.0 && full.irradiance.g > 0.0 && full.irradiance.b > 0.0))
+        continue;
+      const VplIrradiance cut = vplCutIrradiance(groups, bounded, p, n, r);
+      worst = std::max(worst, relativeError(cut.irradiance, full.irradiance));
+      looseLights += static_cast<double>(loose.lightsEvaluated(loose.cellOf(p)));
+      ++receivers;
+    }
+    ASSERT_GT(receivers, 150);
+    ASSERT_LE(looseLights / receivers, 256.0);  // the comparison's premise
+    EXPECT_LE(worst, 0.25);
+    std::printf("%zu VPLs: at most %zu lights per cell, worst relative error %.4f\n", count, most,
+                worst);
+  }
+  // The unbounded κ = 4 cut at 16,384 VPLs takes more than the bound somewhere: the bound acts.
+  const Room room = makeRoom(16384, 11);
+  const VplGroups groups(room.vpls, 64);
+  const VplLightCuts unbounded = buildVplLightCuts(groups, room.lo, room.hi, {4.0f, 16, 0});
+  std::size_t most = 0;
+  for (std::size_t c = 0; c < unbounded.cellEntries.size(); ++c)
+    most = std::max(most, unbounded.lightsEvaluated(c));
+  EXPECT_GT(most, 256u);
+}
+
 // κ = ∞ (no culling): every group expanded, the sum equal to the full one to rounding.
 TEST(VplGroups, NoCullingIsTheFullSum) {
   const Room room = makeRoom(500, 3);
   const VplGroups groups(room.vpls, 16);
   const VplLightCuts cuts =
-      buildVplLightCuts(groups, room.lo, room.hi, {std::numeric_limits<float>::infinity(), 4});
+      buildVplLightCuts(groups, room.lo, room.hi, {std::numeric_limits<float>::infinity(), 4, 0});
   const glm::vec3 p(2.0f, 0.0f, 2.5f), n(0.0f, 1.0f, 0.0f);
   const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, 0.05f);
   const VplIrradiance cut = vplCutIrradiance(groups, cuts, p, n, 0.05f);

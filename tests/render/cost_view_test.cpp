@@ -131,6 +131,46 @@ TEST(CostView, LightmappedStaticFloorEvaluatesNoVplAndTheDynamicQuadItsCellsCut)
   EXPECT_GT(floorPixels, 300);
 }
 
+// The light bound (VplRenderSettings::maxLights) reaches the pixels: with a bound of 100 lights
+// (above the 64 groups' roots), below the unbounded cut of the quad's cells (checked), every quad
+// pixel evaluates at most 100 and exactly its cell's bounded cut.
+TEST(CostView, TheDynamicQuadsPixelsEvaluateNoMoreThanTheLightBound) {
+  testContext();
+  const VplCostScene s = vplCostScene();
+  RendererSettings settings;
+  settings.mode = RenderMode::Cost;
+  settings.vpls.maxLights = 0;
+  const std::size_t unbounded = [&] {
+    ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &s.bake);
+    const VplLightCuts& cuts = renderer.vpls().cuts();
+    return cuts.lightsEvaluated(cuts.cellOf({0.0f, 0.5f, 0.0f}));
+  }();
+  constexpr uint32_t kBound = 100;
+  ASSERT_GT(unbounded, kBound) << unbounded;  // the premise: the bound acts where the quad is
+  settings.vpls.maxLights = kBound;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &s.bake);
+  const Image counts = renderer.renderImage(s.camera, kSize, kSize);
+  const VplLightCuts& cuts = renderer.vpls().cuts();
+  int quadPixels = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::vector<glm::vec2> points = pixelPoints(x, y);
+      if (!std::all_of(points.begin(), points.end(), [&](glm::vec2 q) {
+            return insideSquare(planePoint(s.camera, q.x, q.y, 0.5f), 0.1f);
+          }))
+        continue;
+      ++quadPixels;
+      const float vpls = counts.at(x, y).g;
+      EXPECT_LE(vpls, static_cast<float>(kBound)) << "quad pixel (" << x << ", " << y << ")";
+      bool matches = false;
+      for (const glm::vec2 q : points)
+        matches |= vpls == static_cast<float>(cuts.lightsEvaluated(
+                               cuts.cellOf(planePoint(s.camera, q.x, q.y, 0.5f))));
+      EXPECT_TRUE(matches) << "quad pixel (" << x << ", " << y << ") evaluated " << vpls;
+    }
+  EXPECT_GT(quadPixels, 20);
+}
+
 // Point lights 0.3 m over the floor in a row along x, 0.25 m apart, each of intensity I with a
 // reach of 0.2 m: a floor point is within reach of at most one.
 struct LightRow {
