@@ -12,6 +12,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "cli/shared_options.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
@@ -28,17 +29,10 @@
 namespace {
 
 struct Options {
-  std::string scene;
-  std::string camera;
-  int width = 512;
-  int height = 512;
+  bounce::SharedOptions shared;  // scene, camera, size, exposure, bake, mode, msaa, cost view
   std::vector<std::string> outputs;
   std::string context;
-  float exposure = 0.0f;
   int frames = 1;
-  std::string mode;  // default: full with a bake, direct without
-  std::string bake;
-  bool noBake = false;
   bool noShadows = false;
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
@@ -48,20 +42,16 @@ struct Options {
   bool noProbes = false;
   bool noVplShadows = false;
   bool noLightCulling = false;
-  std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
-  int msaa = 4;                      // samples per pixel
   std::optional<uint64_t> vplPaths;  // draw the VPLs of the bake's first N light paths
   std::optional<float> vplClamp;     // VPL clamp distance, m (default: the bake's)
-  std::string costCount = "vpls";    // the count the cost mode's PNG shows
-  std::optional<float> costMax;      // the end of its colour scale (default: from the frame)
 };
 
 bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) {
   bounce::RendererSettings settings;
-  settings.mode = options.mode.empty()
+  settings.mode = options.shared.mode.empty()
                       ? (hasBake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
-                      : *bounce::parseRenderMode(options.mode);  // CLI11 checked
+                      : *bounce::parseRenderMode(options.shared.mode);  // CLI11 checked
   settings.shadows.enabled = !options.noShadows;
   settings.shadows.resolution = options.shadowResolution;
   settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
@@ -73,7 +63,8 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.vpls.shadows.enabled = !options.noVplShadows;
   // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
   settings.lightCulling.enabled = !options.noLightCulling;
-  settings.lightCulling.irradianceFloor = bounce::irradianceFloorForExposure(options.exposure);
+  settings.lightCulling.irradianceFloor =
+      bounce::irradianceFloorForExposure(options.shared.exposure);
   return settings;
 }
 
@@ -98,15 +89,16 @@ void writeCostView(const Options& options, const bounce::Image& counts) {
   std::fprintf(stderr,
                "bounce-render: cost per pixel (mean / max over the frame, background 0%s): "
                "lights %.2f / %g, VPLs %.2f / %g, shadow-map taps %.2f / %g\n",
-               options.msaa > 1 ? "; means over each pixel's samples" : "", stats.meanLights,
+               options.shared.msaa > 1 ? "; means over each pixel's samples" : "", stats.meanLights,
                static_cast<double>(stats.maxLights), stats.meanVpls,
                static_cast<double>(stats.maxVpls), stats.meanShadowTaps,
                static_cast<double>(stats.maxShadowTaps));
-  const bounce::CostCount count = *bounce::parseCostCount(options.costCount);  // CLI11 checked
+  const bounce::CostCount count =
+      *bounce::parseCostCount(options.shared.costCount);  // CLI11 checked
   const float largest = count == bounce::CostCount::Lights ? stats.maxLights
                         : count == bounce::CostCount::Vpls ? stats.maxVpls
                                                            : stats.maxShadowTaps;
-  const float scaleMax = options.costMax.value_or(bounce::costScaleMax(largest));
+  const float scaleMax = options.shared.costMax.value_or(bounce::costScaleMax(largest));
   bool png = false;
   for (const std::string& out : options.outputs) {
     if (std::filesystem::path(out).extension() == ".png") {
@@ -135,16 +127,17 @@ int run(const Options& options) {
                context->renderer().c_str());
   // Refused before the minutes a million emitters take to cut and group: the frame could not
   // draw them (render/gpu_scene.h).
-  bounce::Scene scene = bounce::loadScene(options.scene, bounce::GpuScene::sceneLimits());
+  bounce::Scene scene = bounce::loadScene(options.shared.scene, bounce::GpuScene::sceneLimits());
   bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
   for (const std::string& warning : scene.warnings)
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  const float aspect =
+      static_cast<float>(options.shared.width) / static_cast<float>(options.shared.height);
   bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
+  const bounce::Camera camera = bounce::pickCamera(scene, options.shared.camera, aspect, &framed);
   if (framed)
     std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
-                 options.scene.c_str());
+                 options.shared.scene.c_str());
 
   using Clock = std::chrono::steady_clock;
   const auto ms = [](Clock::time_point a, Clock::time_point b) {
@@ -152,11 +145,12 @@ int run(const Options& options) {
   };
   const auto start = Clock::now();
   std::optional<bounce::Bake> bake;
-  std::string bakeDir = options.bake;
-  if (!options.bake.empty()) {
-    bake = bounce::readBake(options.bake, scene);
-  } else if (!options.noBake) {
-    bounce::BakeSearch found = bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
+  std::string bakeDir = options.shared.bake;
+  if (!options.shared.bake.empty()) {
+    bake = bounce::readBake(options.shared.bake, scene);
+  } else if (!options.shared.noBake) {
+    bounce::BakeSearch found =
+        bounce::findSceneBake(options.shared.scene, scene, bounce::toolDirectory());
     for (const std::string& note : found.notes)
       std::fprintf(stderr, "bounce-render: %s\n", note.c_str());
     bake = std::move(found.bake);
@@ -166,13 +160,13 @@ int run(const Options& options) {
   if (bounce::renderModeNeedsBake(settings.mode) && !bake)
     throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
                              " draws baked light: give --bake DIR" +
-                             (options.noBake ? " (and no --no-bake)" : ""));
+                             (options.shared.noBake ? " (and no --no-bake)" : ""));
   if (bake)
     std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
                  bakeDir.c_str(), bake->layout.width, bake->layout.height,
                  bake->layout.instances.size());
   // The bake's count rule over the scene with its dynamic instances placed (--move).
-  if (bake && bake->vpls && options.dynamicVpls == "retrace")
+  if (bake && bake->vpls && options.shared.dynamicVpls == "retrace")
     settings.vplTracer = bounce::placedVplTracer(scene, *bake);
   if (settings.mode == bounce::RenderMode::Lightmap)
     std::fprintf(stderr,
@@ -201,15 +195,15 @@ int run(const Options& options) {
                  static_cast<double>(drawn.bakeClampDistance));
   }
   const auto uploaded = Clock::now();
-  const bounce::Image image =
-      renderer.renderImage(camera, options.width, options.height, options.msaa);
+  const bounce::Image image = renderer.renderImage(camera, options.shared.width,
+                                                   options.shared.height, options.shared.msaa);
   const auto rendered = Clock::now();
   std::fprintf(stderr,
                "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
                "%.1f ms (render + readback, includes the driver's shader JIT), mode %s, msaa %d\n",
-               options.width, options.height, camera.name.c_str(), scene.triangleCount(),
-               ms(start, uploaded), ms(uploaded, rendered),
-               std::string(bounce::renderModeName(settings.mode)).c_str(), options.msaa);
+               options.shared.width, options.shared.height, camera.name.c_str(),
+               scene.triangleCount(), ms(start, uploaded), ms(uploaded, rendered),
+               std::string(bounce::renderModeName(settings.mode)).c_str(), options.shared.msaa);
   const bounce::LightGridStats grid = renderer.lightGridStats();
   if (grid.clusters > 0)
     std::fprintf(stderr,
@@ -231,7 +225,8 @@ int run(const Options& options) {
   if (options.frames > 1) {
     // Benchmark: the same frame again into the same target, read back each time; where the
     // time goes, pass by pass (the first frame, with the driver's shader JIT, left out).
-    bounce::gl::RenderTarget target(options.width, options.height, options.msaa);
+    bounce::gl::RenderTarget target(options.shared.width, options.shared.height,
+                                    options.shared.msaa);
     // One frame into this target first: llvmpipe compiles shader variants for it lazily.
     renderer.render(camera, target);
     (void)renderer.readBack(target);
@@ -256,7 +251,7 @@ int run(const Options& options) {
                  renderer.vpls().groups().vplCount(), bake->vpls->size());
   if (renderer.hasVpls() && (bounce::renderModeNeedsVpls(settings.mode) || dynamicInstances)) {
     const bounce::VplClampReport clamp =
-        renderer.measureVplClamp(camera, options.width, options.height);
+        renderer.measureVplClamp(camera, options.shared.width, options.shared.height);
     std::fprintf(stderr,
                  "bounce-render: VPL clamp removed %.2f%% of the VPL irradiance over the frame "
                  "(%zu VPLs in %zu groups, r = %.4g m; every visible surface, luminance)\n",
@@ -270,7 +265,8 @@ int run(const Options& options) {
   }
   // All outputs or none (image_io.h): a failing --out leaves no other one behind.
   std::vector<bounce::ImageOutput> outputs;
-  for (const std::string& out : options.outputs) outputs.push_back({out, &image, options.exposure});
+  for (const std::string& out : options.outputs)
+    outputs.push_back({out, &image, options.shared.exposure});
   bounce::writeImages(outputs);
   for (const std::string& out : options.outputs)
     std::fprintf(stderr, "bounce-render: wrote %s\n", out.c_str());
@@ -286,11 +282,12 @@ int main(int argc, char** argv) {
       "linear-radiance "
       "EXR (W/(sr·m²)) and/or tone-mapped sRGB PNG files.",
       "bounce-render"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
-      ->required();
-  app.add_option("--camera", options.camera, "camera name (default: the scene's first camera)");
-  app.add_option("--width", options.width, "image width in pixels")->check(CLI::Range(1, 16384));
-  app.add_option("--height", options.height, "image height in pixels")->check(CLI::Range(1, 16384));
+  bounce::SharedOptions& shared = options.shared;
+  shared.width = 512;
+  shared.height = 512;
+  bounce::addSceneOption(app, shared);
+  bounce::addCameraOption(app, shared);
+  bounce::addSizeOptions(app, shared, 1, "image", "default 512");
   app.add_option("--out", options.outputs,
                  "output file, .exr (linear) or .png (tone-mapped); "
                  "repeatable")
@@ -301,40 +298,15 @@ int main(int argc, char** argv) {
       });
   app.add_option("--context", options.context, "osmesa or egl (default: EGL if it works)")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  app.add_option("--exposure", options.exposure, "exposure in EV for PNG files (default 0)");
+  bounce::addExposureOption(app, shared);
   app.add_option("--frames", options.frames,
                  "render the frame this many times and report the mean time and, per pass, the GPU "
                  "time (mean and 95th percentile), the frame's CPU time (building and "
                  "submitting it), the wait for the GPU and the readback (benchmark)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
-                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
-                 "content scene, when one exists and matches the scene)");
-  app.add_option("--msaa", options.msaa,
-                 "samples per pixel (multisample anti-aliasing; the radiance is averaged over "
-                 "each pixel before tone mapping, a box filter as bounce-trace's); 1 turns it "
-                 "off (default 4)")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
-      ->excludes("--bake");
-  app.add_option("--mode", options.mode,
-                 "what to draw: full (direct + baked indirect; the default with a bake), direct "
-                 "(real-time direct light only; the default without), indirect (only the baked "
-                 "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
-                 "(lightmap charts and texels), vpl (indirect light of every surface from the "
-                 "bake's VPLs, rho/pi*E_vpl), vpl-clamp (red: the VPLs' E/pi on a white surface, "
-                 "green: what their clamp removed), error (each texel's estimated relative error: "
-                 "blue 0, green at the bake's target, red at twice it or more), validity (green: "
-                 "texels with samples of their own, orange: filled from their neighbours, dark "
-                 "blue: padding), texel-density (lightmap texels per metre against the bake's "
-                 "texel size: blue half or less, green equal, red twice or more, over a checker of "
-                 "texels), cascades (the directional light's shadow cascade: red, green, blue, "
-                 "yellow from near to far, cross-faded where they blend; needs no bake), cost "
-                 "(what each pixel evaluated, shaded as full: EXR R lights, G VPLs, B shadow-map "
-                 "taps, raw counts; PNG one count, --cost-count, in false colour with a legend "
-                 "bar at the bottom, its scale printed; needs no bake)")
-      ->check(CLI::IsMember(bounce::renderModeNames()));
+  bounce::addBakeOptions(app, shared);
+  bounce::addMsaaOption(app, shared);
+  bounce::addModeOption(app, shared, bounce::renderModeNames(), "what to draw");
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")
       ->check(CLI::Range(std::size_t{1}, bounce::kMaxVplGroups));
@@ -357,12 +329,7 @@ int main(int argc, char** argv) {
                "at --exposure)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
                "draw every VPL unoccluded (no shadow cubes for the VPL groups' parts)");
-  app.add_option("--dynamic-vpls", options.dynamicVpls,
-                 "VPLs with dynamic instances in the scene: retrace (default: the light paths "
-                 "traced again with them in place, so they shadow the room and reflect light "
-                 "into it) or cut (the bake's VPLs, their paths cut where the dynamic instances "
-                 "block them; misses the light those reflect)")
-      ->check(CLI::IsMember({"retrace", "cut"}));
+  bounce::addDynamicVplsOption(app, shared);
   app.add_flag("--no-shadows", options.noShadows,
                "draw every light unshadowed (punctual and area lights)");
   app.add_option("--shadow-resolution", options.shadowResolution,
@@ -376,13 +343,7 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")
       ->check(CLI::Range(0.0f, 64.0f));
-  app.add_option("--cost-count", options.costCount,
-                 "mode cost: the count the PNG shows, lights, vpls or taps (default vpls)")
-      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
-  app.add_option("--cost-max", options.costMax,
-                 "mode cost: the count at the red end of the PNG's scale (default: 1, 2 or 5 "
-                 "x 10^k at or above the frame's largest)")
-      ->check(CLI::PositiveNumber);
+  bounce::addCostViewOptions(app, shared, "1, 2 or 5 x 10^k at or above the frame's largest count");
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {

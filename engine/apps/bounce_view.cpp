@@ -37,6 +37,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "cli/shared_options.h"
 #include "cli/viewer_script.h"
 #include "gl/gpu_pass_timers.h"
 #include "gl/panel_layer.h"
@@ -63,27 +64,16 @@ using bounce::gl::Key;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string scene;
-  std::string camera;
-  int width = 1280;
-  int height = 720;
-  float exposure = 0.0f;
-  int frames = 0;  // 0 = until closed
+  bounce::SharedOptions shared;  // scene, camera, size, exposure, bake, mode, msaa, cost view
+  int frames = 0;                // 0 = until closed
   std::string screenshot;
   std::string windowShot;  // the window as shown (panel included), EXR of display values
   std::string scriptFile;
   std::vector<bounce::ScriptCommand> script;  // read before the window opens
-  std::string mode;                           // default: full with a bake, direct without
-  std::string bake;
-  bool noBake = false;
-  int msaa = 4;                    // samples per pixel
-  bool noPanel = false;            // start with the panel hidden
-  std::vector<std::string> moves;  // NAME X Y Z, repeated
-  std::string dynamicVpls = "retrace";
-  std::string reference;           // a reference EXR (bounce-trace) to compare the frame with
-  std::string compare = "split";   // how, with --reference (render/reference_view.h)
-  std::string costCount = "vpls";  // the count the cost view shows
-  std::optional<float> costMax;    // the end of its scale (default: costDisplay())
+  bool noPanel = false;                       // start with the panel hidden
+  std::vector<std::string> moves;             // NAME X Y Z, repeated
+  std::string reference;          // a reference EXR (bounce-trace) to compare the frame with
+  std::string compare = "split";  // how, with --reference (render/reference_view.h)
 };
 
 // Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
@@ -107,7 +97,7 @@ bounce::RendererSettings rendererSettings(const Options& options, const bounce::
                                           bounce::RenderMode mode) {
   bounce::RendererSettings settings;
   settings.mode = mode;
-  if (bake && bake->vpls && options.dynamicVpls == "retrace")
+  if (bake && bake->vpls && options.shared.dynamicVpls == "retrace")
     settings.vplTracer = bounce::placedVplTracer(scene, *bake);
   return settings;
 }
@@ -120,14 +110,14 @@ class Viewer {
         bake_(std::move(loaded.bake)),
         bakeDir_(std::move(loaded.dir)),
         bakeNotes_(std::move(loaded.notes)),
-        window_("bounce-view", options.width, options.height),
+        window_("bounce-view", options.shared.width, options.shared.height),
         renderer_(scene_, bounce::gl::shaderDirectory(),
                   rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
         tonemap_(bounce::gl::shaderDirectory()),
         compare_(bounce::gl::shaderDirectory()),
         selection_(scene_),
         objectSpeed_(bounce::objectSpeed(scene_)),
-        exposure_(options.exposure) {
+        exposure_(options.shared.exposure) {
     std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
                  window_.renderer().c_str());
     for (const std::string& warning : scene_.warnings)
@@ -155,7 +145,7 @@ class Viewer {
       std::fprintf(stderr,
                    "bounce-view: lighting needs to be rebuilt: the scene's bake is stale (the "
                    "panel's 'bake now' or the script's rebake re-bakes it)\n");
-    select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
+    select(options.shared.camera.empty() ? 0 : scene_.findCamera(options.shared.camera));
     if (!options.reference.empty()) {
       referenceView_ = *bounce::parseReferenceView(options.compare);  // CLI11 checked
       loadReference(options.reference);
@@ -210,7 +200,7 @@ class Viewer {
         char title[512];
         std::snprintf(title, sizeof title,
                       "bounce-view — %s — camera '%s' — %s — %.1f ms — %.2f m/s — %+.1f EV%s",
-                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(),
+                      options_.shared.scene.c_str(), cameras_[cameraIndex_].name.c_str(),
                       std::string(bounce::renderModeName(renderer_.settings().mode)).c_str(),
                       frameMs, speed_, exposure_, object);
         window_.setTitle(title);
@@ -358,13 +348,13 @@ class Viewer {
   // drawn and before a capture is read from the target: captures never hold it.
   void drawPanel() {
     bounce::ViewerPanelView view;
-    view.scene = options_.scene;
+    view.scene = options_.shared.scene;
     view.bakeLines = bakeLines_;
     view.bakeNotes = bakeNotes_;
     view.modes = availableModes();
     view.mode = renderer_.settings().mode;
     view.exposure = exposure_;
-    view.msaa = options_.msaa;
+    view.msaa = options_.shared.msaa;
     for (const bounce::Camera& camera : cameras_) view.cameras.push_back(camera.name);
     view.camera = cameraIndex_;
     for (const std::optional<bounce::FlyCamera>& bookmark : bookmarks_)
@@ -443,7 +433,8 @@ class Viewer {
     rebake_.reset();
     const int cores = static_cast<int>(std::thread::hardware_concurrency());
     std::filesystem::path folder;
-    if (!lightsEdited_) folder = std::filesystem::path(options_.scene).replace_extension(".bake");
+    if (!lightsEdited_)
+      folder = std::filesystem::path(options_.shared.scene).replace_extension(".bake");
     rebake_ = std::make_unique<bounce::BackgroundBake>(scene_, folder, std::max(cores - 1, 1));
     std::fprintf(stderr, "bounce-view: re-baking %s (preview first)\n",
                  folder.empty() ? "in memory: the scene has edits the file has not"
@@ -616,7 +607,7 @@ class Viewer {
   void draw() {
     const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
     if (!target_ || target_->width() != size.x || target_->height() != size.y)
-      target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y, options_.msaa);
+      target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y, options_.shared.msaa);
     // The light cut-off follows the exposure shown (render/light_cutoff.h).
     const float floor = bounce::irradianceFloorForExposure(exposure_);
     if (renderer_.settings().lightCulling.irradianceFloor != floor) {
@@ -642,7 +633,8 @@ class Viewer {
   // largest lightcut; taps: 64, four 16-tap lights).
   std::optional<bounce::TonemapPass::CostDisplay> costDisplay() const {
     if (renderer_.settings().mode != bounce::RenderMode::Cost) return std::nullopt;
-    const bounce::CostCount count = *bounce::parseCostCount(options_.costCount);  // CLI11 checked
+    const bounce::CostCount count =
+        *bounce::parseCostCount(options_.shared.costCount);  // CLI11 checked
     float bound = 64.0f;
     if (count == bounce::CostCount::Lights)
       bound = static_cast<float>(scene_.lights.size() + renderer_.areaLightCount());
@@ -653,8 +645,8 @@ class Viewer {
       for (std::size_t cell = 0; renderer_.hasVpls() && cell < cuts.cellEntries.size(); ++cell)
         bound = std::max(bound, static_cast<float>(cuts.lightsEvaluated(cell)));
     }
-    return bounce::TonemapPass::CostDisplay{count,
-                                            options_.costMax.value_or(bounce::costScaleMax(bound))};
+    return bounce::TonemapPass::CostDisplay{
+        count, options_.shared.costMax.value_or(bounce::costScaleMax(bound))};
   }
 
   bool comparing() const {
@@ -755,12 +747,13 @@ int main(int argc, char** argv) {
       "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
       "F1-F4 go to a camera bookmark, Shift+F1-F4 save one. H shows or hides the panel.",
       "bounce-view"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
-      ->required();
-  app.add_option("--camera", options.camera, "start at this camera (default: the first)");
-  app.add_option("--width", options.width, "window width")->check(CLI::Range(16, 16384));
-  app.add_option("--height", options.height, "window height")->check(CLI::Range(16, 16384));
-  app.add_option("--exposure", options.exposure, "exposure in EV (default 0)");
+  bounce::SharedOptions& shared = options.shared;
+  shared.width = 1280;
+  shared.height = 720;
+  bounce::addSceneOption(app, shared);
+  bounce::addCameraOption(app, shared);
+  bounce::addSizeOptions(app, shared, 16, "window", "default 1280x720");
+  bounce::addExposureOption(app, shared);
   app.add_option("--frames", options.frames, "render this many frames, then exit")
       ->check(CLI::PositiveNumber);
   // Captures are written by extension: .png (tone-mapped or display values) or .exr.
@@ -785,14 +778,8 @@ int main(int argc, char** argv) {
                  "light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths and vpl-clamp "
                  "commands, one per line (engine/cli/viewer_script.h); exits after the last")
       ->check(CLI::ExistingFile);
-  app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
-                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
-                 "content scene, when one exists and matches the scene)");
-  app.add_option("--msaa", options.msaa,
-                 "samples per pixel (multisample anti-aliasing, averaged in linear radiance "
-                 "before tone mapping); 1 turns it off (default 4)")
-      ->check(CLI::Range(1, 64));
+  bounce::addBakeOptions(app, shared);
+  bounce::addMsaaOption(app, shared);
   app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
   app.add_option("--reference", options.reference,
                  "a reference EXR of the same camera (bounce-trace --out FILE.exr at the window's "
@@ -804,34 +791,15 @@ int main(int argc, char** argv) {
                  "at 50%)")
       ->check(CLI::IsMember({"split", "difference"}))
       ->needs("--reference");
-  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
-      ->excludes("--bake");
-  app.add_option("--mode", options.mode,
-                 "start in this mode: full (direct + baked indirect; the default with a bake), "
-                 "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
-                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
-                 "error (each texel's estimated relative error in false colour), validity, "
-                 "texel-density (lightmap texels per metre against the bake's texel size), "
-                 "cascades (the directional light's shadow cascade index), cost (the lights, VPLs "
-                 "or shadow-map taps each pixel evaluated, --cost-count, in false colour with a "
-                 "legend bar)")
-      ->check(CLI::IsMember(bounce::renderModeNames()));
-  app.add_option("--cost-count", options.costCount,
-                 "mode cost: the count shown, lights, vpls or taps (default vpls)")
-      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
-  app.add_option("--cost-max", options.costMax,
-                 "mode cost: the count at the red end of the scale (default: 1, 2 or 5 x 10^k at "
-                 "or above the lights in the scene, the largest VPL lightcut, or 64 taps)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--dynamic-vpls", options.dynamicVpls,
-                 "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
-                 "again with it in place) or cut (the bake's paths cut where it blocks them; "
-                 "cheaper, misses the light it reflects)")
-      ->check(CLI::IsMember({"retrace", "cut"}));
+  bounce::addModeOption(app, shared, bounce::renderModeNames(), "start in this mode");
+  bounce::addCostViewOptions(app, shared,
+                             "1, 2 or 5 x 10^k at or above the lights in the scene, the largest "
+                             "VPL lightcut, or 64 taps");
+  bounce::addDynamicVplsOption(app, shared);
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {
-    bounce::Scene scene = bounce::loadScene(options.scene);
+    bounce::Scene scene = bounce::loadScene(options.shared.scene);
     if (!options.scriptFile.empty()) {
       options.script = bounce::readViewerScript(options.scriptFile, bounce::renderModeNames());
       for (const bounce::ScriptCommand& c : options.script)  // before a window opens
@@ -845,12 +813,12 @@ int main(int argc, char** argv) {
     bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
     LoadedBake loaded;
     std::optional<bounce::Bake>& bake = loaded.bake;
-    if (!options.bake.empty()) {
-      bake = bounce::readBake(options.bake, scene);
-      loaded.dir = options.bake;
-    } else if (!options.noBake) {
+    if (!options.shared.bake.empty()) {
+      bake = bounce::readBake(options.shared.bake, scene);
+      loaded.dir = options.shared.bake;
+    } else if (!options.shared.noBake) {
       bounce::BakeSearch found =
-          bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
+          bounce::findSceneBake(options.shared.scene, scene, bounce::toolDirectory());
       for (const std::string& note : found.notes)
         std::fprintf(stderr, "bounce-view: %s\n", note.c_str());
       bake = std::move(found.bake);
@@ -859,11 +827,12 @@ int main(int argc, char** argv) {
       loaded.stale = found.stale();
     }
     const bounce::RenderMode mode =
-        options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
-                             : *bounce::parseRenderMode(options.mode);
+        options.shared.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
+                                    : *bounce::parseRenderMode(options.shared.mode);
     if (bounce::renderModeNeedsBake(mode) && !bake)
-      throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR" +
-                               (options.noBake ? " (and no --no-bake)" : ""));
+      throw std::runtime_error("--mode " + options.shared.mode +
+                               " draws baked light: give --bake DIR" +
+                               (options.shared.noBake ? " (and no --no-bake)" : ""));
     Viewer viewer(options, std::move(scene), std::move(loaded), mode);
     return viewer.run();
   } catch (const std::exception& e) {
