@@ -6,6 +6,7 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -42,25 +43,9 @@ struct Options {
   std::vector<std::string> moves;  // NAME X Y Z, repeated
 };
 
-int run(const Options& o) {
-  const std::filesystem::path scenePath = o.shared.scene;
-  bounce::Scene scene = bounce::loadScene(scenePath);
-  bounce::moveInstances(scene, bounce::parseInstanceMoves(o.moves));
-  for (const std::string& warning : scene.warnings)
-    std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
-  // Without a camera in the file, frame the scene as bounce-render does (square unless the
-  // image size is given).
-  const float imageAspect =
-      o.shared.width > 0 && o.shared.height > 0
-          ? static_cast<float>(o.shared.width) / static_cast<float>(o.shared.height)
-          : 1.0f;
-  bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, o.shared.camera, imageAspect, &framed);
-  if (framed)
-    std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
-                 scenePath.c_str());
-  // Default size: 512 rows, width from the camera's aspect ratio when it has one. A side
-  // derived from an extreme aspect is clamped to 1..kMaxSide (the --width/--height range).
+// Default size: 512 rows, width from the camera's aspect ratio when it has one. A side derived
+// from an extreme aspect is clamped to 1..kMaxSide (the --width/--height range), with a warning.
+std::pair<int, int> imageSize(const Options& o, const bounce::Camera& camera) {
   int width = o.shared.width, height = o.shared.height;
   const double aspect = camera.aspect > 0.0f ? static_cast<double>(camera.aspect) : 1.0;
   if (width <= 0 && height <= 0) height = 512;
@@ -78,6 +63,27 @@ int run(const Options& o) {
                  "%dx%d (each side 1..%d; give --width and --height to choose)\n",
                  camera.name.c_str(), aspect, width, height, kMaxSide);
   }
+  return {width, height};
+}
+
+int run(const Options& o) {
+  const std::filesystem::path scenePath = o.shared.scene;
+  bounce::Scene scene = bounce::loadScene(scenePath);
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(o.moves));
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
+  // Without a camera in the file, frame the scene as bounce-render does (square unless the
+  // image size is given).
+  const float imageAspect =
+      o.shared.width > 0 && o.shared.height > 0
+          ? static_cast<float>(o.shared.width) / static_cast<float>(o.shared.height)
+          : 1.0f;
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, o.shared.camera, imageAspect, &framed);
+  if (framed)
+    std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
+                 scenePath.c_str());
+  const auto [width, height] = imageSize(o, camera);
 
   bounce::TraceSettings settings;
   settings.spp = o.spp;
