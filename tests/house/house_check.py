@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """The house's written rules, checked on the source tree (issue 29).
 
-  house_check.py ROOT CHECK   runs one check (modules, readme, docs, tables, headers, functions), exit 1 on
-                              a breach with one line per breach naming the file
+  house_check.py ROOT CHECK   runs one check (modules, readme, docs, tables, headers,
+                              functions), exit 1 on a breach with one line per breach naming
+                              the file
   house_check.py ROOT report  prints the figures: module edges, header include counts
 
-A module is a folder directly under engine/ or baker/ holding sources; a header's count is the
-number of distinct project headers it reaches through "..." includes, itself left out. A
-function's length is its lines from the first line of its signature to its closing brace, blank
-and comment lines included.
+A module is a folder directly under engine/ or baker/ holding sources (engine/io, generic file
+I/O, includes no other); a header's count is the number of distinct project headers it reaches
+through "..." includes, itself left out. A function's length is its lines from the first line of
+its signature to its closing brace, blank and comment lines included.
 """
 import os
 import re
@@ -42,6 +43,8 @@ MAX_TABLE_CELL = 600
 ENGINE_PROGRAMS = {"engine/apps"}
 # What a module of the baker may never reach: GL and the renderer.
 GL_MODULES = {"engine/gl", "engine/render", "engine/apps"}
+# Modules every other may use and that use no other (generic file I/O): one direction.
+LEAF_MODULES = {"engine/io"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
@@ -102,6 +105,8 @@ def check_modules(root):
                 breaches.append(f"{f}: the engine library {a} includes the baker's {d}")
             if a.startswith("baker/") and b in GL_MODULES:
                 breaches.append(f"{f}: the baker ({a}) includes {d} (GL or the renderer)")
+            if a in LEAF_MODULES:
+                breaches.append(f"{f}: {a} uses no other module, but includes {d}")
     # One direction: no cycle among modules.
     succ = {}
     for a, b in edges:
