@@ -16,6 +16,7 @@
 #include "bake_folder/bake_facts.h"
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_search.h"
+#include "cli/viewer_script_replay.h"
 #include "gl/gpu_pass_timers.h"
 #include "gl/panel_layer.h"
 #include "gl/render_target.h"
@@ -33,7 +34,6 @@
 #include "viewer_input.h"
 #include "viewer_panel.h"
 #include "viewer_rebake.h"
-#include "viewer_script_replay.h"
 #include "vpl/vpl_retrace.h"
 
 namespace bounce {
@@ -231,7 +231,7 @@ class Viewer final : private bounce::ScriptActions {
     std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
   }
 
-  // ScriptActions (viewer_script_replay.h): what a --script command does.
+  // ScriptActions (cli/viewer_script_replay.h): what a --script command does.
   void selectCamera(const std::string& name) override { select(scene_.findCamera(name)); }
   void lookFrom(const glm::vec3& position, const glm::vec3& target) override {
     bounce::Camera camera = fly_->camera();

@@ -1,11 +1,11 @@
 // bounce-view: the scene in a window (GLFW, OpenGL 3.3 core) with a fly camera, the forward
 // renderer and, with a bake (--bake, or the one found for the scene as bounce-render finds it,
 // bake_folder/bake_search.h), its baked light. Its rooms:
-//   viewer_input.h          the keys and the mouse (the controls are listed there)
-//   viewer_panel.h          the panel (H): the bake's facts, modes, exposure, cameras and
-//                           bookmarks, the VPLs' light paths and clamp, objects, lights, times
-//   viewer_script_replay.h  --script FILE, replayed frame by frame
-//   viewer_rebake.h         the background re-bake (the panel's button, the script's rebake)
+//   viewer_input.h              the keys and the mouse (the controls are listed there)
+//   viewer_panel.h              the panel (H): the bake's facts, modes, exposure, cameras and
+//                               bookmarks, the VPLs' light paths and clamp, objects, lights, times
+//   cli/viewer_script_replay.h  --script FILE, replayed frame by frame (GL-free, tested alone)
+//   viewer_rebake.h             the background re-bake (the panel's button, the script's rebake)
 // M cycles the modes the bake allows (without a bake direct, cascades and cost), C toggles the
 // chart view; dynamic objects (extras.bounce.mobility = "dynamic") move along the world axes
 // nearest the camera's right, forward and up at a quarter of the scene's diagonal per second.

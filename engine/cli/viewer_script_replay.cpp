@@ -1,4 +1,4 @@
-#include "viewer_script_replay.h"
+#include "cli/viewer_script_replay.h"
 
 #include <stdexcept>
 #include <utility>
