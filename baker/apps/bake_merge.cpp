@@ -11,10 +11,10 @@
 
 #include "bake_progress_line.h"
 #include "bake_summary.h"
+#include "io/load_error.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/tile_journal.h"
 #include "scene/load.h"
-#include "scene/load_error.h"
 #include "trace/progress_line.h"
 
 namespace bounce {

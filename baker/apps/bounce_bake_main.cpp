@@ -15,6 +15,7 @@
 #endif
 #include "bake_progress_line.h"
 #include "bake_summary.h"
+#include "cli/shared_options.h"
 #include "image/image_io.h"
 #include "pipeline/bake_memory.h"
 #include "pipeline/scene_bake.h"
@@ -29,15 +30,13 @@ namespace {
 const bounce::SceneBakeSettings kDefaults;
 
 struct Options {
+  bounce::SharedOptions shared;  // scene, exposure, path tracing (into `bake` after the parse)
   std::filesystem::path scene;
   std::filesystem::path out;
   bounce::SceneBakeSettings bake;
-  std::string backend = "embree";
-  std::string lightChoice = bounce::lightChoiceName(kDefaults.lightChoice);
   std::string denoise = kDefaults.denoise ? "on" : "off";
   std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
-  float exposure = 0.0f;
   std::string shard;  // "K/N"; empty: the whole bake
   bool resume = false;
   bool mpi = false;
@@ -80,8 +79,11 @@ int run(Options o) {
     std::fprintf(stderr, "bounce-bake: warning: %s\n", warning.c_str());
   const double loadSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  o.bake.backend = bounce::parseRayBackend(o.backend);
-  o.bake.lightChoice = *bounce::parseLightChoice(o.lightChoice);  // checked by CLI11
+  o.bake.maxDepth = o.shared.maxDepth;
+  o.bake.seed = o.shared.seed;
+  o.bake.threads = o.shared.threads;
+  o.bake.backend = bounce::parseRayBackend(o.shared.backend);
+  o.bake.lightChoice = *bounce::parseLightChoice(o.shared.lightChoice);  // checked by CLI11
   o.bake.denoise = o.denoise == "on";
   if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
   o.bake.resume = o.resume;
@@ -99,7 +101,8 @@ int run(Options o) {
   o.bake.journal = out.string() + ".journal";
   if (o.mpi) {
 #ifdef BOUNCE_HAVE_MPI
-    return bounce::bakeOverMpi(scene, o.bake, {out, o.scene, o.png, o.exposure, loadSeconds, start},
+    return bounce::bakeOverMpi(scene, o.bake,
+                               {out, o.scene, o.png, o.shared.exposure, loadSeconds, start},
                                !o.quiet && (o.progress || bounce::stderrIsTerminal()));
 #else
     throw std::runtime_error(
@@ -122,7 +125,7 @@ int run(Options o) {
                  out.string().c_str(), o.bake.journal.string().c_str());
     return 130;
   }
-  bounce::writeBakeAndReport(baked, {out, o.scene, o.png, o.exposure, loadSeconds, start});
+  bounce::writeBakeAndReport(baked, {out, o.scene, o.png, o.shared.exposure, loadSeconds, start});
   std::filesystem::remove(o.bake.journal);
   return 0;
 }
@@ -139,7 +142,12 @@ int main(int argc, char** argv) {
       "the parts of a sharded bake."};
   Options o;
   app.option_defaults()->always_capture_default();
-  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj)")->required();
+  bounce::SharedOptions& shared = o.shared;
+  shared.maxDepth = kDefaults.maxDepth;
+  shared.seed = kDefaults.seed;
+  shared.threads = kDefaults.threads;
+  shared.lightChoice = bounce::lightChoiceName(kDefaults.lightChoice);
+  bounce::addSceneOption(app, shared);
   app.add_option("-o,--out", o.out, "bake folder (default: <scene without extension>.bake)");
   app.add_option("--texel-size", o.bake.texelSize,
                  "texel edge on the surface, metres, where extras.bounce.lightmapScale is 1 "
@@ -159,25 +167,13 @@ int main(int argc, char** argv) {
                  "sample a texel until its relative standard error is below this (0: always "
                  "--spp)")
       ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--max-depth", o.bake.maxDepth, "most diffuse reflections along a path")
-      ->check(CLI::Range(0, 100000));
-  app.add_option("--seed", o.bake.seed, "sampler seed (the same seed gives the same lightmap)");
-  app.add_option("--threads", o.bake.threads, "worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
-  app.add_option("--backend", o.backend, "ray kernel")->check(CLI::IsMember({"embree", "bvh"}));
-  app.add_option(
-         "--light-choice", o.lightChoice,
-         "how next-event estimation picks its one light per path vertex: place (by a bound of what "
-         "each light brings there) or power (by power alone)")
-      ->check([](const std::string& name) {
-        return bounce::parseLightChoice(name) ? std::string() : name + " is not place or power";
-      });
+  bounce::addPathTracingOptions(app, shared);
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--png", o.png,
                  "also write a tone-mapped picture of the lightmap (E/pi, a white surface's "
                  "radiance) to look at");
-  app.add_option("--exposure", o.exposure, "PNG exposure in EV");
+  bounce::addExposureOption(app, shared);
   app.add_option("--vpls", o.bake.vpls,
                  "most virtual point lights (0: none; fewer when --vpl-error is met first)")
       ->check(CLI::Range(0, 1 << 24));
@@ -216,6 +212,7 @@ int main(int argc, char** argv) {
   app.add_flag("--progress", o.progress, "draw the progress line even when stderr is no terminal");
   app.add_flag("--quiet", o.quiet, "no progress line (the summary line is still printed)");
   CLI11_PARSE(app, argc, argv);
+  o.scene = shared.scene;
   try {
     return run(o);
   } catch (const std::exception& e) {

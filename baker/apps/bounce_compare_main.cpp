@@ -8,7 +8,9 @@
 #include <exception>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "image/image_compare.h"
 #include "image/image_io.h"
@@ -43,6 +45,139 @@ void printTable(const bounce::ImageError& error) {
       bounce::kRelMseEpsilon, bounce::kRelErrorEpsilon);
 }
 
+struct Options {
+  std::string image, reference, mask, errorImage;
+  std::optional<float> errorScale;
+  bool json = false;
+  bool allowNonFinite = false;
+  int box = 1;
+};
+
+void addOptions(CLI::App& app, Options& o) {
+  app.add_option("A", o.image, "image to assess (linear EXR)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("B", o.reference, "reference image (linear EXR)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--mask", o.mask, "PNG mask: pixels whose value is 0 are excluded")
+      ->check(CLI::ExistingFile);
+  app.add_option("--box", o.box,
+                 "A is K times B's size in each direction: average each KxK block of A first "
+                 "(a supersampled raster against the tracer's area-averaged pixels)")
+      ->check(CLI::Range(1, 64));
+  app.add_flag("--json", o.json, "print the metrics as JSON");
+  app.add_flag(
+      "--allow-nonfinite", o.allowNonFinite,
+      "exit 0 even when the image or the reference has NaN/Inf pixels (they are excluded from "
+      "the metrics, and counted)");
+  app.add_option("--error-image", o.errorImage,
+                 "write a false-colour PNG of |a-b|/(|b|+0.01) (blue 0 ... red >= scale)");
+  app.add_option("--error-scale", o.errorScale,
+                 "relative error shown as red (default: the 99th percentile of the map)")
+      ->check(CLI::PositiveNumber);
+}
+
+// A refused input: the message already names the files.
+struct Refusal : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A (box-averaged by --box), B and the mask, their sizes checked against each other.
+struct Inputs {
+  bounce::Image a, b;
+  std::optional<bounce::Mask> mask;
+};
+
+Inputs readInputs(const Options& o) {
+  Inputs in;
+  in.a = bounce::readExr(o.image);
+  if (o.box > 1) {
+    if (in.a.width % o.box != 0 || in.a.height % o.box != 0)
+      throw Refusal(o.image + ": " + std::to_string(in.a.width) + "x" +
+                    std::to_string(in.a.height) + " is not a multiple of --box " +
+                    std::to_string(o.box));
+    in.a = bounce::boxDownsample(in.a, o.box);
+  }
+  in.b = bounce::readExr(o.reference);
+  if (!o.mask.empty()) {
+    in.mask = bounce::readMask(o.mask);
+    if (in.mask->width != in.b.width || in.mask->height != in.b.height)
+      throw Refusal(o.mask + ": mask size " + std::to_string(in.mask->width) + "x" +
+                    std::to_string(in.mask->height) + " differs from the reference " + o.reference +
+                    "'s " + std::to_string(in.b.width) + "x" + std::to_string(in.b.height));
+  }
+  return in;
+}
+
+nlohmann::json metricsJson(const Options& o, const bounce::ImageError& error) {
+  return {{"image", o.image},
+          {"reference", o.reference},
+          {"comparedPixels", error.comparedPixels},
+          {"nonFinitePixels", error.nonFinitePixels},
+          {"nonFiniteInImage", error.nonFiniteInImage},
+          {"nonFiniteInReference", error.nonFiniteInReference},
+          {"relMseEpsilon", bounce::kRelMseEpsilon},
+          {"relErrorEpsilon", bounce::kRelErrorEpsilon},
+          {"channels",
+           {{"r", toJson(error.channels[0])},
+            {"g", toJson(error.channels[1])},
+            {"b", toJson(error.channels[2])}}},
+          {"all", toJson(error.all)}};
+}
+
+// --error-image: |a-b|/(|b|+0.01) in false colour, red at --error-scale or else at the 99th
+// percentile of the compared pixels' relative error.
+void writeErrorImage(const Options& o, const Inputs& in, nlohmann::json& out) {
+  const bounce::Mask* mask = in.mask ? &*in.mask : nullptr;
+  const std::vector<float> r = bounce::relativeErrorMap(in.a, in.b, mask);
+  float scale = o.errorScale.value_or(0.0f);
+  if (!o.errorScale) {
+    std::vector<float> kept;
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (!mask || mask->keep[i] != 0) kept.push_back(r[i]);
+    if (!kept.empty()) {
+      const auto rank = static_cast<std::size_t>(0.99 * static_cast<double>(kept.size() - 1));
+      std::nth_element(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(rank), kept.end());
+      scale = kept[rank];
+    }
+    if (!(scale > 0.0f)) scale = 1.0f;  // identical images: everything is blue
+  }
+  bounce::writeDisplayPng(o.errorImage,
+                          bounce::falseColour(r, in.b.width, in.b.height, scale, mask));
+  out["errorImage"] = {
+      {"path", o.errorImage}, {"metric", "|a-b|/(|b|+0.01), channel mean"}, {"redAt", scale}};
+  if (!o.json)
+    std::printf("error image %s: |a-b|/(|b|+%g) averaged over channels; blue = 0, red >= %g\n",
+                o.errorImage.c_str(), bounce::kRelErrorEpsilon, static_cast<double>(scale));
+}
+
+// Metrics over no pixel, or over only the finite part of a broken render, would read as "no
+// error": both fail unless the caller accepts them.
+void refuseEmptyOrNonFinite(const Options& o, const bounce::ImageError& error) {
+  if (error.comparedPixels == 0)
+    throw Refusal(o.image + " vs " + o.reference + ": no pixel to compare (" +
+                  std::to_string(error.nonFinitePixels) + " non-finite, the rest masked out)");
+  if (error.nonFiniteInReference > 0 && !o.allowNonFinite)
+    throw Refusal(o.reference + ": " + std::to_string(error.nonFiniteInReference) +
+                  " reference pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite "
+                  "accepts this)");
+  if (error.nonFiniteInImage > 0 && !o.allowNonFinite)
+    throw Refusal(o.image + ": " + std::to_string(error.nonFiniteInImage) +
+                  " pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite accepts "
+                  "this)");
+}
+
+void run(const Options& o) {
+  const Inputs in = readInputs(o);
+  const bounce::ImageError error = bounce::compareImages(in.a, in.b, in.mask ? &*in.mask : nullptr);
+  nlohmann::json out = metricsJson(o, error);
+  if (!o.json) printTable(error);
+  if (!o.errorImage.empty()) writeErrorImage(o, in, out);
+  if (o.json) std::cout << out.dump(2) << "\n";
+  refuseEmptyOrNonFinite(o, error);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,122 +185,16 @@ int main(int argc, char** argv) {
       "Compares a linear EXR image A with a reference EXR image B: RMSE, relative MSE, mean "
       "absolute relative error, bias and 99th-percentile absolute error, per channel and over "
       "all."};
-  std::string imagePath, referencePath, maskPath, errorImagePath;
-  std::optional<float> errorScale;
-  bool json = false;
-  bool allowNonFinite = false;
-  int box = 1;
-  app.add_option("A", imagePath, "image to assess (linear EXR)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("B", referencePath, "reference image (linear EXR)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("--mask", maskPath, "PNG mask: pixels whose value is 0 are excluded")
-      ->check(CLI::ExistingFile);
-  app.add_option("--box", box,
-                 "A is K times B's size in each direction: average each KxK block of A first "
-                 "(a supersampled raster against the tracer's area-averaged pixels)")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("--json", json, "print the metrics as JSON");
-  app.add_flag(
-      "--allow-nonfinite", allowNonFinite,
-      "exit 0 even when the image or the reference has NaN/Inf pixels (they are excluded from "
-      "the metrics, and counted)");
-  app.add_option("--error-image", errorImagePath,
-                 "write a false-colour PNG of |a-b|/(|b|+0.01) (blue 0 ... red >= scale)");
-  app.add_option("--error-scale", errorScale,
-                 "relative error shown as red (default: the 99th percentile of the map)")
-      ->check(CLI::PositiveNumber);
+  Options o;
+  addOptions(app, o);
   CLI11_PARSE(app, argc, argv);
-
   try {
-    bounce::Image a = bounce::readExr(imagePath);
-    if (box > 1) {
-      if (a.width % box != 0 || a.height % box != 0) {
-        std::cerr << "bounce-compare: " << imagePath << ": " << a.width << "x" << a.height
-                  << " is not a multiple of --box " << box << "\n";
-        return 1;
-      }
-      a = bounce::boxDownsample(a, box);
-    }
-    const bounce::Image b = bounce::readExr(referencePath);
-    std::optional<bounce::Mask> mask;
-    if (!maskPath.empty()) {
-      mask = bounce::readMask(maskPath);
-      if (mask->width != b.width || mask->height != b.height) {
-        std::cerr << "bounce-compare: " << maskPath << ": mask size " << mask->width << "x"
-                  << mask->height << " differs from the reference " << referencePath << "'s "
-                  << b.width << "x" << b.height << "\n";
-        return 1;
-      }
-    }
-    const bounce::Mask* maskPtr = mask ? &*mask : nullptr;
-    const bounce::ImageError error = bounce::compareImages(a, b, maskPtr);
-
-    nlohmann::json out = {{"image", imagePath},
-                          {"reference", referencePath},
-                          {"comparedPixels", error.comparedPixels},
-                          {"nonFinitePixels", error.nonFinitePixels},
-                          {"nonFiniteInImage", error.nonFiniteInImage},
-                          {"nonFiniteInReference", error.nonFiniteInReference},
-                          {"relMseEpsilon", bounce::kRelMseEpsilon},
-                          {"relErrorEpsilon", bounce::kRelErrorEpsilon},
-                          {"channels",
-                           {{"r", toJson(error.channels[0])},
-                            {"g", toJson(error.channels[1])},
-                            {"b", toJson(error.channels[2])}}},
-                          {"all", toJson(error.all)}};
-    if (!json) printTable(error);
-
-    if (!errorImagePath.empty()) {
-      const std::vector<float> r = bounce::relativeErrorMap(a, b, maskPtr);
-      float scale = errorScale.value_or(0.0f);
-      if (!errorScale) {  // 99th percentile of the compared pixels' relative error
-        std::vector<float> kept;
-        for (std::size_t i = 0; i < r.size(); ++i)
-          if (!maskPtr || maskPtr->keep[i] != 0) kept.push_back(r[i]);
-        if (!kept.empty()) {
-          const auto rank = static_cast<std::size_t>(0.99 * static_cast<double>(kept.size() - 1));
-          std::nth_element(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(rank),
-                           kept.end());
-          scale = kept[rank];
-        }
-        if (!(scale > 0.0f)) scale = 1.0f;  // identical images: everything is blue
-      }
-      bounce::writeDisplayPng(errorImagePath,
-                              bounce::falseColour(r, b.width, b.height, scale, maskPtr));
-      out["errorImage"] = {
-          {"path", errorImagePath}, {"metric", "|a-b|/(|b|+0.01), channel mean"}, {"redAt", scale}};
-      if (!json) {
-        std::printf("error image %s: |a-b|/(|b|+%g) averaged over channels; blue = 0, red >= %g\n",
-                    errorImagePath.c_str(), bounce::kRelErrorEpsilon, static_cast<double>(scale));
-      }
-    }
-    if (json) std::cout << out.dump(2) << "\n";
-    // Metrics over no pixel, or over only the finite part of a broken render, would read as
-    // "no error": both fail unless the caller accepts them.
-    if (error.comparedPixels == 0) {
-      std::cerr << "bounce-compare: " << imagePath << " vs " << referencePath
-                << ": no pixel to compare (" << error.nonFinitePixels
-                << " non-finite, the rest masked out)\n";
-      return 1;
-    }
-    if (error.nonFiniteInReference > 0 && !allowNonFinite) {
-      std::cerr << "bounce-compare: " << referencePath << ": " << error.nonFiniteInReference
-                << " reference pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite "
-                   "accepts this)\n";
-      return 1;
-    }
-    if (error.nonFiniteInImage > 0 && !allowNonFinite) {
-      std::cerr << "bounce-compare: " << imagePath << ": " << error.nonFiniteInImage
-                << " pixels are NaN/Inf (excluded from the metrics; --allow-nonfinite accepts "
-                   "this)\n";
-      return 1;
-    }
+    run(o);
+  } catch (const Refusal& e) {
+    std::cerr << "bounce-compare: " << e.what() << "\n";
+    return 1;
   } catch (const std::invalid_argument& e) {  // sizes differ
-    std::cerr << "bounce-compare: " << imagePath << " vs " << referencePath << ": " << e.what()
-              << "\n";
+    std::cerr << "bounce-compare: " << o.image << " vs " << o.reference << ": " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "bounce-compare: " << e.what() << "\n";

@@ -6,11 +6,13 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/instance_move_option.h"
+#include "cli/shared_options.h"
 #include "image/image_io.h"
 #include "ray/ray_kernel.h"
 #include "scene/framing.h"
@@ -24,50 +26,27 @@
 
 namespace {
 
-// Largest image side in pixels, given or derived (a 16384² radiance image is 3 GiB).
-constexpr int kMaxSide = 16384;
+// Largest image side in pixels, given or derived.
+constexpr int kMaxSide = bounce::kMaxImageSide;
 
 struct Options {
-  std::filesystem::path scene;
-  std::string camera;
+  bounce::SharedOptions shared;  // scene, camera, size, exposure, path tracing
   int spp = 256;
-  int maxDepth = 64;
   bool directOnly = false;
   bool indirectOnly = false;
-  uint32_t seed = 0;
-  int threads = 0;
-  std::string backend = "embree";
-  std::string lightChoice = bounce::lightChoiceName(bounce::TraceSettings{}.lightChoice);
-  int width = 0;
-  int height = 0;
   std::filesystem::path out;
   std::filesystem::path png;
   std::filesystem::path stdError;
-  float exposure = 0.0f;
   float clamp = 0.0f;
   bool progress = false;
   bool quiet = false;
   std::vector<std::string> moves;  // NAME X Y Z, repeated
 };
 
-int run(const Options& o) {
-  bounce::Scene scene = bounce::loadScene(o.scene);
-  bounce::moveInstances(scene, bounce::parseInstanceMoves(o.moves));
-  for (const std::string& warning : scene.warnings)
-    std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
-  // Without a camera in the file, frame the scene as bounce-render does (square unless the
-  // image size is given).
-  const float imageAspect = o.width > 0 && o.height > 0
-                                ? static_cast<float>(o.width) / static_cast<float>(o.height)
-                                : 1.0f;
-  bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, o.camera, imageAspect, &framed);
-  if (framed)
-    std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
-                 o.scene.c_str());
-  // Default size: 512 rows, width from the camera's aspect ratio when it has one. A side
-  // derived from an extreme aspect is clamped to 1..kMaxSide (the --width/--height range).
-  int width = o.width, height = o.height;
+// Default size: 512 rows, width from the camera's aspect ratio when it has one. A side derived
+// from an extreme aspect is clamped to 1..kMaxSide (the --width/--height range), with a warning.
+std::pair<int, int> imageSize(const Options& o, const bounce::Camera& camera) {
+  int width = o.shared.width, height = o.shared.height;
   const double aspect = camera.aspect > 0.0f ? static_cast<double>(camera.aspect) : 1.0;
   if (width <= 0 && height <= 0) height = 512;
   bool clamped = false;
@@ -84,17 +63,38 @@ int run(const Options& o) {
                  "%dx%d (each side 1..%d; give --width and --height to choose)\n",
                  camera.name.c_str(), aspect, width, height, kMaxSide);
   }
+  return {width, height};
+}
+
+int run(const Options& o) {
+  const std::filesystem::path scenePath = o.shared.scene;
+  bounce::Scene scene = bounce::loadScene(scenePath);
+  bounce::moveInstances(scene, bounce::parseInstanceMoves(o.moves));
+  for (const std::string& warning : scene.warnings)
+    std::fprintf(stderr, "bounce-trace: warning: %s\n", warning.c_str());
+  // Without a camera in the file, frame the scene as bounce-render does (square unless the
+  // image size is given).
+  const float imageAspect =
+      o.shared.width > 0 && o.shared.height > 0
+          ? static_cast<float>(o.shared.width) / static_cast<float>(o.shared.height)
+          : 1.0f;
+  bool framed = false;
+  const bounce::Camera camera = bounce::pickCamera(scene, o.shared.camera, imageAspect, &framed);
+  if (framed)
+    std::fprintf(stderr, "bounce-trace: warning: %s has no camera; framing its bounding box\n",
+                 scenePath.c_str());
+  const auto [width, height] = imageSize(o, camera);
 
   bounce::TraceSettings settings;
   settings.spp = o.spp;
-  settings.maxDepth = o.maxDepth;
+  settings.maxDepth = o.shared.maxDepth;
   settings.paths = o.directOnly     ? bounce::PathSet::DirectOnly
                    : o.indirectOnly ? bounce::PathSet::IndirectOnly
                                     : bounce::PathSet::All;
-  settings.seed = o.seed;
-  settings.threads = o.threads;
-  settings.backend = bounce::parseRayBackend(o.backend);
-  settings.lightChoice = *bounce::parseLightChoice(o.lightChoice);  // checked by CLI11
+  settings.seed = o.shared.seed;
+  settings.threads = o.shared.threads;
+  settings.backend = bounce::parseRayBackend(o.shared.backend);
+  settings.lightChoice = *bounce::parseLightChoice(o.shared.lightChoice);  // checked by CLI11
   settings.clampRadiance = o.clamp;
   settings.progress = !o.quiet && (o.progress || bounce::stderrIsTerminal());
 
@@ -106,7 +106,7 @@ int run(const Options& o) {
       std::fprintf(stderr,
                    "bounce-trace: warning: %s has no lights and no emissive surfaces: "
                    "the image is black\n",
-                   o.scene.string().c_str());
+                   scenePath.string().c_str());
     }
   }
   const bounce::CameraRender render =
@@ -126,7 +126,7 @@ int run(const Options& o) {
   }
   // All outputs or none (image_io.h): a failing one leaves no other one behind.
   std::vector<bounce::ImageOutput> outputs{{o.out, &render.radiance, 0.0f}};
-  if (!o.png.empty()) outputs.push_back({o.png, &render.radiance, o.exposure});
+  if (!o.png.empty()) outputs.push_back({o.png, &render.radiance, o.shared.exposure});
   if (!o.stdError.empty()) outputs.push_back({o.stdError, &stdError, 0.0f});
   bounce::writeImages(outputs);
   std::fprintf(
@@ -134,7 +134,7 @@ int run(const Options& o) {
       "bounce-trace: %s camera '%s' %dx%d, %d spp, max depth %d: %.1f Msamples in "
       "%.2f s (%.3f Msamples/s, %d threads, %s), standard error %.2f%% of the mean, %llu "
       "non-finite samples -> %s\n",
-      o.scene.filename().string().c_str(), camera.name.c_str(), width, height, settings.spp,
+      scenePath.filename().string().c_str(), camera.name.c_str(), width, height, settings.spp,
       settings.maxDepth, static_cast<double>(render.samples) * 1e-6, render.seconds,
       render.seconds > 0.0 ? static_cast<double>(render.samples) * 1e-6 / render.seconds : 0.0,
       render.threads, kernel->name(), meanSum > 0.0 ? 100.0 * errorSum / meanSum : 0.0,
@@ -144,7 +144,7 @@ int run(const Options& o) {
                  "bounce-trace: warning: %llu of %llu samples were non-finite (NaN or infinite "
                  "scene data in %s?) and counted as black: the affected pixels are biased low\n",
                  static_cast<unsigned long long>(render.nonFiniteSamples),
-                 static_cast<unsigned long long>(render.samples), o.scene.string().c_str());
+                 static_cast<unsigned long long>(render.samples), scenePath.string().c_str());
   }
   return 0;
 }
@@ -156,30 +156,19 @@ int main(int argc, char** argv) {
       "bounce-trace: path-traced reference image of a scene camera, in linear radiance "
       "W/(sr·m²) (EXR), optionally tone-mapped to PNG."};
   Options o;
-  app.add_option("scene", o.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
-      ->required();
-  app.add_option("--camera", o.camera, "camera name (default: the scene's first camera)");
+  bounce::SharedOptions& shared = o.shared;
+  shared.lightChoice = bounce::lightChoiceName(bounce::TraceSettings{}.lightChoice);
+  shared.maxDepth = bounce::TraceSettings{}.maxDepth;
+  bounce::addSceneOption(app, shared);
+  bounce::addCameraOption(app, shared);
   app.add_option("--spp", o.spp, "samples per pixel")->check(CLI::Range(1, 1 << 24));
-  app.add_option("--max-depth", o.maxDepth, "most diffuse reflections along a path")
-      ->check(CLI::Range(0, 100000));
   auto* direct = app.add_flag("--direct-only", o.directOnly,
                               "only emitters seen directly and light after one reflection");
   app.add_flag("--indirect-only", o.indirectOnly, "only light after two or more reflections")
       ->excludes(direct);
-  app.add_option("--seed", o.seed, "sampler seed");
-  app.add_option("--threads", o.threads, "worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
-  app.add_option("--backend", o.backend, "ray kernel: embree or bvh")
-      ->check(CLI::IsMember({"embree", "bvh"}));
-  app.add_option(
-         "--light-choice", o.lightChoice,
-         "how next-event estimation picks its one light per path vertex: place (by a bound of what "
-         "each light brings there) or power (by power alone)")
-      ->check([](const std::string& name) {
-        return bounce::parseLightChoice(name) ? std::string() : name + " is not place or power";
-      });
-  app.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, kMaxSide));
-  app.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, kMaxSide));
+  bounce::addPathTracingOptions(app, shared);
+  bounce::addSizeOptions(app, shared, 1, "image",
+                         "default: 512 rows, the width from the camera's aspect ratio");
   // The extension says the format: a .png name never receives EXR data.
   auto extension = [](const char* wanted) {
     return [wanted](const std::string& path) -> std::string {
@@ -195,7 +184,7 @@ int main(int argc, char** argv) {
   app.add_option("--std-error", o.stdError,
                  "also write each pixel's standard error sqrt(variance/spp), W/(sr·m²), as EXR")
       ->check(extension(".exr"));
-  app.add_option("--exposure", o.exposure, "PNG exposure in EV (L·2^EV)");
+  bounce::addExposureOption(app, shared);
   app.add_option("--clamp", o.clamp,
                  "firefly clamp: largest channel of a sample's reflected radiance, W/(sr·m²) "
                  "(biased; off by default)")

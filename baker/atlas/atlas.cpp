@@ -15,6 +15,7 @@
 #include "atlas/mesh_uv1.h"
 #include "atlas/texel_density.h"
 #include "atlas/uv_geometry.h"
+#include "scene/static_scene.h"
 
 namespace bounce {
 namespace {
@@ -182,7 +183,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   Atlas atlas;
   atlas.layout.padding = settings.padding;
   std::vector<StaticInstance> statics;
-  double staticArea = 0.0, weightedArea = 0.0;  // m²
+  double lightmappedArea = 0.0, weightedArea = 0.0;  // m²
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
     if (instance.mobility != Mobility::Static) continue;
@@ -195,15 +196,16 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     double area = 0.0;
     for (std::size_t t = 0; t < s.world.triangleCount(); ++t)
       if (const double a = s.world.area(t); std::isfinite(a)) area += a;
-    staticArea += area;
+    lightmappedArea += area;
     const double scale = instance.lightmapScale;
     s.weightedArea = area * scale * scale;
     weightedArea += s.weightedArea;
     statics.push_back(std::move(s));
   }
-  atlas.staticArea = staticArea;
+  // Every static instance's surface, those left to probes too: the VPL clamp's A.
+  atlas.staticArea = staticSurfaceArea(scene);
   atlas.weightedArea = weightedArea;
-  if (statics.empty() || !(staticArea > 0.0)) return atlas;
+  if (statics.empty() || !(lightmappedArea > 0.0)) return atlas;
 
   const TexelDensity density = chooseTexelDensity(
       weightedArea, {settings.texelSize, settings.texelBudget, settings.maxTexels});

@@ -67,7 +67,9 @@ struct Atlas {
     int degenerate = 0;  // groups of area-less triangles (one texel each)
     int bundle = 0;      // sub-texel pieces that lie close and face one way, side by side
   } chartKinds;
-  double staticArea = 0.0;  // m², surface of all static instances (world space)
+  // m², surface of all static instances (world space), those at lightmapScale 0 too:
+  // scene/static_scene.h's staticSurfaceArea, the VPL clamp's A.
+  double staticArea = 0.0;
   // m², Σ area × lightmapScale²: the area the texel density applies to.
   double weightedArea = 0.0;
   std::string texelRule;  // how the texel size was chosen (TexelDensity::rule)

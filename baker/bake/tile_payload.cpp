@@ -8,7 +8,7 @@
 #include "bake/texel_coverage.h"
 #include "bake/texel_irradiance.h"
 
-#include "bake_folder/byte_stream.h"
+#include "io/byte_stream.h"
 
 namespace bounce {
 namespace {

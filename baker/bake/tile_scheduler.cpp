@@ -3,7 +3,7 @@
 #include <string>
 
 #include "bake/tile_exchange.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 

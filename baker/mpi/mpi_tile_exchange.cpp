@@ -1,6 +1,6 @@
 #include "mpi/mpi_tile_exchange.h"
 
-#include "bake_folder/byte_stream.h"
+#include "io/byte_stream.h"
 
 #include <mpi.h>
 

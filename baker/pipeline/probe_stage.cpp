@@ -6,22 +6,20 @@
 #include "bake/irradiance_probes.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/scene_bake_stages.h"
+#include "scene/static_scene.h"
 
 namespace bounce {
 
 ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGeometry& geometry,
                          const RayKernel& kernel, std::span<const uint32_t> withoutRegion,
                          const SceneBakeSettings& o, const StagePlan& plan) {
-  // staticScene keeps the static instances in order: instance i of the file is traced as the
-  // number of static instances before it.
+  // Instance i of the file is traced as its number in staticScene (scene/static_scene.h).
+  const std::vector<uint32_t> traced = staticInstanceNumbers(scene);
   std::vector<ProbedInstance> instances;
-  uint32_t traced = 0;
-  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    if (scene.instances[i].mobility == Mobility::Dynamic) continue;
-    if (std::binary_search(withoutRegion.begin(), withoutRegion.end(), i))
-      instances.push_back({.fileIndex = i, .tracedIndex = traced});
-    ++traced;
-  }
+  for (uint32_t i = 0; i < scene.instances.size(); ++i)
+    if (traced[i] != kNotStatic &&
+        std::binary_search(withoutRegion.begin(), withoutRegion.end(), i))
+      instances.push_back({.fileIndex = i, .tracedIndex = traced[i]});
   const std::vector<ProbeGrid> grids = placeProbeGrids(geometry, instances);
   uint64_t count = 0;
   for (const ProbeGrid& g : grids) count += g.probeCount();  // the stage's work items

@@ -14,9 +14,9 @@
 #include "pipeline/scene_bake_stages.h"
 #include "pipeline/tile_journal.h"
 #include "scene/area_lights.h"
+#include "scene/static_scene.h"
 #include "scene/world_geometry.h"
 #include "trace/stopwatch.h"
-#include "vpl/vpl_generate.h"  // staticScene
 
 namespace bounce {
 

@@ -8,20 +8,17 @@
 #include "pipeline/scene_bake_stages.h"
 #include "pipeline/tile_journal.h"
 #include "pipeline/tile_sources.h"
+#include "scene/static_scene.h"
 
 namespace bounce {
 namespace {
 
-// `layout` (instance indices into `scene`) renumbered for staticScene(scene), which keeps the
-// static instances in order: the lightmap bake runs in the static scene, the folder keeps the
-// file scene's numbering.
+// `layout` (instance indices into `scene`) renumbered for staticScene(scene)
+// (scene/static_scene.h): the lightmap bake runs in the static scene, the folder keeps the file
+// scene's numbering. Every region is a static instance's (the atlas lays out no other).
 LightmapLayout staticLayout(const Scene& scene, LightmapLayout layout) {
-  std::vector<uint32_t> renumbered(scene.instances.size(), 0);
-  uint32_t next = 0;
-  for (std::size_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].mobility != Mobility::Dynamic) renumbered[i] = next++;
-  for (InstanceLightmapUv& region : layout.instances)
-    region.instance = renumbered.at(region.instance);
+  const std::vector<uint32_t> numbers = staticInstanceNumbers(scene);
+  for (InstanceLightmapUv& region : layout.instances) region.instance = numbers.at(region.instance);
   return layout;
 }
 

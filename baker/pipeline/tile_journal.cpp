@@ -9,8 +9,8 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "bake_folder/byte_stream.h"
-#include "image/atomic_file.h"
+#include "io/atomic_file.h"
+#include "io/byte_stream.h"
 
 namespace bounce {
 namespace fs = std::filesystem;

@@ -190,16 +190,6 @@ glm::dvec3 VplSet::totalFlux() const {
   return sum;
 }
 
-Scene staticScene(const Scene& scene) {
-  Scene out = scene;
-  std::erase_if(out.instances,
-                [](const Instance& instance) { return instance.mobility == Mobility::Dynamic; });
-  // A light that moves keeps its place (the bake names lights by index) but brings nothing.
-  for (Light& light : out.lights)
-    if (light.mobility == Mobility::Dynamic) light.intensity = light.irradiance = glm::vec3(0.0f);
-  return out;
-}
-
 VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
                     const VplSettings& settings) {
   VplSet set;

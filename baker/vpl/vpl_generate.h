@@ -71,14 +71,10 @@ struct VplSet {
 VplSet generateVpls(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
                     const VplSettings& settings);
 
-// The scene VPL paths run in: `scene` without its dynamic instances (Mobility::Dynamic). The VPLs
-// carry the static scene's indirect light, which dynamic objects receive wherever they are
-// moved; a dynamic object neither holds VPLs (they would stay behind when it moves) nor
-// shadows the paths here: each VPL records its path and the start of its incoming segment, and
-// the renderer cuts the paths the placed objects block (vpl_runtime/vpl_occlusion.h). The light the
-// dynamic objects reflect is left out. Meshes and materials are kept as they are; lights keep
-// their places, but a light that moves (Light::mobility) is given zero power: nothing baked
-// holds its light.
-Scene staticScene(const Scene& scene);
+// The bake runs generateVpls in staticScene(scene) (scene/static_scene.h): the VPLs carry the
+// static scene's indirect light, which dynamic objects receive wherever they are moved; each VPL
+// records its path and the start of its incoming segment, and the renderer cuts the paths the
+// placed objects block (vpl_runtime/vpl_occlusion.h). The light the dynamic objects reflect is
+// left out.
 
 }  // namespace bounce

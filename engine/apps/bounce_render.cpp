@@ -12,6 +12,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "cli/shared_options.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "image/image_io.h"
@@ -28,17 +29,10 @@
 namespace {
 
 struct Options {
-  std::string scene;
-  std::string camera;
-  int width = 512;
-  int height = 512;
+  bounce::SharedOptions shared;  // scene, camera, size, exposure, bake, mode, msaa, cost view
   std::vector<std::string> outputs;
   std::string context;
-  float exposure = 0.0f;
   int frames = 1;
-  std::string mode;  // default: full with a bake, direct without
-  std::string bake;
-  bool noBake = false;
   bool noShadows = false;
   int shadowResolution = 0;
   std::string shadowFilter = "poisson";
@@ -48,20 +42,16 @@ struct Options {
   bool noProbes = false;
   bool noVplShadows = false;
   bool noLightCulling = false;
-  std::string dynamicVpls = "retrace";
   float shadowFilterRadius = 1.5f;
-  int msaa = 4;                      // samples per pixel
   std::optional<uint64_t> vplPaths;  // draw the VPLs of the bake's first N light paths
   std::optional<float> vplClamp;     // VPL clamp distance, m (default: the bake's)
-  std::string costCount = "vpls";    // the count the cost mode's PNG shows
-  std::optional<float> costMax;      // the end of its colour scale (default: from the frame)
 };
 
 bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) {
   bounce::RendererSettings settings;
-  settings.mode = options.mode.empty()
+  settings.mode = options.shared.mode.empty()
                       ? (hasBake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
-                      : *bounce::parseRenderMode(options.mode);  // CLI11 checked
+                      : *bounce::parseRenderMode(options.shared.mode);  // CLI11 checked
   settings.shadows.enabled = !options.noShadows;
   settings.shadows.resolution = options.shadowResolution;
   settings.shadows.filter = options.shadowFilter == "hardware" ? bounce::ShadowFilter::Hardware
@@ -73,7 +63,8 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.vpls.shadows.enabled = !options.noVplShadows;
   // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
   settings.lightCulling.enabled = !options.noLightCulling;
-  settings.lightCulling.irradianceFloor = bounce::irradianceFloorForExposure(options.exposure);
+  settings.lightCulling.irradianceFloor =
+      bounce::irradianceFloorForExposure(options.shared.exposure);
   return settings;
 }
 
@@ -98,15 +89,16 @@ void writeCostView(const Options& options, const bounce::Image& counts) {
   std::fprintf(stderr,
                "bounce-render: cost per pixel (mean / max over the frame, background 0%s): "
                "lights %.2f / %g, VPLs %.2f / %g, shadow-map taps %.2f / %g\n",
-               options.msaa > 1 ? "; means over each pixel's samples" : "", stats.meanLights,
+               options.shared.msaa > 1 ? "; means over each pixel's samples" : "", stats.meanLights,
                static_cast<double>(stats.maxLights), stats.meanVpls,
                static_cast<double>(stats.maxVpls), stats.meanShadowTaps,
                static_cast<double>(stats.maxShadowTaps));
-  const bounce::CostCount count = *bounce::parseCostCount(options.costCount);  // CLI11 checked
+  const bounce::CostCount count =
+      *bounce::parseCostCount(options.shared.costCount);  // CLI11 checked
   const float largest = count == bounce::CostCount::Lights ? stats.maxLights
                         : count == bounce::CostCount::Vpls ? stats.maxVpls
                                                            : stats.maxShadowTaps;
-  const float scaleMax = options.costMax.value_or(bounce::costScaleMax(largest));
+  const float scaleMax = options.shared.costMax.value_or(bounce::costScaleMax(largest));
   bool png = false;
   for (const std::string& out : options.outputs) {
     if (std::filesystem::path(out).extension() == ".png") {
@@ -122,94 +114,115 @@ void writeCostView(const Options& options, const bounce::Image& counts) {
                  bounce::describeCostLegend(count, scaleMax).c_str());
 }
 
-int run(const Options& options) {
+using Clock = std::chrono::steady_clock;
+
+double milliseconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// --context, else EGL where it works and OSMesa otherwise; says which one it got.
+std::unique_ptr<bounce::gl::Context> openContext(const Options& options) {
   std::optional<bounce::gl::ContextBackend> backend;
   if (options.context == "osmesa") backend = bounce::gl::ContextBackend::OSMesa;
   if (options.context == "egl") backend = bounce::gl::ContextBackend::EGL;
   std::string eglFailure;
-  const auto context = bounce::gl::createOffscreenContext(backend, &eglFailure);
+  auto context = bounce::gl::createOffscreenContext(backend, &eglFailure);
   if (!eglFailure.empty())
     std::fprintf(stderr, "bounce-render: EGL unavailable (%s); using OSMesa\n", eglFailure.c_str());
   std::fprintf(stderr, "bounce-render: context %s: OpenGL %s, %s\n",
                bounce::gl::backendName(context->backend()), context->version().c_str(),
                context->renderer().c_str());
-  // Refused before the minutes a million emitters take to cut and group: the frame could not
-  // draw them (render/gpu_scene.h).
-  bounce::Scene scene = bounce::loadScene(options.scene, bounce::GpuScene::sceneLimits());
+  return context;
+}
+
+// The scene with --move applied. Refused before the minutes a million emitters take to cut and
+// group: the frame could not draw them (render/gpu_scene.h).
+bounce::Scene loadRenderScene(const Options& options) {
+  bounce::Scene scene = bounce::loadScene(options.shared.scene, bounce::GpuScene::sceneLimits());
   bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
   for (const std::string& warning : scene.warnings)
     std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  return scene;
+}
+
+bounce::Camera renderCamera(const Options& options, const bounce::Scene& scene) {
+  const float aspect =
+      static_cast<float>(options.shared.width) / static_cast<float>(options.shared.height);
   bool framed = false;
-  const bounce::Camera camera = bounce::pickCamera(scene, options.camera, aspect, &framed);
+  bounce::Camera camera = bounce::pickCamera(scene, options.shared.camera, aspect, &framed);
   if (framed)
     std::fprintf(stderr, "bounce-render: warning: %s has no camera; framing its bounding box\n",
-                 options.scene.c_str());
+                 options.shared.scene.c_str());
+  return camera;
+}
 
-  using Clock = std::chrono::steady_clock;
-  const auto ms = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-  };
-  const auto start = Clock::now();
+// The bake in use and the folder it came from: --bake, else the one found for the scene
+// (bake_folder/bake_search.h), unless --no-bake.
+struct FoundBake {
   std::optional<bounce::Bake> bake;
-  std::string bakeDir = options.bake;
-  if (!options.bake.empty()) {
-    bake = bounce::readBake(options.bake, scene);
-  } else if (!options.noBake) {
-    bounce::BakeSearch found = bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
-    for (const std::string& note : found.notes)
+  std::string dir;
+};
+
+FoundBake findBake(const Options& options, const bounce::Scene& scene) {
+  FoundBake found{std::nullopt, options.shared.bake};
+  if (!options.shared.bake.empty()) {
+    found.bake = bounce::readBake(options.shared.bake, scene);
+  } else if (!options.shared.noBake) {
+    bounce::BakeSearch search =
+        bounce::findSceneBake(options.shared.scene, scene, bounce::toolDirectory());
+    for (const std::string& note : search.notes)
       std::fprintf(stderr, "bounce-render: %s\n", note.c_str());
-    bake = std::move(found.bake);
-    bakeDir = found.dir.string();
+    found.bake = std::move(search.bake);
+    found.dir = search.dir.string();
   }
-  bounce::RendererSettings settings = rendererSettings(options, bake.has_value());
-  if (bounce::renderModeNeedsBake(settings.mode) && !bake)
+  if (found.bake)
+    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
+                 found.dir.c_str(), found.bake->layout.width, found.bake->layout.height,
+                 found.bake->layout.instances.size());
+  return found;
+}
+
+// The renderer's settings for this bake; refuses a mode that draws baked light without one.
+bounce::RendererSettings checkedSettings(const Options& options, const bounce::Scene& scene,
+                                         const FoundBake& found) {
+  bounce::RendererSettings settings = rendererSettings(options, found.bake.has_value());
+  if (bounce::renderModeNeedsBake(settings.mode) && !found.bake)
     throw std::runtime_error("--mode " + std::string(bounce::renderModeName(settings.mode)) +
                              " draws baked light: give --bake DIR" +
-                             (options.noBake ? " (and no --no-bake)" : ""));
-  if (bake)
-    std::fprintf(stderr, "bounce-render: bake %s: lightmap %dx%d, %zu static instances\n",
-                 bakeDir.c_str(), bake->layout.width, bake->layout.height,
-                 bake->layout.instances.size());
+                             (options.shared.noBake ? " (and no --no-bake)" : ""));
   // The bake's count rule over the scene with its dynamic instances placed (--move).
-  if (bake && bake->vpls && options.dynamicVpls == "retrace")
-    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
+  if (found.bake && found.bake->vpls && options.shared.dynamicVpls == "retrace")
+    settings.vplTracer = bounce::placedVplTracer(scene, *found.bake);
   if (settings.mode == bounce::RenderMode::Lightmap)
     std::fprintf(stderr,
                  "bounce-render: mode lightmap: pixels are E/pi W/(sr·m²), the radiance of a "
                  "white (rho = 1) Lambertian surface under the baked irradiance E (W/m²)\n");
-  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
-                                   bake ? &*bake : nullptr);
-  for (const std::string& warning : renderer.warnings())
-    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
-  if (options.vplPaths || options.vplClamp) {
-    if (!renderer.hasVpls())
-      throw std::runtime_error(
-          "--vpl-paths and --vpl-clamp choose among the bake's VPLs, but " +
-          (bake ? "the bake " + bakeDir + " has none" : std::string("no bake is used")));
-    const bounce::ForwardRenderer::VplSelection bakes = renderer.vplSelection();
-    renderer.setVplSelection(options.vplPaths.value_or(bakes.totalPaths),
-                             options.vplClamp.value_or(bakes.bakeClampDistance));
-    const bounce::ForwardRenderer::VplSelection drawn = renderer.vplSelection();
-    std::fprintf(stderr,
-                 "bounce-render: VPLs of %llu of the bake's %llu light paths (%zu VPLs, flux x "
-                 "%.4g), clamp r = %.4g m (the bake's %.4g m)\n",
-                 static_cast<unsigned long long>(drawn.paths),
-                 static_cast<unsigned long long>(drawn.totalPaths), drawn.vplCount,
-                 static_cast<double>(drawn.totalPaths) / static_cast<double>(drawn.paths),
-                 static_cast<double>(drawn.clampDistance),
-                 static_cast<double>(drawn.bakeClampDistance));
-  }
-  const auto uploaded = Clock::now();
-  const bounce::Image image =
-      renderer.renderImage(camera, options.width, options.height, options.msaa);
-  const auto rendered = Clock::now();
+  return settings;
+}
+
+// --vpl-paths and --vpl-clamp: which of the bake's VPLs are drawn, at which clamp distance.
+void selectVpls(const Options& options, bounce::ForwardRenderer& renderer, const FoundBake& found) {
+  if (!options.vplPaths && !options.vplClamp) return;
+  if (!renderer.hasVpls())
+    throw std::runtime_error(
+        "--vpl-paths and --vpl-clamp choose among the bake's VPLs, but " +
+        (found.bake ? "the bake " + found.dir + " has none" : std::string("no bake is used")));
+  const bounce::ForwardRenderer::VplSelection bakes = renderer.vplSelection();
+  renderer.setVplSelection(options.vplPaths.value_or(bakes.totalPaths),
+                           options.vplClamp.value_or(bakes.bakeClampDistance));
+  const bounce::ForwardRenderer::VplSelection drawn = renderer.vplSelection();
   std::fprintf(stderr,
-               "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
-               "%.1f ms (render + readback, includes the driver's shader JIT), mode %s, msaa %d\n",
-               options.width, options.height, camera.name.c_str(), scene.triangleCount(),
-               ms(start, uploaded), ms(uploaded, rendered),
-               std::string(bounce::renderModeName(settings.mode)).c_str(), options.msaa);
+               "bounce-render: VPLs of %llu of the bake's %llu light paths (%zu VPLs, flux x "
+               "%.4g), clamp r = %.4g m (the bake's %.4g m)\n",
+               static_cast<unsigned long long>(drawn.paths),
+               static_cast<unsigned long long>(drawn.totalPaths), drawn.vplCount,
+               static_cast<double>(drawn.totalPaths) / static_cast<double>(drawn.paths),
+               static_cast<double>(drawn.clampDistance),
+               static_cast<double>(drawn.bakeClampDistance));
+}
+
+// The light lists per cluster and which lights got a shadow map or cube.
+void reportLights(const bounce::ForwardRenderer& renderer, const bounce::Scene& scene) {
   const bounce::LightGridStats grid = renderer.lightGridStats();
   if (grid.clusters > 0)
     std::fprintf(stderr,
@@ -217,7 +230,8 @@ int run(const Options& options) {
                  "per cluster (at most %zu and %zu), floor %.3g W/m^2\n",
                  grid.clusters, static_cast<double>(grid.punctualEntries) / grid.clusters,
                  static_cast<double>(grid.areaEntries) / grid.clusters, grid.maxPunctual,
-                 grid.maxArea, static_cast<double>(settings.lightCulling.irradianceFloor));
+                 grid.maxArea,
+                 static_cast<double>(renderer.settings().lightCulling.irradianceFloor));
   if (std::count(renderer.punctualShadowSlots().begin(), renderer.punctualShadowSlots().end(), -1) >
       0)
     std::fprintf(
@@ -228,69 +242,97 @@ int run(const Options& options) {
         stderr, "bounce-render: %s\n",
         bounce::describeAreaShadowChoice(renderer.areaShadowChoice(), renderer.areaShadowSlots())
             .c_str());
-  if (options.frames > 1) {
-    // Benchmark: the same frame again into the same target, read back each time; where the
-    // time goes, pass by pass (the first frame, with the driver's shader JIT, left out).
-    bounce::gl::RenderTarget target(options.width, options.height, options.msaa);
-    // One frame into this target first: llvmpipe compiles shader variants for it lazily.
+}
+
+// --frames N: the same frame again into the same target, read back each time; where the time
+// goes, pass by pass (the first frame, with the driver's shader JIT, left out).
+void benchmarkFrames(const Options& options, bounce::ForwardRenderer& renderer,
+                     const bounce::Camera& camera) {
+  if (options.frames <= 1) return;
+  bounce::gl::RenderTarget target(options.shared.width, options.shared.height, options.shared.msaa);
+  // One frame into this target first: llvmpipe compiles shader variants for it lazily.
+  renderer.render(camera, target);
+  (void)renderer.readBack(target);
+  renderer.clearProfile();
+  const auto repeatStart = Clock::now();
+  for (int i = 1; i < options.frames; ++i) {
     renderer.render(camera, target);
     (void)renderer.readBack(target);
-    renderer.clearProfile();
-    const auto repeatStart = Clock::now();
-    for (int i = 1; i < options.frames; ++i) {
-      renderer.render(camera, target);
-      (void)renderer.readBack(target);
-    }
-    std::fprintf(stderr, "bounce-render: %d more frames: %.2f ms per frame (render + readback)\n",
-                 options.frames - 1, ms(repeatStart, Clock::now()) / (options.frames - 1));
-    printProfile(renderer.profile(true));
   }
+  std::fprintf(stderr, "bounce-render: %d more frames: %.2f ms per frame (render + readback)\n",
+               options.frames - 1, milliseconds(repeatStart, Clock::now()) / (options.frames - 1));
+  printProfile(renderer.profile(true));
+}
 
+// The VPLs traced again around the dynamic instances, and the share of VPL irradiance the clamp
+// removed over the frame.
+void reportVpls(const Options& options, bounce::ForwardRenderer& renderer,
+                const bounce::Scene& scene, const FoundBake& found, const bounce::Camera& camera) {
   const bool dynamicInstances = std::any_of(
       scene.instances.begin(), scene.instances.end(),
       [](const bounce::Instance& i) { return i.mobility == bounce::Mobility::Dynamic; });
-  if (settings.vplTracer && dynamicInstances)
+  if (renderer.settings().vplTracer && dynamicInstances)
     std::fprintf(stderr,
                  "bounce-render: VPLs traced again with the dynamic instances in place: %zu "
                  "(bake: %zu)\n",
-                 renderer.vpls().groups().vplCount(), bake->vpls->size());
-  if (renderer.hasVpls() && (bounce::renderModeNeedsVpls(settings.mode) || dynamicInstances)) {
-    const bounce::VplClampReport clamp =
-        renderer.measureVplClamp(camera, options.width, options.height);
-    std::fprintf(stderr,
-                 "bounce-render: VPL clamp removed %.2f%% of the VPL irradiance over the frame "
-                 "(%zu VPLs in %zu groups, r = %.4g m; every visible surface, luminance)\n",
-                 100.0 * clamp.removedFraction(), clamp.vplCount,
-                 renderer.vpls().groups().groupCount(), static_cast<double>(clamp.clampDistance));
-  }
+                 renderer.vpls().groups().vplCount(), found.bake->vpls->size());
+  if (!renderer.hasVpls() ||
+      !(bounce::renderModeNeedsVpls(renderer.settings().mode) || dynamicInstances))
+    return;
+  const bounce::VplClampReport clamp =
+      renderer.measureVplClamp(camera, options.shared.width, options.shared.height);
+  std::fprintf(stderr,
+               "bounce-render: VPL clamp removed %.2f%% of the VPL irradiance over the frame "
+               "(%zu VPLs in %zu groups, r = %.4g m; every visible surface, luminance)\n",
+               100.0 * clamp.removedFraction(), clamp.vplCount,
+               renderer.vpls().groups().groupCount(), static_cast<double>(clamp.clampDistance));
+}
 
-  if (settings.mode == bounce::RenderMode::Cost) {
-    writeCostView(options, image);
-    return 0;
-  }
-  // All outputs or none (image_io.h): a failing --out leaves no other one behind.
+// All outputs or none (image_io.h): a failing --out leaves no other one behind.
+void writeFrame(const Options& options, const bounce::Image& image) {
   std::vector<bounce::ImageOutput> outputs;
-  for (const std::string& out : options.outputs) outputs.push_back({out, &image, options.exposure});
+  for (const std::string& out : options.outputs)
+    outputs.push_back({out, &image, options.shared.exposure});
   bounce::writeImages(outputs);
   for (const std::string& out : options.outputs)
     std::fprintf(stderr, "bounce-render: wrote %s\n", out.c_str());
+}
+
+int run(const Options& options) {
+  const auto context = openContext(options);
+  bounce::Scene scene = loadRenderScene(options);
+  const bounce::Camera camera = renderCamera(options, scene);
+  const auto start = Clock::now();
+  const FoundBake found = findBake(options, scene);
+  const bounce::RendererSettings settings = checkedSettings(options, scene, found);
+  bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
+                                   found.bake ? &*found.bake : nullptr);
+  for (const std::string& warning : renderer.warnings())
+    std::fprintf(stderr, "bounce-render: warning: %s\n", warning.c_str());
+  selectVpls(options, renderer, found);
+  const auto uploaded = Clock::now();
+  const bounce::Image image = renderer.renderImage(camera, options.shared.width,
+                                                   options.shared.height, options.shared.msaa);
+  const auto rendered = Clock::now();
+  std::fprintf(stderr,
+               "bounce-render: %dx%d, camera '%s', %zu triangles: set-up %.1f ms, first frame "
+               "%.1f ms (render + readback, includes the driver's shader JIT), mode %s, msaa %d\n",
+               options.shared.width, options.shared.height, camera.name.c_str(),
+               scene.triangleCount(), milliseconds(start, uploaded),
+               milliseconds(uploaded, rendered),
+               std::string(bounce::renderModeName(settings.mode)).c_str(), options.shared.msaa);
+  reportLights(renderer, scene);
+  benchmarkFrames(options, renderer, camera);
+  reportVpls(options, renderer, scene, found, camera);
+  if (settings.mode == bounce::RenderMode::Cost)
+    writeCostView(options, image);
+  else
+    writeFrame(options, image);
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
-  CLI::App app{
-      "Render a scene with the forward renderer (direct light with shadow maps) into "
-      "linear-radiance "
-      "EXR (W/(sr·m²)) and/or tone-mapped sRGB PNG files.",
-      "bounce-render"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
-      ->required();
-  app.add_option("--camera", options.camera, "camera name (default: the scene's first camera)");
-  app.add_option("--width", options.width, "image width in pixels")->check(CLI::Range(1, 16384));
-  app.add_option("--height", options.height, "image height in pixels")->check(CLI::Range(1, 16384));
+// --out (repeatable), --context and --frames: where the frame goes and how it is timed.
+void addOutputOptions(CLI::App& app, Options& options) {
   app.add_option("--out", options.outputs,
                  "output file, .exr (linear) or .png (tone-mapped); "
                  "repeatable")
@@ -301,40 +343,15 @@ int main(int argc, char** argv) {
       });
   app.add_option("--context", options.context, "osmesa or egl (default: EGL if it works)")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  app.add_option("--exposure", options.exposure, "exposure in EV for PNG files (default 0)");
   app.add_option("--frames", options.frames,
                  "render the frame this many times and report the mean time and, per pass, the GPU "
                  "time (mean and 95th percentile), the frame's CPU time (building and "
                  "submitting it), the wait for the GPU and the readback (benchmark)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
-                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
-                 "content scene, when one exists and matches the scene)");
-  app.add_option("--msaa", options.msaa,
-                 "samples per pixel (multisample anti-aliasing; the radiance is averaged over "
-                 "each pixel before tone mapping, a box filter as bounce-trace's); 1 turns it "
-                 "off (default 4)")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
-      ->excludes("--bake");
-  app.add_option("--mode", options.mode,
-                 "what to draw: full (direct + baked indirect; the default with a bake), direct "
-                 "(real-time direct light only; the default without), indirect (only the baked "
-                 "rho/pi*E), lightmap (E/pi: the baked irradiance on a white surface), charts "
-                 "(lightmap charts and texels), vpl (indirect light of every surface from the "
-                 "bake's VPLs, rho/pi*E_vpl), vpl-clamp (red: the VPLs' E/pi on a white surface, "
-                 "green: what their clamp removed), error (each texel's estimated relative error: "
-                 "blue 0, green at the bake's target, red at twice it or more), validity (green: "
-                 "texels with samples of their own, orange: filled from their neighbours, dark "
-                 "blue: padding), texel-density (lightmap texels per metre against the bake's "
-                 "texel size: blue half or less, green equal, red twice or more, over a checker of "
-                 "texels), cascades (the directional light's shadow cascade: red, green, blue, "
-                 "yellow from near to far, cross-faded where they blend; needs no bake), cost "
-                 "(what each pixel evaluated, shaded as full: EXR R lights, G VPLs, B shadow-map "
-                 "taps, raw counts; PNG one count, --cost-count, in false colour with a legend "
-                 "bar at the bottom, its scale printed; needs no bake)")
-      ->check(CLI::IsMember(bounce::renderModeNames()));
+}
+
+// The VPLs drawn: groups, light paths, clamp, culling, probes and shadow cubes.
+void addVplOptions(CLI::App& app, Options& options) {
   app.add_option("--vpl-groups", options.vplGroups,
                  "coarse VPL groups K (representatives, per-cell lightcuts; default 64)")
       ->check(CLI::Range(std::size_t{1}, bounce::kMaxVplGroups));
@@ -357,12 +374,10 @@ int main(int argc, char** argv) {
                "at --exposure)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
                "draw every VPL unoccluded (no shadow cubes for the VPL groups' parts)");
-  app.add_option("--dynamic-vpls", options.dynamicVpls,
-                 "VPLs with dynamic instances in the scene: retrace (default: the light paths "
-                 "traced again with them in place, so they shadow the room and reflect light "
-                 "into it) or cut (the bake's VPLs, their paths cut where the dynamic instances "
-                 "block them; misses the light those reflect)")
-      ->check(CLI::IsMember({"retrace", "cut"}));
+}
+
+// The shadow maps: on or off, resolution, filter.
+void addShadowOptions(CLI::App& app, Options& options) {
   app.add_flag("--no-shadows", options.noShadows,
                "draw every light unshadowed (punctual and area lights)");
   app.add_option("--shadow-resolution", options.shadowResolution,
@@ -376,13 +391,32 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-filter-radius", options.shadowFilterRadius,
                  "Poisson kernel radius in shadow-map texels (default 1.5)")
       ->check(CLI::Range(0.0f, 64.0f));
-  app.add_option("--cost-count", options.costCount,
-                 "mode cost: the count the PNG shows, lights, vpls or taps (default vpls)")
-      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
-  app.add_option("--cost-max", options.costMax,
-                 "mode cost: the count at the red end of the PNG's scale (default: 1, 2 or 5 "
-                 "x 10^k at or above the frame's largest)")
-      ->check(CLI::PositiveNumber);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{
+      "Render a scene with the forward renderer (direct light with shadow maps) into "
+      "linear-radiance "
+      "EXR (W/(sr·m²)) and/or tone-mapped sRGB PNG files.",
+      "bounce-render"};
+  bounce::SharedOptions& shared = options.shared;
+  shared.width = 512;
+  shared.height = 512;
+  bounce::addSceneOption(app, shared);
+  bounce::addCameraOption(app, shared);
+  bounce::addSizeOptions(app, shared, 1, "image", "default 512");
+  addOutputOptions(app, options);
+  bounce::addExposureOption(app, shared);
+  bounce::addBakeOptions(app, shared);
+  bounce::addMsaaOption(app, shared);
+  bounce::addModeOption(app, shared, bounce::renderModeNames(), "what to draw");
+  addVplOptions(app, options);
+  bounce::addDynamicVplsOption(app, shared);
+  addShadowOptions(app, options);
+  bounce::addCostViewOptions(app, shared, "1, 2 or 5 x 10^k at or above the frame's largest count");
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {

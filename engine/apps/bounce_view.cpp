@@ -1,766 +1,26 @@
-// bounce-view: the scene in a window (GLFW, OpenGL 3.3 core) with a fly camera. Controls:
-//   W/A/S/D move, Q/E down/up, Shift ×4 speed, mouse drag (either button) looks around,
-//   +/− or the wheel change speed, Tab / 1–9 pick the scene's cameras, F12 saves a screenshot
-//   (PNG + EXR), [ and ] change the exposure by 0.5 EV, Esc quits. With a bake (--bake, or the
-//   one found for the scene as bounce-render finds it, bake_folder/bake_search.h): M cycles the
-//   modes (full, direct, indirect, lightmap, charts, with the bake's VPLs vpl, vpl-clamp, with
-//   its error.exr error and validity, texel-density, cascades; without a bake direct and
-//   cascades), C toggles the chart view. F1–F4 return to a camera bookmark, Shift+F1–F4 save
-//   the camera there (for the session). H shows or hides the panel (viewer_panel.h: the bake's
-//   facts, modes, exposure, cameras and bookmarks, the VPLs' light paths and clamp, objects,
-//   lights, CPU and GPU frame times; --no-panel starts hidden); keys go to the panel only while
-//   it edits a field.
-//   Dynamic objects (extras.bounce.mobility = "dynamic"): G selects the next one, J/L move it
-//   left/right, I/K away/towards, U/O down/up (along the world axes nearest the camera's right,
-//   forward and up; Shift ×4), at a quarter of the scene's diagonal per second; --move places
-//   them at start as in bounce-render and bounce-trace.
-//   The title shows the camera, the mode, the frame time, the speed, the exposure and the
-//   selected object with its position.
-// `--frames N --screenshot FILE` renders N frames, saves the last one and exits (for tests).
+// bounce-view's command line (viewer.h is the viewer): the options it shares with bounce-render
+// (cli/shared_options.h), its captures, script and reference; the scene loaded with --move.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <array>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <memory>
-#include <optional>
+#include <exception>
+#include <filesystem>
+#include <stdexcept>
 #include <string>
-#include <thread>
-#include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "background_bake.h"
-#include "bake_folder/bake_facts.h"
-#include "bake_folder/bake_folder.h"
-#include "bake_folder/bake_search.h"
 #include "cli/instance_move_option.h"
+#include "cli/shared_options.h"
 #include "cli/viewer_script.h"
-#include "gl/gpu_pass_timers.h"
-#include "gl/panel_layer.h"
-#include "gl/render_target.h"
-#include "gl/shader.h"
-#include "gl/window.h"
-#include "image/image_io.h"
-#include "render/fly_camera.h"
-#include "render/forward_renderer.h"
-#include "render/punctual_shadow_budget.h"
-#include "render/reference_compare_pass.h"
-#include "render/tonemap_pass.h"
-#include "render/view.h"
-#include "scene/dynamic_selection.h"
-#include "scene/framing.h"
+#include "render/render_mode.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
-#include "viewer_panel.h"
-#include "vpl/vpl_retrace.h"
+#include "viewer.h"
 
 namespace {
 
-using bounce::gl::Key;
-using Clock = std::chrono::steady_clock;
-
-struct Options {
-  std::string scene;
-  std::string camera;
-  int width = 1280;
-  int height = 720;
-  float exposure = 0.0f;
-  int frames = 0;  // 0 = until closed
-  std::string screenshot;
-  std::string windowShot;  // the window as shown (panel included), EXR of display values
-  std::string scriptFile;
-  std::vector<bounce::ScriptCommand> script;  // read before the window opens
-  std::string mode;                           // default: full with a bake, direct without
-  std::string bake;
-  bool noBake = false;
-  int msaa = 4;                    // samples per pixel
-  bool noPanel = false;            // start with the panel hidden
-  std::vector<std::string> moves;  // NAME X Y Z, repeated
-  std::string dynamicVpls = "retrace";
-  std::string reference;           // a reference EXR (bounce-trace) to compare the frame with
-  std::string compare = "split";   // how, with --reference (render/reference_view.h)
-  std::string costCount = "vpls";  // the count the cost view shows
-  std::optional<float> costMax;    // the end of its scale (default: costDisplay())
-};
-
-// Writes the radiance as `path` (by extension); for F12, both PNG and EXR.
-void save(const bounce::Image& radiance, const std::string& path, float exposure) {
-  bounce::writeImage(path, radiance, exposure);
-  std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
-}
-
-// The bake in use: where it was read from and what was said while looking for it.
-struct LoadedBake {
-  std::optional<bounce::Bake> bake;
-  std::filesystem::path dir;
-  std::vector<std::string> notes;
-  bool stale = false;  // the scene's bake was found but no longer matches it (BakeSearch::stale)
-};
-
-// With a bake's VPLs and --dynamic-vpls retrace, moving a dynamic instance traces them again
-// with it in place (vpl/vpl_retrace.h).
-bounce::RendererSettings rendererSettings(const Options& options, const bounce::Scene& scene,
-                                          const std::optional<bounce::Bake>& bake,
-                                          bounce::RenderMode mode) {
-  bounce::RendererSettings settings;
-  settings.mode = mode;
-  if (bake && bake->vpls && options.dynamicVpls == "retrace")
-    settings.vplTracer = bounce::placedVplTracer(scene, *bake);
-  return settings;
-}
-
-class Viewer {
- public:
-  Viewer(const Options& options, bounce::Scene scene, LoadedBake loaded, bounce::RenderMode mode)
-      : options_(options),
-        scene_(std::move(scene)),
-        bake_(std::move(loaded.bake)),
-        bakeDir_(std::move(loaded.dir)),
-        bakeNotes_(std::move(loaded.notes)),
-        window_("bounce-view", options.width, options.height),
-        renderer_(scene_, bounce::gl::shaderDirectory(),
-                  rendererSettings(options, scene_, bake_, mode), bake_ ? &*bake_ : nullptr),
-        tonemap_(bounce::gl::shaderDirectory()),
-        compare_(bounce::gl::shaderDirectory()),
-        selection_(scene_),
-        objectSpeed_(bounce::objectSpeed(scene_)),
-        exposure_(options.exposure) {
-    std::fprintf(stderr, "bounce-view: OpenGL %s, %s\n", window_.version().c_str(),
-                 window_.renderer().c_str());
-    for (const std::string& warning : scene_.warnings)
-      std::fprintf(stderr, "bounce-view: warning: %s\n", warning.c_str());
-    for (const std::string& warning : renderer_.warnings())
-      std::fprintf(stderr, "bounce-view: warning: %s\n", warning.c_str());
-    cameras_ = scene_.cameras;
-    const glm::ivec2 size = window_.framebufferSize();
-    const float aspect = static_cast<float>(size.x) / static_cast<float>(std::max(size.y, 1));
-    if (cameras_.empty()) {
-      std::fprintf(stderr, "bounce-view: warning: the scene has no camera; framing its bounds\n");
-      cameras_.push_back(bounce::frameBounds(bounce::sceneBounds(scene_), aspect));
-    }
-    const bounce::Bounds bounds = bounce::sceneBounds(scene_);
-    speed_ = std::max(0.25f * glm::length(bounds.hi - bounds.lo), 0.1f);  // m/s
-    try {
-      panel_.emplace(window_);
-      panelShown_ = !options.noPanel;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "bounce-view: warning: no panel (%s); the keys still work\n", e.what());
-    }
-    if (bake_) bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    bakeStale_ = loaded.stale;
-    if (bakeStale_)
-      std::fprintf(stderr,
-                   "bounce-view: lighting needs to be rebuilt: the scene's bake is stale (the "
-                   "panel's 'bake now' or the script's rebake re-bakes it)\n");
-    select(options.camera.empty() ? 0 : scene_.findCamera(options.camera));
-    if (!options.reference.empty()) {
-      referenceView_ = *bounce::parseReferenceView(options.compare);  // CLI11 checked
-      loadReference(options.reference);
-    }
-  }
-
-  int run() {
-    auto last = Clock::now();
-    auto titleShown = last;
-    double frameMs = 0.0, steadyMs = 0.0;
-    for (int frame = 0; !window_.shouldClose(); ++frame) {
-      window_.pollEvents();
-      const auto now = Clock::now();
-      const float dt = std::chrono::duration<float>(now - last).count();
-      const double ms = std::chrono::duration<double, std::milli>(now - last).count();
-      frameMs = frame < 2 ? ms : 0.9 * frameMs + 0.1 * ms;  // smoothed for reading
-      last = now;
-      if (frame >= 2) steadyMs += ms;  // the first frames include llvmpipe's shader JIT
-      handleInput(dt);
-      runScriptBeforeFrame();
-      takeRebakedPass();
-      draw();
-      // The GPU time of the newest frame whose pass timers are in (a frame or two late).
-      times_.add(ms, renderer_.profile().lastGpuFrame());
-      // The panel's table: each pass over the last 60 frames.
-      if (frame % 60 == 59) {
-        passTimes_ = renderer_.profile().gpuPasses();
-        cpuTimes_ = renderer_.profile().cpu();
-        renderer_.clearProfile(false);
-      }
-      if (panel_ && panelShown_) drawPanel();
-      const bool scriptEnded = !options_.script.empty() && runScriptAfterFrame();
-      if (scriptEnded || (options_.frames > 0 && frame + 1 >= options_.frames)) {
-        if (!options_.screenshot.empty()) save(shown().read(), options_.screenshot, exposure_);
-        if (!options_.windowShot.empty()) saveWindow(options_.windowShot);
-        std::fprintf(stderr,
-                     "bounce-view: %d frames; mean frame time after the first two %.1f ms\n",
-                     frame + 1, frame >= 2 ? steadyMs / (frame - 1) : ms);
-        return 0;
-      }
-      if (saveRequested_) saveScreenshot();
-      window_.swapBuffers();
-      if (now - titleShown > std::chrono::milliseconds(250)) {
-        titleShown = now;
-        char object[160] = "";
-        if (!selection_.empty()) {
-          const glm::vec3 at = selection_.translation(scene_);
-          std::snprintf(object, sizeof object,
-                        " — moving '%s' (G: next of %zu) at (%.3f, %.3f, %.3f) m",
-                        selection_.name(scene_).c_str(), selection_.count(), at.x, at.y, at.z);
-        }
-        char title[512];
-        std::snprintf(title, sizeof title,
-                      "bounce-view — %s — camera '%s' — %s — %.1f ms — %.2f m/s — %+.1f EV%s",
-                      options_.scene.c_str(), cameras_[cameraIndex_].name.c_str(),
-                      std::string(bounce::renderModeName(renderer_.settings().mode)).c_str(),
-                      frameMs, speed_, exposure_, object);
-        window_.setTitle(title);
-      }
-    }
-    return 0;
-  }
-
- private:
-  void select(std::size_t index) {
-    cameraIndex_ = index;
-    fly_.emplace(cameras_[index]);
-  }
-
-  // The next of availableModes() (the order M steps through them): without a bake direct and
-  // cascades; the VPL modes only when the bake has VPLs, error and validity only with error.exr.
-  void nextMode() {
-    const std::vector<bounce::RenderMode> modes = availableModes();
-    const auto at = std::find(modes.begin(), modes.end(), renderer_.settings().mode);
-    if (modes.empty()) return;
-    setMode(at == modes.end() || at + 1 == modes.end() ? modes.front() : *(at + 1));
-  }
-
-  void toggleCharts() {
-    if (!renderer_.hasBake()) return;
-    const bounce::RenderMode mode = renderer_.settings().mode;
-    if (mode != bounce::RenderMode::Charts) modeBeforeCharts_ = mode;
-    setMode(mode == bounce::RenderMode::Charts ? modeBeforeCharts_ : bounce::RenderMode::Charts);
-  }
-
-  void setMode(bounce::RenderMode mode) {
-    renderer_.setMode(mode);
-    std::fprintf(stderr, "bounce-view: mode %s%s\n",
-                 std::string(bounce::renderModeName(mode)).c_str(),
-                 mode == bounce::RenderMode::Lightmap
-                     ? " (pixels are E/pi: the baked irradiance on a white surface)"
-                 : mode == bounce::RenderMode::VplClamp
-                     ? " (red: the VPLs' E/pi on a white surface; green: what their clamp removed)"
-                 : mode == bounce::RenderMode::Validity
-                     ? " (green: texels with samples of their own; orange: filled from their "
-                       "neighbours; dark blue: padding)"
-                 : mode == bounce::RenderMode::Error
-                     ? " (each texel's estimated relative error: blue 0, green at the bake's "
-                       "target, red at twice it or more, dark grey none)"
-                 : mode == bounce::RenderMode::TexelDensity
-                     ? " (lightmap texels per metre against the bake's texel size: blue half or "
-                       "less, green equal, red twice or more; checker: one square per texel)"
-                 : mode == bounce::RenderMode::Cascades
-                     ? " (the directional light's shadow cascade: red, green, blue, yellow from "
-                       "near to far; grey: no shadowed directional light)"
-                     : "");
-  }
-
-  void saveWindow(const std::string& path) {
-    const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
-    const bounce::Image shown = bounce::gl::readWindowPixels(size.x, size.y);
-    if (std::filesystem::path(path).extension() == ".png")
-      bounce::writeDisplayPng(path, shown);
-    else
-      bounce::writeExr(path, shown);
-    std::fprintf(stderr, "bounce-view: wrote %s\n", path.c_str());
-  }
-
-  // --script (cli/viewer_script.h): the commands that set state run before a frame is drawn;
-  // captures and frame counts after it.
-  static bool setsState(const bounce::ScriptCommand& c) {
-    using Kind = bounce::ScriptCommand::Kind;
-    return c.kind != Kind::Frames && c.kind != Kind::Capture && c.kind != Kind::Window &&
-           c.kind != Kind::WaitBake;
-  }
-
-  void runScriptBeforeFrame() {
-    using Kind = bounce::ScriptCommand::Kind;
-    const std::vector<bounce::ScriptCommand>& script = options_.script;
-    for (; scriptAt_ < script.size() && setsState(script[scriptAt_]); ++scriptAt_) {
-      const bounce::ScriptCommand& c = script[scriptAt_];
-      try {
-        if (c.kind == Kind::Camera) select(scene_.findCamera(c.text));
-        if (c.kind == Kind::View) {
-          bounce::Camera camera = fly_->camera();
-          camera.cameraToWorld =
-              glm::inverse(glm::lookAt(c.position, c.target, glm::vec3(0, 1, 0)));
-          fly_.emplace(camera);
-        }
-        if (c.kind == Kind::Mode) setMode(*bounce::parseRenderMode(c.text));
-        if (c.kind == Kind::Exposure) exposure_ = c.number;
-        if (c.kind == Kind::Panel) panelShown_ = c.on && panel_.has_value();
-        if (c.kind == Kind::Rebake) startRebake();
-        if (c.kind == Kind::Light) {
-          const std::size_t index = lightNamed(c.text);
-          bounce::Light light = scene_.lights[index];
-          glm::vec3& power =
-              light.type == bounce::LightType::Directional ? light.irradiance : light.intensity;
-          if (c.field == "intensity") power = c.value;
-          if (c.field == "position") light.position = c.value;
-          if (c.field == "direction") light.direction = glm::normalize(c.value);
-          editLight(index, light);
-        }
-        if (c.kind == Kind::CancelBake && rebake_) rebake_->cancel();
-        const auto slot = static_cast<std::size_t>(c.count - 1);
-        if (c.kind == Kind::BookmarkSave) saveBookmark(slot);
-        if (c.kind == Kind::BookmarkGo) goToBookmark(slot);
-        if ((c.kind == Kind::VplPaths || c.kind == Kind::VplClamp) && !renderer_.hasVpls())
-          throw std::runtime_error("no VPLs to choose from: the bake has none");
-        if (c.kind == Kind::VplPaths)
-          selectVpls(static_cast<uint64_t>(c.count), renderer_.vplSelection().clampDistance);
-        if (c.kind == Kind::VplClamp) selectVpls(renderer_.vplSelection().paths, c.number);
-        if (c.kind == Kind::Reference) loadReference(c.text);
-        if (c.kind == Kind::Compare) setReferenceView(*bounce::parseReferenceView(c.text));
-      } catch (const std::exception& e) {
-        throw std::runtime_error(options_.scriptFile + ": line " + std::to_string(c.line) + ": " +
-                                 e.what());
-      }
-    }
-  }
-
-  // Returns whether the script has ended.
-  bool runScriptAfterFrame() {
-    using Kind = bounce::ScriptCommand::Kind;
-    const std::vector<bounce::ScriptCommand>& script = options_.script;
-    while (scriptAt_ < script.size() && !setsState(script[scriptAt_])) {
-      const bounce::ScriptCommand& c = script[scriptAt_];
-      if (c.kind == Kind::WaitBake) {
-        // The next frame takes a finished pass and draws it; captures follow that frame.
-        if (rebake_ && (rebake_->running() || rebake_->hasFinished())) return false;
-        if (rebake_ && !rebake_->stopped().empty())
-          std::fprintf(stderr, "bounce-view: re-bake %s\n", rebake_->stopped().c_str());
-        ++scriptAt_;
-        continue;
-      }
-      if (c.kind == Kind::Frames) {
-        if (++scriptFrames_ < c.count) return false;
-        scriptFrames_ = 0;
-        ++scriptAt_;
-        return scriptAt_ == script.size();
-      }
-      if (c.kind == Kind::Capture) save(shown().read(), c.text, exposure_);
-      if (c.kind == Kind::Window) saveWindow(c.text);
-      ++scriptAt_;
-    }
-    return scriptAt_ == script.size();
-  }
-
-  // The panel goes over the tone-mapped frame in the window's framebuffer, after the frame was
-  // drawn and before a capture is read from the target: captures never hold it.
-  void drawPanel() {
-    bounce::ViewerPanelView view;
-    view.scene = options_.scene;
-    view.bakeLines = bakeLines_;
-    view.bakeNotes = bakeNotes_;
-    view.modes = availableModes();
-    view.mode = renderer_.settings().mode;
-    view.exposure = exposure_;
-    view.msaa = options_.msaa;
-    for (const bounce::Camera& camera : cameras_) view.cameras.push_back(camera.name);
-    view.camera = cameraIndex_;
-    for (const std::optional<bounce::FlyCamera>& bookmark : bookmarks_)
-      view.bookmarks.push_back(bookmark.has_value());
-    view.referenceFile = referenceFile_;
-    view.referenceView = referenceView_;
-    if (renderer_.hasVpls()) {
-      const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
-      view.vpls = bounce::PanelVpls{s.paths, s.totalPaths, s.vplCount, s.clampDistance,
-                                    s.bakeClampDistance};
-    }
-    view.object = selection_.empty() ? "" : selection_.name(scene_);
-    view.objectCount = selection_.count();
-    view.lights = &scene_.lights;
-    view.bakeStale = bakeStale_;
-    if (const auto cost = costDisplay())
-      view.costLegend = bounce::describeCostLegend(cost->count, cost->scaleMax);
-    view.times = &times_;
-    view.passTimes = &passTimes_;
-    view.cpuTimes = &cpuTimes_;
-    view.rebaking = rebake_ && rebake_->running();
-    view.rebakeStatus = rebake_ ? rebake_->status() : "";
-    view.rebakeFraction = rebake_ ? rebake_->fraction() : 0.0;
-    panel_->beginFrame();
-    const bounce::ViewerPanelRequests requests = bounce::drawViewerPanel(view);
-    panel_->endFrame();
-    if (requests.mode) setMode(*requests.mode);
-    if (requests.exposure) exposure_ = *requests.exposure;
-    if (requests.camera) select(*requests.camera);
-    if (requests.saveBookmark) saveBookmark(*requests.saveBookmark);
-    if (requests.goToBookmark && bookmarks_.at(*requests.goToBookmark))
-      goToBookmark(*requests.goToBookmark);
-    if (requests.loadReference) try {
-        loadReference(*requests.loadReference);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "bounce-view: error: %s\n", e.what());  // keep viewing
-      }
-    if (requests.referenceView && compare_.hasReference()) referenceView_ = *requests.referenceView;
-    if (requests.vplSelection) try {
-        selectVpls(requests.vplSelection->first, requests.vplSelection->second);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "bounce-view: %s\n", e.what());  // keep the VPLs drawn
-      }
-    if (requests.nextObject) selectNextObject();
-    if (requests.screenshot) saveRequested_ = true;
-    for (const auto& [index, light] : requests.lightEdits) editLight(index, light);
-    if (requests.rebake) startRebake();
-    if (requests.cancelRebake && rebake_) rebake_->cancel();
-  }
-
-  std::size_t lightNamed(const std::string& name) const {
-    for (std::size_t i = 0; i < scene_.lights.size(); ++i)
-      if (scene_.lights[i].name == name) return i;
-    throw std::runtime_error("no punctual light named '" + name + "'");
-  }
-
-  // A light edited in the panel or a script: drawn so at once; the baked light, which holds the
-  // old light's indirect (and, for a baked-only light, direct) light, is stale until a re-bake.
-  void editLight(std::size_t index, const bounce::Light& light) {
-    scene_.lights.at(index) = light;
-    renderer_.setLight(index, light);
-    lightsEdited_ = true;
-    if (bake_ && !bakeStale_) {
-      bakeStale_ = true;
-      bakeNotes_.push_back(
-          "the baked light is stale: a light changed since the bake (re-bake "
-          "to update it; the scene file is not changed)");
-      std::fprintf(stderr, "bounce-view: %s\n", bakeNotes_.back().c_str());
-    }
-  }
-
-  // A background re-bake (background_bake.h) of the scene into <scene>.bake, or kept in memory
-  // when a light was edited (the bake would not match the scene file); one at a time.
-  void startRebake() {
-    if (rebake_ && rebake_->running()) return;
-    rebake_.reset();
-    const int cores = static_cast<int>(std::thread::hardware_concurrency());
-    std::filesystem::path folder;
-    if (!lightsEdited_) folder = std::filesystem::path(options_.scene).replace_extension(".bake");
-    rebake_ = std::make_unique<bounce::BackgroundBake>(scene_, folder, std::max(cores - 1, 1));
-    std::fprintf(stderr, "bounce-view: re-baking %s (preview first)\n",
-                 folder.empty() ? "in memory: the scene has edits the file has not"
-                                : ("into " + folder.string()).c_str());
-  }
-
-  // Draws with a pass of the re-bake as soon as it is done: the preview, then the final bake.
-  void takeRebakedPass() {
-    if (!rebake_) return;
-    std::optional<bounce::BakePass> pass = rebake_->takeFinished();
-    if (!pass) return;
-    const bool hadBake = renderer_.hasBake();
-    bake_ = std::move(pass->bake);
-    renderer_.setBake(*bake_);
-    if (!hadBake && renderer_.settings().mode == bounce::RenderMode::Direct)
-      setMode(bounce::RenderMode::Full);
-    bakeDir_ = pass->writtenTo;
-    bakeLines_ = bounce::bakeFactLines(bounce::bakeFacts(*bake_, bakeDir_));
-    if (bakeDir_.empty())
-      bakeLines_.front() =
-          pass->name == "preview"
-              ? "preview (in memory; the final bake follows)"
-              : "final bake (in memory only: the scene has edits the file has not)";
-    bakeNotes_ = {"re-baked in the viewer: " + pass->name +
-                  (pass->name == "final" && bakeDir_.empty() ? " (in memory only)" : "")};
-    bakeStale_ = false;
-    std::fprintf(stderr, "bounce-view: drawing the re-bake's %s%s%s\n", pass->name.c_str(),
-                 bakeDir_.empty() ? "" : ", written to ", bakeDir_.c_str());
-  }
-
-  // The modes this bake allows, in the order M steps through them.
-  std::vector<bounce::RenderMode> availableModes() const {
-    std::vector<bounce::RenderMode> modes;
-    for (const std::string& name : bounce::renderModeNames()) {
-      const bounce::RenderMode mode = *bounce::parseRenderMode(name);
-      if (bounce::renderModeNeedsBake(mode) && !renderer_.hasBake()) continue;
-      if (bounce::renderModeNeedsVpls(mode) && !renderer_.hasVpls()) continue;
-      if (bounce::renderModeNeedsErrorMap(mode) && !renderer_.hasErrorMap()) continue;
-      modes.push_back(mode);
-    }
-    return modes;
-  }
-
-  void handleInput(float dt) {
-    const bool panelHasKeys = panel_ && panelShown_ && panel_->wantsKeyboard();
-    const bool panelHasMouse = panel_ && panelShown_ && panel_->wantsMouse();
-    for (const Key key : window_.pressedKeys()) {
-      if (panelHasKeys) break;
-      if (key == Key::H && panel_) panelShown_ = !panelShown_;
-      if (key == Key::Escape) window_.requestClose();
-      if (key == Key::Tab) select((cameraIndex_ + 1) % cameras_.size());
-      if (key >= Key::Digit1 && key <= Key::Digit9) {
-        const auto i =
-            static_cast<std::size_t>(static_cast<int>(key) - static_cast<int>(Key::Digit1));
-        if (i < cameras_.size()) select(i);
-      }
-      if (key == Key::Plus) speed_ *= 1.5f;
-      if (key == Key::Minus) speed_ /= 1.5f;
-      if (key == Key::F12) saveRequested_ = true;
-      if (key == Key::LeftBracket) exposure_ -= 0.5f;
-      if (key == Key::RightBracket) exposure_ += 0.5f;
-      if (key == Key::M) nextMode();
-      if (key == Key::C) toggleCharts();
-      if (key == Key::G) selectNextObject();
-      if (key >= Key::F1 && key <= Key::F4) {
-        const auto slot =
-            static_cast<std::size_t>(static_cast<int>(key) - static_cast<int>(Key::F1));
-        if (window_.isDown(Key::LeftShift))
-          saveBookmark(slot);
-        else if (bookmarks_[slot])
-          goToBookmark(slot);
-        else
-          std::fprintf(stderr, "bounce-view: bookmark %zu is empty (Shift+F%zu saves it)\n",
-                       slot + 1, slot + 1);
-      }
-    }
-    speed_ *= std::pow(1.25f, static_cast<float>(window_.scrolled()));
-    const auto axis = [&](Key plus, Key minus) {
-      return (window_.isDown(plus) ? 1.0f : 0.0f) - (window_.isDown(minus) ? 1.0f : 0.0f);
-    };
-    const glm::vec3 direction(axis(Key::D, Key::A), axis(Key::E, Key::Q), axis(Key::W, Key::S));
-    const float boost = window_.isDown(Key::LeftShift) ? 4.0f : 1.0f;
-    fly_->move(direction * speed_ * boost * dt);
-    moveObject(glm::vec3(axis(Key::L, Key::J), axis(Key::O, Key::U), axis(Key::I, Key::K)) *
-               objectSpeed_ * boost * dt);
-    const glm::dvec2 cursor = window_.cursorPosition();
-    const bool looking = !panelHasMouse && (window_.isDown(bounce::gl::MouseButton::Left) ||
-                                            window_.isDown(bounce::gl::MouseButton::Right));
-    if (looking && cursor_) {
-      const glm::dvec2 delta = cursor - *cursor_;
-      constexpr float kRadiansPerPixel = 0.003f;
-      fly_->turn(-static_cast<float>(delta.x) * kRadiansPerPixel,
-                 -static_cast<float>(delta.y) * kRadiansPerPixel);
-    }
-    cursor_ = cursor;
-  }
-
-  // Camera bookmarks (F1..F4 go, Shift+F1..F4 save; the panel; the script's bookmark): the fly
-  // camera as it stands (position, heading, lens), for this session; going back restores that
-  // state itself, so the frame is the one drawn when it was saved.
-  void saveBookmark(std::size_t slot) {
-    bookmarks_.at(slot) = *fly_;
-    const glm::vec3 at = bookmarks_[slot]->position();
-    std::fprintf(stderr, "bounce-view: bookmark %zu saved at (%.3f, %.3f, %.3f) m\n", slot + 1,
-                 at.x, at.y, at.z);
-  }
-
-  void goToBookmark(std::size_t slot) {
-    if (!bookmarks_.at(slot))
-      throw std::runtime_error("bookmark " + std::to_string(slot + 1) + " is empty");
-    fly_ = *bookmarks_[slot];
-  }
-
-  // The VPLs of the bake's first `paths` light paths at clamp distance r (panel, script).
-  void selectVpls(uint64_t paths, float clampDistance) {
-    renderer_.setVplSelection(paths, clampDistance);
-    const bounce::ForwardRenderer::VplSelection s = renderer_.vplSelection();
-    std::fprintf(
-        stderr, "bounce-view: VPLs of %llu of %llu light paths (%zu VPLs), clamp r = %.4g m\n",
-        static_cast<unsigned long long>(s.paths), static_cast<unsigned long long>(s.totalPaths),
-        s.vplCount, static_cast<double>(s.clampDistance));
-  }
-
-  void selectNextObject() {
-    selection_.selectNext();
-    if (!selection_.empty())
-      std::fprintf(stderr, "bounce-view: moving '%s'\n", selection_.name(scene_).c_str());
-  }
-
-  // `screen`: (right, up, away from the camera) in metres, moved along the world axes nearest
-  // to the camera's right, up and forward.
-  void moveObject(const glm::vec3& screen) {
-    if (selection_.empty() || screen == glm::vec3(0.0f)) return;
-    const bounce::Camera camera = fly_->camera();
-    const glm::vec3 right = glm::vec3(camera.cameraToWorld[0]);
-    const glm::vec3 delta = bounce::nearestAxis(right) * screen.x +
-                            bounce::nearestAxis(camera.up()) * screen.y +
-                            bounce::nearestAxis(camera.forward()) * screen.z;
-    for (const std::size_t i : selection_.move(scene_, delta))
-      renderer_.setInstanceTransform(i, scene_.instances[i].transform);
-  }
-
-  // The area-light cube budget, logged whenever its choice changes (the camera or a dynamic
-  // instance moved): which lights have a cube, what the rest bring.
-  void reportAreaShadowChoice() {
-    const bounce::ShadowChoice& choice = renderer_.areaShadowChoice();
-    if (renderer_.areaShadowSlots() == 0 ||
-        (choice.lights == reportedLights_ && choice.unshadowed == reportedUnshadowed_))
-      return;
-    reportedLights_ = choice.lights;
-    reportedUnshadowed_ = choice.unshadowed;
-    std::fprintf(stderr, "bounce-view: %s\n",
-                 bounce::describeAreaShadowChoice(choice, renderer_.areaShadowSlots()).c_str());
-  }
-
-  // The punctual lights' maps, logged whenever a light gains or loses one (a kind with more
-  // lights than maps gives them to those that bring the most to the view).
-  void reportPunctualShadowMaps() {
-    const std::span<const int> slots = renderer_.punctualShadowSlots();
-    std::vector<bool> now;
-    for (const int slot : slots) now.push_back(slot >= 0);
-    // Logged on every change, but not at the start when every light has a map.
-    const bool allMapped = std::find(now.begin(), now.end(), false) == now.end();
-    if (now == reportedMaps_ || (reportedMaps_.empty() && allMapped)) return;
-    reportedMaps_ = now;
-    std::fprintf(stderr, "bounce-view: %s\n",
-                 bounce::describePunctualShadowMaps(scene_.lights, slots).c_str());
-  }
-
-  void draw() {
-    const glm::ivec2 size = glm::max(window_.framebufferSize(), glm::ivec2(1));
-    if (!target_ || target_->width() != size.x || target_->height() != size.y)
-      target_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y, options_.msaa);
-    // The light cut-off follows the exposure shown (render/light_cutoff.h).
-    const float floor = bounce::irradianceFloorForExposure(exposure_);
-    if (renderer_.settings().lightCulling.irradianceFloor != floor) {
-      bounce::LightCullingSettings culling = renderer_.settings().lightCulling;
-      culling.irradianceFloor = floor;
-      renderer_.setLightCulling(culling);
-    }
-    renderer_.render(fly_->camera(), *target_);
-    reportAreaShadowChoice();
-    reportPunctualShadowMaps();
-    if (comparing()) {
-      if (!compared_ || compared_->width() != size.x || compared_->height() != size.y)
-        compared_ = std::make_unique<bounce::gl::RenderTarget>(size.x, size.y);
-      compare_.draw(target_->color(), *compared_, referenceView_);
-    }
-    bounce::gl::bindDefaultFramebuffer(size.x, size.y);
-    const bounce::gl::GpuPassTimers::Scope timed(&renderer_.gpuTimers(), "tone map");
-    tonemap_.draw(shown().color(), exposure_, costDisplay());
-  }
-
-  // The cost view's count and scale (none in the other modes): --cost-count, --cost-max, else
-  // 1, 2 or 5 x 10^k at or above what a pixel can reach of it (lights: all of them; VPLs: the
-  // largest lightcut; taps: 64, four 16-tap lights).
-  std::optional<bounce::TonemapPass::CostDisplay> costDisplay() const {
-    if (renderer_.settings().mode != bounce::RenderMode::Cost) return std::nullopt;
-    const bounce::CostCount count = *bounce::parseCostCount(options_.costCount);  // CLI11 checked
-    float bound = 64.0f;
-    if (count == bounce::CostCount::Lights)
-      bound = static_cast<float>(scene_.lights.size() + renderer_.areaLightCount());
-    if (count == bounce::CostCount::Vpls) {
-      // The largest lightcut: what a dynamic pixel evaluates at most (docs/vpl.md).
-      bound = 1.0f;
-      const bounce::VplLightCuts& cuts = renderer_.vpls().cuts();
-      for (std::size_t cell = 0; renderer_.hasVpls() && cell < cuts.cellEntries.size(); ++cell)
-        bound = std::max(bound, static_cast<float>(cuts.lightsEvaluated(cell)));
-    }
-    return bounce::TonemapPass::CostDisplay{count,
-                                            options_.costMax.value_or(bounce::costScaleMax(bound))};
-  }
-
-  bool comparing() const {
-    return referenceView_ != bounce::ReferenceView::Off && compare_.hasReference();
-  }
-  // What the window shows and the captures hold: the frame, or the frame beside the reference
-  // (both radiance, tone-mapped alike).
-  const bounce::gl::RenderTarget& shown() const { return comparing() ? *compared_ : *target_; }
-
-  // A reference EXR (bounce-trace's, of the same camera and size) to compare the frame with;
-  // the split view unless another comparison is on.
-  void loadReference(const std::string& file) {
-    const bounce::Image reference = bounce::readExr(file);
-    compare_.setReference(reference);
-    referenceFile_ = file;
-    if (referenceView_ == bounce::ReferenceView::Off) referenceView_ = bounce::ReferenceView::Split;
-    const glm::ivec2 size = window_.framebufferSize();
-    std::fprintf(stderr, "bounce-view: reference %s, %dx%d (%s)\n", file.c_str(), reference.width,
-                 reference.height, std::string(bounce::referenceViewName(referenceView_)).c_str());
-    if (reference.width != size.x || reference.height != size.y)
-      std::fprintf(stderr,
-                   "bounce-view: warning: the reference is %dx%d, the frame %dx%d: it is "
-                   "stretched (open the viewer with --width %d --height %d to compare pixels)\n",
-                   reference.width, reference.height, size.x, size.y, reference.width,
-                   reference.height);
-  }
-
-  void setReferenceView(bounce::ReferenceView view) {
-    if (view != bounce::ReferenceView::Off && !compare_.hasReference())
-      throw std::runtime_error(
-          "no reference to compare with (--reference FILE, the panel, or "
-          "the script's reference FILE)");
-    referenceView_ = view;
-  }
-
-  void saveScreenshot() {
-    saveRequested_ = false;
-    const bounce::Image radiance = shown().read();
-    const std::string stem = "bounce-view-" + std::to_string(++screenshots_);
-    try {
-      save(radiance, stem + ".png", exposure_);
-      save(radiance, stem + ".exr", exposure_);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "bounce-view: error: %s\n", e.what());  // keep viewing
-    }
-  }
-
-  Options options_;
-  bounce::Scene scene_;
-  std::optional<bounce::Bake> bake_;  // before renderer_, which reads it on construction
-  std::filesystem::path bakeDir_;
-  std::vector<std::string> bakeNotes_;
-  std::vector<uint32_t> reportedLights_;  // the area-light cube choice last logged
-  std::size_t reportedUnshadowed_ = static_cast<std::size_t>(-1);
-  std::vector<bool> reportedMaps_;  // which punctual lights had a map when last logged
-  bounce::gl::Window window_;
-  bounce::ForwardRenderer renderer_;
-  bounce::TonemapPass tonemap_;
-  bounce::ReferenceComparePass compare_;
-  bounce::DynamicSelection selection_;
-  float objectSpeed_ = 1.0f;  // m/s
-  std::unique_ptr<bounce::gl::RenderTarget> target_;
-  std::unique_ptr<bounce::gl::RenderTarget> compared_;  // the frame beside the reference
-  bounce::ReferenceView referenceView_ = bounce::ReferenceView::Off;
-  std::string referenceFile_;
-  std::vector<bounce::Camera> cameras_;
-  std::size_t cameraIndex_ = 0;
-  std::optional<bounce::FlyCamera> fly_;
-  std::optional<glm::dvec2> cursor_;
-  float speed_ = 1.0f;
-  float exposure_ = 0.0f;
-  bool saveRequested_ = false;
-  int screenshots_ = 0;
-  bounce::RenderMode modeBeforeCharts_ = bounce::RenderMode::Full;
-  std::optional<bounce::gl::PanelLayer> panel_;  // none when ImGui cannot start
-  bool panelShown_ = false;
-  bounce::FrameTimes times_;
-  std::vector<bounce::TimeSummary> passTimes_, cpuTimes_;  // the last 60 frames, per pass
-  std::vector<std::string> bakeLines_;
-  bool bakeStale_ = false;     // the bake (or the one on disk) does not match scene_
-  bool lightsEdited_ = false;  // scene_ differs from the file: a re-bake is not written
-  std::unique_ptr<bounce::BackgroundBake> rebake_;  // before the script state, after bake_
-  std::array<std::optional<bounce::FlyCamera>, bounce::kScriptBookmarks> bookmarks_;
-  std::size_t scriptAt_ = 0;  // the next command of options_.script
-  int scriptFrames_ = 0;      // frames drawn of the current `frames N`
-};
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
-  CLI::App app{
-      "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
-      "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
-      "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
-      "exposure, Esc quits. M cycles the modes (without a bake direct and cascades), C toggles the "
-      "chart view. Dynamic "
-      "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
-      "F1-F4 go to a camera bookmark, Shift+F1-F4 save one. H shows or hides the panel.",
-      "bounce-view"};
-  app.add_option("scene", options.scene, "scene file (.gltf, .glb, .obj, or a .json wrapper)")
-      ->required();
-  app.add_option("--camera", options.camera, "start at this camera (default: the first)");
-  app.add_option("--width", options.width, "window width")->check(CLI::Range(16, 16384));
-  app.add_option("--height", options.height, "window height")->check(CLI::Range(16, 16384));
-  app.add_option("--exposure", options.exposure, "exposure in EV (default 0)");
+// --frames, --screenshot, --window-shot and --script: what is drawn before the viewer exits and
+// what it saves.
+void addCaptureOptions(CLI::App& app, bounce::ViewerOptions& options) {
   app.add_option("--frames", options.frames, "render this many frames, then exit")
       ->check(CLI::PositiveNumber);
   // Captures are written by extension: .png (tone-mapped or display values) or .exr.
@@ -785,15 +45,10 @@ int main(int argc, char** argv) {
                  "light, rebake, wait-bake, cancel-bake, bookmark, vpl-paths and vpl-clamp "
                  "commands, one per line (engine/cli/viewer_script.h); exits after the last")
       ->check(CLI::ExistingFile);
-  app.add_option("--bake", options.bake,
-                 "bake folder (bounce-bake's output) for this scene: adds its baked light "
-                 "(default: <scene>.bake beside the scene, else the build step's bake of a "
-                 "content scene, when one exists and matches the scene)");
-  app.add_option("--msaa", options.msaa,
-                 "samples per pixel (multisample anti-aliasing, averaged in linear radiance "
-                 "before tone mapping); 1 turns it off (default 4)")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
+}
+
+// --reference and --compare: a reference EXR beside the frame.
+void addReferenceOptions(CLI::App& app, bounce::ViewerOptions& options) {
   app.add_option("--reference", options.reference,
                  "a reference EXR of the same camera (bounce-trace --out FILE.exr at the window's "
                  "size) shown beside the frame, both through the same exposure and tone mapper")
@@ -804,68 +59,58 @@ int main(int argc, char** argv) {
                  "at 50%)")
       ->check(CLI::IsMember({"split", "difference"}))
       ->needs("--reference");
-  app.add_flag("--no-bake", options.noBake, "draw without baked light, even where a bake exists")
-      ->excludes("--bake");
-  app.add_option("--mode", options.mode,
-                 "start in this mode: full (direct + baked indirect; the default with a bake), "
-                 "direct (the default without), indirect, lightmap (E/pi), charts, vpl (indirect "
-                 "light from the bake's VPLs), vpl-clamp (VPL light and what its clamp removed), "
-                 "error (each texel's estimated relative error in false colour), validity, "
-                 "texel-density (lightmap texels per metre against the bake's texel size), "
-                 "cascades (the directional light's shadow cascade index), cost (the lights, VPLs "
-                 "or shadow-map taps each pixel evaluated, --cost-count, in false colour with a "
-                 "legend bar)")
-      ->check(CLI::IsMember(bounce::renderModeNames()));
-  app.add_option("--cost-count", options.costCount,
-                 "mode cost: the count shown, lights, vpls or taps (default vpls)")
-      ->check(CLI::IsMember({"lights", "vpls", "taps"}));
-  app.add_option("--cost-max", options.costMax,
-                 "mode cost: the count at the red end of the scale (default: 1, 2 or 5 x 10^k at "
-                 "or above the lights in the scene, the largest VPL lightcut, or 64 taps)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--dynamic-vpls", options.dynamicVpls,
-                 "VPLs when a dynamic instance moves: retrace (default: the light paths traced "
-                 "again with it in place) or cut (the bake's paths cut where it blocks them; "
-                 "cheaper, misses the light it reflects)")
-      ->check(CLI::IsMember({"retrace", "cut"}));
+}
+
+// The script read, and its cameras checked, before a window opens.
+void readScript(bounce::ViewerOptions& options, const bounce::Scene& scene) {
+  if (options.scriptFile.empty()) return;
+  options.script = bounce::readViewerScript(options.scriptFile, bounce::renderModeNames());
+  for (const bounce::ScriptCommand& c : options.script)
+    if (c.kind == bounce::ScriptCommand::Kind::Camera) try {
+        (void)scene.findCamera(c.text);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(options.scriptFile + ": line " + std::to_string(c.line) + ": " +
+                                 e.what());
+      }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bounce::ViewerOptions options;
+  CLI::App app{
+      "View a scene with the forward renderer in a window (OpenGL 3.3 core).\n"
+      "W/A/S/D move, Q/E down/up, Shift faster, drag the mouse to look, +/- or the "
+      "wheel change speed, Tab or 1-9 pick a camera, F12 saves PNG + EXR, [ and ] change the "
+      "exposure, Esc quits. M cycles the modes (without a bake direct and cascades), C toggles the "
+      "chart view. Dynamic "
+      "objects: G selects the next, J/L, I/K, U/O move it left/right, away/towards, down/up. "
+      "F1-F4 go to a camera bookmark, Shift+F1-F4 save one. H shows or hides the panel.",
+      "bounce-view"};
+  bounce::SharedOptions& shared = options.shared;
+  shared.width = 1280;
+  shared.height = 720;
+  bounce::addSceneOption(app, shared);
+  bounce::addCameraOption(app, shared);
+  bounce::addSizeOptions(app, shared, 16, "window", "default 1280x720");
+  bounce::addExposureOption(app, shared);
+  addCaptureOptions(app, options);
+  bounce::addBakeOptions(app, shared);
+  bounce::addMsaaOption(app, shared);
+  app.add_flag("--no-panel", options.noPanel, "start with the panel hidden (H shows it)");
+  addReferenceOptions(app, options);
+  bounce::addModeOption(app, shared, bounce::renderModeNames(), "start in this mode");
+  bounce::addCostViewOptions(app, shared,
+                             "1, 2 or 5 x 10^k at or above the lights in the scene, the largest "
+                             "VPL lightcut, or 64 taps");
+  bounce::addDynamicVplsOption(app, shared);
   bounce::addMoveOption(app, options.moves);
   CLI11_PARSE(app, argc, argv);
   try {
-    bounce::Scene scene = bounce::loadScene(options.scene);
-    if (!options.scriptFile.empty()) {
-      options.script = bounce::readViewerScript(options.scriptFile, bounce::renderModeNames());
-      for (const bounce::ScriptCommand& c : options.script)  // before a window opens
-        if (c.kind == bounce::ScriptCommand::Kind::Camera) try {
-            (void)scene.findCamera(c.text);
-          } catch (const std::exception& e) {
-            throw std::runtime_error(options.scriptFile + ": line " + std::to_string(c.line) +
-                                     ": " + e.what());
-          }
-    }
+    bounce::Scene scene = bounce::loadScene(options.shared.scene);
+    readScript(options, scene);
     bounce::moveInstances(scene, bounce::parseInstanceMoves(options.moves));
-    LoadedBake loaded;
-    std::optional<bounce::Bake>& bake = loaded.bake;
-    if (!options.bake.empty()) {
-      bake = bounce::readBake(options.bake, scene);
-      loaded.dir = options.bake;
-    } else if (!options.noBake) {
-      bounce::BakeSearch found =
-          bounce::findSceneBake(options.scene, scene, bounce::toolDirectory());
-      for (const std::string& note : found.notes)
-        std::fprintf(stderr, "bounce-view: %s\n", note.c_str());
-      bake = std::move(found.bake);
-      loaded.dir = found.dir;
-      loaded.notes = found.notes;
-      loaded.stale = found.stale();
-    }
-    const bounce::RenderMode mode =
-        options.mode.empty() ? (bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct)
-                             : *bounce::parseRenderMode(options.mode);
-    if (bounce::renderModeNeedsBake(mode) && !bake)
-      throw std::runtime_error("--mode " + options.mode + " draws baked light: give --bake DIR" +
-                               (options.noBake ? " (and no --no-bake)" : ""));
-    Viewer viewer(options, std::move(scene), std::move(loaded), mode);
-    return viewer.run();
+    return bounce::runViewer(options, std::move(scene));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bounce-view: error: %s\n", e.what());
     return 1;

@@ -54,23 +54,8 @@ std::optional<Light> editLight(std::size_t index, const Light& light) {
   return changed ? std::optional<Light>(edited) : std::nullopt;
 }
 
-}  // namespace
-
-void FrameTimes::add(double cpuMs, std::optional<double> gpuMs) {
-  const auto push = [](std::vector<float>& v, double x) {
-    if (v.size() == kFrames) v.erase(v.begin());
-    v.push_back(static_cast<float>(x));
-  };
-  push(cpu, cpuMs);
-  if (gpuMs) push(gpu, *gpuMs);
-}
-
-ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
-  ViewerPanelRequests requests;
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("bounce-view (H hides)");
-
+// What the bake is, whether it is stale, and the re-bake's button and progress.
+void bakeSection(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (ImGui::CollapsingHeader("Bake", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (view.bakeLines.empty()) ImGui::TextUnformatted("no bake: direct light only");
     for (const std::string& line : view.bakeLines) ImGui::TextWrapped("%s", line.c_str());
@@ -89,7 +74,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
         requests.rebake = true;
     }
   }
+}
 
+// The mode, the cost view's scale, the exposure, the samples per pixel and a screenshot.
+void viewSection(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
     const std::string current(renderModeName(view.mode));
     if (ImGui::BeginCombo("mode (M)", current.c_str())) {
@@ -106,7 +94,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     ImGui::Text("%d samples per pixel (--msaa)", view.msaa);
     if (ImGui::Button("screenshot (F12)")) requests.screenshot = true;
   }
+}
 
+// The scene's cameras and the camera bookmarks (F1..F4).
+void cameraSections(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (ImGui::CollapsingHeader("Cameras", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (std::size_t i = 0; i < view.cameras.size(); ++i)
       if (ImGui::Selectable(view.cameras[i].c_str(), i == view.camera)) requests.camera = i;
@@ -128,7 +119,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
       ImGui::PopID();
     }
   }
+}
 
+// The bake's VPLs as drawn: the first N light paths and the clamp distance.
+void vplSection(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (view.vpls && ImGui::CollapsingHeader("VPLs")) {
     const PanelVpls& v = *view.vpls;
     int paths = static_cast<int>(v.paths);
@@ -151,7 +145,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     ImGui::Text("r = %.4f m", static_cast<double>(v.bakeClampDistance));
     if (changed) requests.vplSelection = {static_cast<uint64_t>(std::max(paths, 1)), clamp};
   }
+}
 
+// A reference EXR to load and how the frame is shown beside it.
+void referenceSection(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (ImGui::CollapsingHeader("Reference")) {
     // The path being typed lives across frames (the panel itself keeps no other state).
     static std::array<char, 1024> path{};
@@ -170,7 +167,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
           "blue darker than the reference (full at 50%%)");
     }
   }
+}
 
+// The dynamic object the keys move, and the punctual lights' fields.
+void sceneSections(const ViewerPanelView& view, ViewerPanelRequests& requests) {
   if (view.objectCount > 0 && ImGui::CollapsingHeader("Dynamic objects")) {
     ImGui::TextWrapped(
         "%s", view.object.empty() ? "none selected" : ("moving '" + view.object + "'").c_str());
@@ -183,7 +183,10 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
       if (std::optional<Light> edited = editLight(i, (*view.lights)[i]))
         requests.lightEdits.emplace_back(i, *edited);
   }
+}
 
+// CPU and GPU frame times and the last 60 frames per pass.
+void frameTimeSection(const ViewerPanelView& view) {
   if (view.times && ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
     plot("CPU", view.times->cpu);
     plot("GPU", view.times->gpu);
@@ -196,6 +199,32 @@ ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
     table("GPU per pass, ms (mean, p95; last 60 frames)", view.passTimes);
     table("CPU, ms (frame: build + submit, no wait)", view.cpuTimes);
   }
+}
+
+}  // namespace
+
+void FrameTimes::add(double cpuMs, std::optional<double> gpuMs) {
+  const auto push = [](std::vector<float>& v, double x) {
+    if (v.size() == kFrames) v.erase(v.begin());
+    v.push_back(static_cast<float>(x));
+  };
+  push(cpu, cpuMs);
+  if (gpuMs) push(gpu, *gpuMs);
+}
+
+ViewerPanelRequests drawViewerPanel(const ViewerPanelView& view) {
+  ViewerPanelRequests requests;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("bounce-view (H hides)");
+
+  bakeSection(view, requests);
+  viewSection(view, requests);
+  cameraSections(view, requests);
+  vplSection(view, requests);
+  referenceSection(view, requests);
+  sceneSections(view, requests);
+  frameTimeSection(view);
   ImGui::End();
   return requests;
 }

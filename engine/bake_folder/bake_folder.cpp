@@ -20,15 +20,15 @@
 #include <vector>
 
 #include "bake_folder/bake_input_file.h"
-#include "bake_folder/byte_stream.h"
 #include "bake_folder/manifest_rules.h"
 #include "bake_folder/probe_file.h"
 #include "bake_folder/visibility_file.h"
 #include "bake_folder/vpl_file.h"
-#include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
+#include "io/byte_stream.h"
+#include "io/load_error.h"
 #include "scene/area_lights.h"
-#include "scene/load_error.h"
 
 namespace bounce {
 namespace fs = std::filesystem;

@@ -34,7 +34,7 @@
 #include "bake_folder/scene_hash.h"
 #include "bake_folder/vpl.h"
 #include "image/image.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 namespace bounce {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 

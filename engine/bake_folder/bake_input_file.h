@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "image/regular_file.h"
+#include "io/regular_file.h"
 
 namespace bounce {
 

@@ -1,6 +1,6 @@
 #include "bake_folder/bake_manifest.h"
 
-#include "bake_folder/byte_stream.h"
+#include "io/byte_stream.h"
 
 #include <cinttypes>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/json_fields.h"
-#include "scene/gltf_schema.h"  // checkJsonDepth
-#include "scene/load_error.h"
+#include "io/json_depth.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -13,7 +13,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 

@@ -8,7 +8,7 @@
 #include "bake_folder/bake_settings.h"
 #include "bake_folder/vpl_clamp.h"
 #include "image/luminance.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

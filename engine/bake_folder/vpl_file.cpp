@@ -8,9 +8,9 @@
 
 #include "bake_folder/bake_input_file.h"
 #include "bake_folder/bake_manifest.h"  // the ranges
-#include "bake_folder/byte_stream.h"
-#include "image/atomic_file.h"
-#include "scene/load_error.h"
+#include "io/atomic_file.h"
+#include "io/byte_stream.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

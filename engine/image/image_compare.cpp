@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "image/regular_file.h"
+#include "io/regular_file.h"
 
 namespace bounce {
 namespace {

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "image/atomic_file.h"
-#include "image/regular_file.h"
 #include "image/tonemap.h"
+#include "io/atomic_file.h"
+#include "io/regular_file.h"
 
 namespace bounce {
 namespace {

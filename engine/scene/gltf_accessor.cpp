@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -17,11 +17,11 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "image/regular_file.h"
+#include "io/load_error.h"
+#include "io/regular_file.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_schema.h"
 #include "scene/input_limits.h"
-#include "scene/load_error.h"
 #include "scene/loaders.h"
 #include "scene/mesh_normals.h"
 #include "scene/texture_decode.h"

@@ -11,11 +11,8 @@
 
 namespace bounce {
 
-// Throws LoadError when `json` nests arrays/objects deeper than kMaxJsonDepth
-// (input_limits.h). Scans bytes only (strings skipped), so it is safe on any input.
-void checkJsonDepth(const std::filesystem::path& file, std::string_view json);
-
-// Throws LoadError on malformed JSON or on a property of the wrong type or range.
+// Throws LoadError on malformed JSON, on nesting deeper than kMaxJsonDepth (io/json_depth.h),
+// or on a property of the wrong type or range.
 void checkGltfSchema(const std::filesystem::path& file, std::string_view json);
 
 }  // namespace bounce

@@ -39,8 +39,4 @@ inline constexpr double kMaxLightmapScale = 64.0;
 inline constexpr int kMaxTextureSide = 16384;
 inline constexpr std::size_t kMaxTextureTexels = std::size_t{1} << 26;
 
-// JSON nesting depth of a glTF file (arrays and objects): checked before the parser, whose
-// recursion would overflow the stack on deeper files. glTF itself needs ~8 levels.
-inline constexpr int kMaxJsonDepth = 64;
-
 }  // namespace bounce

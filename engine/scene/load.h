@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 #include "scene/scene.h"
 
 namespace bounce {

@@ -17,10 +17,10 @@
 #include <string>
 #include <string_view>
 
-#include "image/regular_file.h"
+#include "io/load_error.h"
+#include "io/regular_file.h"
 #include "scene/file_name_case.h"
 #include "scene/input_limits.h"
-#include "scene/load_error.h"
 #include "scene/loaders.h"
 #include "scene/texture_decode.h"
 

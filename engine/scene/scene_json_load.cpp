@@ -29,8 +29,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "image/regular_file.h"
-#include "scene/gltf_schema.h"
+#include "io/json_depth.h"
+#include "io/regular_file.h"
 #include "scene/input_limits.h"
 #include "scene/load.h"
 #include "scene/loaders.h"

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "image/regular_file.h"
+#include "io/load_error.h"
+#include "io/regular_file.h"
 #include "scene/input_limits.h"
-#include "scene/load_error.h"
 
 namespace bounce {
 

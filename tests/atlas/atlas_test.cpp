@@ -17,6 +17,7 @@
 #include "layout_checks.h"
 #include "scene/crossing_cuts.h"
 #include "scene/load.h"
+#include "scene/static_scene.h"
 
 namespace bounce::test {
 namespace {
@@ -255,6 +256,28 @@ TEST(AtlasInstances, SmallObjectsAndScaleZeroTakeTheVplsLight) {
   for (const std::string& note : atlas.notes)
     noted |= note.starts_with("1 static instances cover under 2 texels each");
   EXPECT_TRUE(noted);
+}
+
+// The atlas reports the static area the VPL clamp's r = sqrt(A/(pi N)) uses
+// (scene/static_scene.h): every static instance, the one at lightmapScale 0 too (the VPLs land
+// on it though it has no region), no dynamic one. A = 1 + 2 m² (a unit floor and a quad scaled
+// by sqrt 2), the 4 m² dynamic quad left out.
+TEST(AtlasInstances, StaticAreaIsTheVplClampsArea) {
+  Scene scene;
+  const uint32_t quad = addUnitQuadMesh(scene);
+  addInstance(scene, quad, glm::mat4(1));
+  addInstance(scene, quad,
+              glm::scale(glm::translate(glm::mat4(1), glm::vec3(-4, 0, 0)),
+                         glm::vec3(std::sqrt(2.0f), std::sqrt(2.0f), 1.0f)));
+  addInstance(scene, quad,
+              glm::scale(glm::translate(glm::mat4(1), glm::vec3(4, 0, 0)), glm::vec3(2, 2, 1)),
+              Mobility::Dynamic);
+  scene.instances[1].lightmapScale = 0.0f;
+  const Atlas atlas = buildAtlas(scene, AtlasSettings{});
+  EXPECT_EQ(atlas.vplLitInstances, (std::vector<uint32_t>{1}));
+  EXPECT_NEAR(atlas.staticArea, 3.0, 3.0 * 1e-6);  // float positions: about 1e-7 relative
+  EXPECT_EQ(atlas.staticArea, staticSurfaceArea(scene));
+  EXPECT_NEAR(atlas.weightedArea, 1.0, 1e-6);  // the texel density's area: the floor alone
 }
 
 // Curved charts (least-squares conformal maps): angles nearly kept, the whole chart at the

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "bake/tile_scheduler.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -23,7 +23,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_clamp.h"
 #include "image/image_io.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace fs = std::filesystem;
 using namespace bounce;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/bake_settings.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 using namespace bounce;
 

@@ -14,8 +14,8 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_input_file.h"
 #include "bake_folder/probe_file.h"
-#include "image/atomic_file.h"
-#include "scene/load_error.h"
+#include "io/atomic_file.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_file.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

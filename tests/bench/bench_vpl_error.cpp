@@ -30,11 +30,11 @@
 #include "generated_vpl_bake.h"
 #include "gl/context.h"
 #include "gl/render_target.h"
-#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
 #include "indirect_accuracy.h"
 #include "indirect_reference.h"
+#include "io/atomic_file.h"
 #include "scene/load.h"
 
 namespace fs = std::filesystem;

@@ -14,6 +14,7 @@
 
 #include "ray/ray_kernel.h"
 #include "scene/load.h"
+#include "scene/static_scene.h"
 #include "vpl/vpl_generate.h"
 #include "vpl/vpl_retrace.h"
 #include "vpl_runtime/vpl_occlusion.h"

@@ -9,6 +9,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl_clamp.h"
 #include "ray/ray_kernel.h"
+#include "scene/static_scene.h"
 #include "scene/world_geometry.h"
 #include "vpl/vpl_generate.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli/viewer_script.h"
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 namespace {

@@ -16,8 +16,8 @@
 #include "bake/tile_grid.h"
 #include "bake/tile_payload.h"
 #include "fuzz_input_file.h"
+#include "io/load_error.h"
 #include "pipeline/tile_journal.h"
-#include "scene/load_error.h"
 
 namespace {
 

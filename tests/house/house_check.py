@@ -1,12 +1,15 @@
 #!/usr/bin/python3
 """The house's written rules, checked on the source tree (issue 29).
 
-  house_check.py ROOT CHECK   runs one check (modules, readme, docs, tables, headers), exit 1 on
-                              a breach with one line per breach naming the file
+  house_check.py ROOT CHECK   runs one check (modules, readme, docs, tables, headers,
+                              functions), exit 1 on a breach with one line per breach naming
+                              the file
   house_check.py ROOT report  prints the figures: module edges, header include counts
 
-A module is a folder directly under engine/ or baker/ holding sources; a header's count is the
-number of distinct project headers it reaches through "..." includes, itself left out.
+A module is a folder directly under engine/ or baker/ holding sources (engine/io, generic file
+I/O, includes no other); a header's count is the number of distinct project headers it reaches
+through "..." includes, itself left out. A function's length is its lines from the first line of
+its signature to its closing brace, blank and comment lines included.
 """
 import os
 import re
@@ -29,6 +32,10 @@ HEADERS_OVER_THE_LIMIT = {
     "engine/render/vpl_pass.h": 18,
     "engine/render/vpl_visibility_probe.h": 16,
 }
+# No function in the programs and the bake pipeline runs longer than this many lines (issue 29,
+# measurement 3): they read as a short list of steps.
+MAX_FUNCTION_LINES = 100
+FUNCTION_FOLDERS = ("engine/apps", "baker/apps", "baker/pipeline")
 # A table cell longer than this is a paragraph in the wrong place.
 MAX_TABLE_CELL = 600
 # engine/ modules that are programs and may use the baker; every other engine module is a library
@@ -36,6 +43,8 @@ MAX_TABLE_CELL = 600
 ENGINE_PROGRAMS = {"engine/apps"}
 # What a module of the baker may never reach: GL and the renderer.
 GL_MODULES = {"engine/gl", "engine/render", "engine/apps"}
+# Modules every other may use and that use no other (generic file I/O): one direction.
+LEAF_MODULES = {"engine/io"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
@@ -96,6 +105,8 @@ def check_modules(root):
                 breaches.append(f"{f}: the engine library {a} includes the baker's {d}")
             if a.startswith("baker/") and b in GL_MODULES:
                 breaches.append(f"{f}: the baker ({a}) includes {d} (GL or the renderer)")
+            if a in LEAF_MODULES:
+                breaches.append(f"{f}: {a} uses no other module, but includes {d}")
     # One direction: no cycle among modules.
     succ = {}
     for a, b in edges:
@@ -221,6 +232,104 @@ def check_headers(root):
     return breaches
 
 
+# C++ functions, found by their braces (no parser): a '{' outside any function body whose text
+# since the last ';', '{' or '}' holds a ')' opens a function, unless that text starts a
+# namespace, class, struct, enum or union. Lambdas and local classes count as part of the
+# function they are in.
+def strip_code(text):
+    """Comments, string and character literals and preprocessor lines blanked (newlines kept)."""
+    out = []
+    i, n = 0, len(text)
+    at_line_start = True
+    while i < n:
+        c = text[i]
+        if at_line_start and c == "#":
+            # a preprocessor line, with its continuations
+            while i < n and text[i] != "\n":
+                if text[i] == "\\" and i + 1 < n and text[i + 1] == "\n":
+                    out.append(" \n"); i += 2; continue
+                out.append(" "); i += 1
+            continue
+        if c == "\n":
+            out.append(c); i += 1; at_line_start = True; continue
+        if c in " \t":
+            out.append(c); i += 1; continue
+        at_line_start = False
+        if text.startswith("//", i):
+            while i < n and text[i] != "\n":
+                out.append(" "); i += 1
+            continue
+        if text.startswith("/*", i):
+            end = text.find("*/", i + 2)
+            end = n if end < 0 else end + 2
+            out.append(re.sub(r"[^\n]", " ", text[i:end])); i = end; continue
+        m = re.match(r'R"([^(\s]*)\(', text[i:i + 20])
+        if m:
+            end = text.find(")" + m.group(1) + '"', i)
+            end = n if end < 0 else end + len(m.group(1)) + 2
+            out.append(re.sub(r"[^\n]", " ", text[i:end])); i = end; continue
+        if c in "\"'":
+            # a digit separator (1'000) is no character literal
+            if c == "'" and i > 0 and text[i - 1].isalnum() and i + 1 < n and text[i + 1].isalnum():
+                out.append(" "); i += 1; continue
+            j = i + 1
+            while j < n and text[j] != c:
+                j += 2 if text[j] == "\\" else 1
+            out.append(re.sub(r"[^\n]", " ", text[i:j + 1])); i = j + 1; continue
+        out.append(c); i += 1
+    return "".join(out)
+
+def functions(text):
+    """(name, first line, last line) of each function body not inside another function."""
+    code = strip_code(text)
+    found = []
+    depth = 0
+    inside = None  # depth at which the current function's body opened
+    header_start = 0
+    for i, c in enumerate(code):
+        if c == "{":
+            if inside is None:
+                header = code[header_start:i]
+                words = header.split()
+                if ")" in header and (not words or words[0] not in (
+                        "namespace", "class", "struct", "enum", "union", "extern")):
+                    head = re.sub(r"^\s*((public|private|protected)\s*:\s*)*", "", header)
+                    first = i - len(header) + (len(header) - len(head))
+                    first += len(head) - len(head.lstrip())
+                    name = re.findall(r"([~\w:]+)\s*\(", head)
+                    found.append([name[0] if name else "?", code.count("\n", 0, first) + 1, None])
+                    inside = depth
+            depth += 1
+            header_start = i + 1
+        elif c == "}":
+            depth -= 1
+            if inside is not None and depth == inside:
+                found[-1][2] = code.count("\n", 0, i) + 1
+                inside = None
+            header_start = i + 1
+        elif c == ";" and inside is None:
+            header_start = i + 1
+    return [tuple(f) for f in found if f[2] is not None]
+
+
+def check_functions(root):
+    breaches = []
+    for folder in FUNCTION_FOLDERS:
+        for directory, _, files in os.walk(os.path.join(root, folder)):
+            for f in sorted(files):
+                if not f.endswith((".h", ".cpp")):
+                    continue
+                path = os.path.join(directory, f)
+                with open(path, encoding="utf-8") as text:
+                    found = functions(text.read())
+                for name, first, last in found:
+                    if last - first + 1 > MAX_FUNCTION_LINES:
+                        breaches.append(f"{os.path.relpath(path, root)}:{first}: {name} runs "
+                                        f"{last - first + 1} lines (at most "
+                                        f"{MAX_FUNCTION_LINES})")
+    return breaches
+
+
 def report(root):
     graph = include_graph(root)
     edges = sorted({(module_of(f), module_of(d)) for f, ds in graph.items() for d in ds
@@ -236,7 +345,8 @@ def report(root):
 
 
 CHECKS = {"modules": check_modules, "readme": check_readme, "docs": check_docs,
-          "tables": check_tables, "headers": check_headers, "report": report}
+          "tables": check_tables, "headers": check_headers, "functions": check_functions,
+          "report": report}
 
 
 def main():

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
 
 namespace fs = std::filesystem;
 using bounce::Image;

@@ -11,9 +11,9 @@
 #include <fstream>
 #include <future>
 
-#include "image/atomic_file.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
 
 namespace bounce {
 namespace {

@@ -20,10 +20,10 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/probe_file.h"
+#include "io/load_error.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/tile_journal.h"
 #include "scene/load.h"
-#include "scene/load_error.h"
 #include "support/tool_run.h"
 
 extern char** environ;

@@ -26,7 +26,7 @@ const glm::vec3 kGroundAlbedo(0.5f, 0.6f, 0.7f);
 const glm::vec3 kIrradiance(3.0f, 2.5f, 2.0f);  // E⊥, W/m²
 
 // Image sizes are CI-sized; BOUNCE_SHADOW_SIZE_SCALE=N multiplies both sides by N for the
-// full-size figures in docs/shadows.md (e.g. N = 4: 640×384 and 1280×512).
+// full-size figures in docs/shadows_measured.md (e.g. N = 4: 640×384 and 1280×512).
 int sizeScale() {
   const char* scale = std::getenv("BOUNCE_SHADOW_SIZE_SCALE");
   return scale ? std::max(1, std::atoi(scale)) : 1;

@@ -56,6 +56,7 @@
 #include "ray/ray_kernel.h"
 #include "scene/instance_move.h"
 #include "scene/load.h"
+#include "scene/static_scene.h"
 #include "scene/world_geometry.h"
 #include "trace/camera_render.h"
 #include "trace/sampling.h"

@@ -1,7 +1,7 @@
 // Soft shadows measured at CI size (docs/shadows.md): the Cornell box's direct light, forward
 // renderer (area light shadowed by its cube map and percentage-closer soft shadows) against the
 // reference path tracer (`bounce-trace --direct-only`), mean absolute relative error over the
-// pixels that see no emitter. docs/shadows.md has the full-size figures
+// pixels that see no emitter. docs/shadows_measured.md has the full-size figures
 // (tests/bench/bench_shadows.cpp).
 #include <gtest/gtest.h>
 

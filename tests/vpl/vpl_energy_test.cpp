@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/static_scene.h"
 #include "trace/test_scenes.h"
 #include "vpl/vpl_generate.h"
 

@@ -1,5 +1,6 @@
-// Little-endian byte streams for the bake's binary files (layout, journal): a writer that
-// appends, and a reader that names the file and what it wanted when the bytes run out. GL-free.
+// Little-endian byte streams for binary files (the bake folder's layout, VPL, visibility and probe
+// files, the tile journal): a writer that appends, and a reader that names the file and what it
+// wanted when the bytes run out. GL-free.
 #pragma once
 
 #include <bit>
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/load_error.h"
+#include "io/load_error.h"
 
 namespace bounce {
 
