@@ -31,11 +31,20 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
 // its baked visible fraction where the texels name it. A light with a map ignores the texels'
 // shared "every other light" slot (a mix of other lights' V, no bound on its own); a light
 // without one takes it, as the area lights do.
+//
+// The map is read only where it can change the picture: where every texel around p holds V = 0
+// for the light (its own slot, or a shared slot of 0: every light in it is hidden), V is 0; where
+// every texel holds V = 1 and no dynamic instance casts into the maps (uDynamicCasters), V is 1.
+// Only texels a static shadow edge crosses (0 < V < 1), or any texel once something dynamic
+// casts, take the map's taps: its sharp edge within the bake's texel-wide blur.
+uniform bool uDynamicCasters;  // the scene has a dynamic instance: the maps may hold its shadow
 float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTexels baked) {
-  float v = lightVisibility(light, p, ng);
-  if (uHasBakedVisibility && light.bakedIndex >= 0)
-    v = min(v, bakedVisibility(baked, light.bakedIndex, light.shadowSlot < 0));
-  return v;
+  if (!uHasBakedVisibility || light.bakedIndex < 0) return lightVisibility(light, p, ng);
+  float bakedAll = bakedVisibility(baked, light.bakedIndex, true);
+  if (light.shadowSlot < 0) return bakedAll;
+  if (bakedAll <= 0.0) return 0.0;
+  if (bakedAll >= 1.0 - 1e-5 && !uDynamicCasters) return 1.0;
+  return min(lightVisibility(light, p, ng), bakedVisibility(baked, light.bakedIndex, false));
 }
 
 vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked) {

@@ -189,6 +189,8 @@ void ForwardRenderer::setBake(const Bake& bake) {
   // Which lights static surfaces still read cubes for: the area-shadow budget ranks the rest by
   // the dynamic instances only.
   p.shadows.setAreaBake(p.lightmap.bakedVisibilityLights(p.scene), true);
+  // Likewise the static spot and point lights the bake names: a map only for what moves.
+  p.shadows.setStaticVisibilityBaked(p.lightmap.visibilityOnEveryStaticInstance(p.scene));
   // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
   // through cubes of their own.
   if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&

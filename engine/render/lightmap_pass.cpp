@@ -138,11 +138,15 @@ bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {
   return true;
 }
 
-std::size_t LightmapPass::bakedVisibilityLights(const GpuScene& scene) const {
-  if (!visibility_) return 0;
+bool LightmapPass::visibilityOnEveryStaticInstance(const GpuScene& scene) const {
+  if (!visibility_) return false;
   for (std::size_t i = 0; i < scene.instances().size(); ++i)
-    if (scene.instances()[i].mobility == Mobility::Static && !readsVisibility(i)) return 0;
-  return static_cast<std::size_t>(bakedLights_);
+    if (scene.instances()[i].mobility == Mobility::Static && !readsVisibility(i)) return false;
+  return true;
+}
+
+std::size_t LightmapPass::bakedVisibilityLights(const GpuScene& scene) const {
+  return visibilityOnEveryStaticInstance(scene) ? static_cast<std::size_t>(bakedLights_) : 0;
 }
 
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {

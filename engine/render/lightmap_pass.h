@@ -42,6 +42,8 @@ class LightmapPass {
   // or corner visibility): then no surface needs the area lights' all-caster cubes.
   bool visibilityCoversEveryInstance(const GpuScene& scene) const;
   const std::string& visibilityRefusal() const { return visibilityRefusal_; }
+  // Whether every static instance of `scene` reads the bake's visibility (false without one).
+  bool visibilityOnEveryStaticInstance(const GpuScene& scene) const;
   // The static area lights [0, n) whose visibility every static instance of `scene` reads from
   // the bake (0 when some static instance has neither an atlas region nor corner visibility, or
   // without visibility).
