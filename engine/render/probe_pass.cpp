@@ -1,5 +1,6 @@
 #include "render/probe_pass.h"
 
+#include "bake_folder/irradiance_probes.h"
 #include "render/shader_constants.h"
 #include "render/texture_units.h"
 
@@ -46,10 +47,14 @@ void ProbePass::attach(const IrradianceProbes& probes, std::size_t instances, bo
   corners_.reset();
   corners_.emplace(visibility_ ? std::span<const glm::vec4>(corners)
                                : std::span<const glm::vec4>{});
-  grids_ = probes.grids;
+  grids_.clear();
   gridOf_.assign(instances, -1);
-  for (std::size_t g = 0; g < grids_.size(); ++g)
-    if (grids_[g].instance < instances) gridOf_[grids_[g].instance] = static_cast<int>(g);
+  for (const ProbeGrid& g : probes.grids) {
+    if (g.instance < instances) gridOf_[g.instance] = static_cast<int>(grids_.size());
+    grids_.push_back({static_cast<int>(g.first), glm::ivec3(g.counts), g.origin, g.spacing,
+                      g.normalOffset, static_cast<int>(g.firstCorner),
+                      static_cast<int>(g.cornerCount)});
+  }
   probeCount_ = probes.probes.size();
 }
 
@@ -66,16 +71,16 @@ void ProbePass::setInstance(gl::Program& program, std::size_t index) const {
     program.set("uHasProbes", 0);
     return;
   }
-  const ProbeGrid& g = grids_[static_cast<std::size_t>(gridOf_[index])];
+  const Grid& g = grids_[static_cast<std::size_t>(gridOf_[index])];
   if (cornerVisibility(index)) {
     // In place of the lightmap's table (LightmapPass::setInstance set it false: no region).
     program.set("uHasBakedVisibility", 1);
     program.set("uHasCornerVisibility", 1);
-    program.set("uCornerVisibilityFirst", static_cast<int>(g.firstCorner));
+    program.set("uCornerVisibilityFirst", g.firstCorner);
   }
   program.set("uHasProbes", 1);
-  program.set("uProbeFirst", static_cast<int>(g.first));
-  program.set("uProbeCounts", glm::ivec3(g.counts));
+  program.set("uProbeFirst", g.first);
+  program.set("uProbeCounts", g.counts);
   program.set("uProbeOrigin", g.origin);
   program.set("uProbeSpacing", g.spacing);
   program.set("uProbeNormalOffset", g.normalOffset);

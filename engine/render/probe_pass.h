@@ -21,11 +21,13 @@
 
 #include <glm/glm.hpp>
 
-#include "bake_folder/irradiance_probes.h"
 #include "gl/shader.h"
 #include "gl/texture_buffer.h"
 
 namespace bounce {
+
+struct IrradianceProbes;  // bake_folder/irradiance_probes.h
+struct ProbeVisibility;
 
 // The 3 texels of each probe, in order (the layout above).
 std::vector<glm::vec4> probeTexels(const IrradianceProbes& probes);
@@ -57,7 +59,15 @@ class ProbePass {
   std::optional<gl::TextureBuffer> buffer_;
   std::optional<gl::TextureBuffer> corners_;
   bool visibility_ = false;
-  std::vector<ProbeGrid> grids_;
+  // What a draw reads of its instance's grid (ProbeGrid of bake_folder/irradiance_probes.h).
+  struct Grid {
+    int first = 0;  // its first probe
+    glm::ivec3 counts{2};
+    glm::vec3 origin{0.0f}, spacing{0.0f};  // m
+    float normalOffset = 0.0f;              // m
+    int firstCorner = 0, cornerCount = 0;   // its corners' visibility
+  };
+  std::vector<Grid> grids_;
   std::vector<int> gridOf_;  // per instance, index into grids_ or −1
   std::size_t probeCount_ = 0;
 };
