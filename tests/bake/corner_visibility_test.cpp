@@ -142,25 +142,49 @@ TEST(CornerVisibility, EachCornerHoldsTheVisibleFractionOfTheTriangleNearIt) {
 }
 
 // Each corner draws its points and pairs from its own keys: any thread count, the same bytes.
+// A floor of 2 × 64² triangles under a panel and a blocker, so that the threads interleave.
 TEST(CornerVisibility, TheSameAtAnyThreadCount) {
   Scene scene;
   addQuad(scene, {-0.2f, 1.0f, -0.2f}, {0.2f, 1.0f, -0.2f}, {0.2f, 1.0f, 0.2f}, {-0.2f, 1.0f, 0.2f},
           addMaterial(scene, glm::vec3(0.0f), glm::vec3(1.0f)));
   const uint32_t grey = addMaterial(scene, glm::vec3(0.5f));
   addQuad(scene, {-1, 0.5f, -1}, {-1, 0.5f, 1}, {0, 0.5f, 1}, {0, 0.5f, -1}, grey);
-  addQuad(scene, {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, grey);
+  Mesh floor;
+  constexpr int kCells = 64;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      floor.positions.emplace_back(-1.0f + 2.0f * i / kCells, 0.0f, -1.0f + 2.0f * j / kCells);
+      floor.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    }
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) {
+      const auto a = static_cast<uint32_t>(j * (kCells + 1) + i), b = a + 1, c = a + kCells + 1,
+                 d = c + 1;
+      for (const uint32_t k : {a, c, d, a, d, b}) floor.indices.push_back(k);  // facing +y
+    }
+  floor.material = grey;
+  scene.meshes.push_back(floor);
+  Instance instance;
+  instance.name = "floor";
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
+  scene.instances.push_back(instance);
   const WorldGeometry geometry = flatten(scene);
   const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
   const AreaLightSet lights = sceneAreaLights(scene);
-  const std::vector<uint32_t> traced{2};
+  const std::vector<uint32_t> traced{static_cast<uint32_t>(scene.instances.size() - 1)};
   CornerVisibilitySettings one, two;
+  one.samplesPerLight = two.samplesPerLight = 16;
   one.threads = 1;
   two.threads = 2;
   const CornerVisibilityBake a =
       bakeCornerVisibility(lights, {}, geometry, *kernel, traced, {}, one);
   const CornerVisibilityBake b =
       bakeCornerVisibility(lights, {}, geometry, *kernel, traced, {}, two);
-  ASSERT_EQ(a.visibility.corners.size(), 6u);
+  ASSERT_EQ(a.visibility.corners.size(), 3u * 2 * kCells * kCells);
+  int penumbra = 0;
+  for (const TexelVisibility& c : a.visibility.corners)
+    penumbra += c.light[0] == 0 && c.visible[0] > 0.0f && c.visible[0] < 1.0f ? 1 : 0;
+  EXPECT_GT(penumbra, 1000) << "corners in the blocker's penumbra";
   EXPECT_EQ(a.visibility, b.visibility);
 }
 
