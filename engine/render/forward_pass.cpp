@@ -32,12 +32,6 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Li
   vpls.bind(program_);
 
   const std::span<const GpuInstance> instances = scene.instances();
-  // A dynamic instance may cast into the punctual maps: baked static surfaces read them even
-  // where the bake says fully lit (lights.glsl).
-  bool dynamicCasters = false;
-  for (const GpuInstance& instance : instances)
-    dynamicCasters = dynamicCasters || instance.mobility == Mobility::Dynamic;
-  program_.set("uDynamicCasters", dynamicCasters ? 1 : 0);
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const GpuInstance& instance = instances[i];
     lightmap.setInstance(program_, i);
