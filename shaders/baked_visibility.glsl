@@ -14,6 +14,12 @@ uniform bool uHasBake;                // a bake is attached (baked-direct lights
 uniform bool uHasBakedVisibility;     // this draw: a static instance, the bake has visibility
 uniform int uBakedLightCount;         // static area lights the bake names (the first indices)
 uniform sampler2D uBakedVisibility;
+// The probe-lit instances' visibility per triangle corner (bake_folder/irradiance_probes.h,
+// ProbeVisibility; render/probe_pass.h): texel 2c holds corner c's slots' light indices, texel
+// 2c + 1 their V, as the table above.
+uniform samplerBuffer uCornerVisibility;
+uniform bool uHasCornerVisibility;  // this draw: a probe-lit instance with corner visibility
+uniform int uCornerVisibilityFirst;  // its first corner
 
 
 struct BakedVisibilityTexels {
@@ -35,6 +41,24 @@ BakedVisibilityTexels bakedVisibilityTexels(vec2 atlasUv, vec2 size) {
     t.visible[k] = texelFetch(uBakedVisibility, ivec2(2 * q.x + 1, q.y), 0);
   }
   t.weight = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  return t;
+}
+
+// The same from the 3 corners of triangle `triangle` of the draw (corner k of triangle t at
+// 3t + k), weighted by the fragment's barycentric weights: V = Σ_k b_k V_k, linear over the
+// triangle as the corners' V was estimated (corner_visibility_bake.h). The fourth entry is empty.
+BakedVisibilityTexels cornerVisibilityTexels(int triangle, vec3 weights) {
+  BakedVisibilityTexels t;
+  vec3 b = max(weights, vec3(0.0));
+  b /= max(b.x + b.y + b.z, 1e-6);
+  for (int k = 0; k < 3; ++k) {
+    int c = uCornerVisibilityFirst + 3 * triangle + k;
+    t.lights[k] = texelFetch(uCornerVisibility, 2 * c);
+    t.visible[k] = texelFetch(uCornerVisibility, 2 * c + 1);
+  }
+  t.lights[3] = vec4(-1.0);
+  t.visible[3] = vec4(1.0);
+  t.weight = vec4(b, 0.0);
   return t;
 }
 

@@ -32,6 +32,8 @@ centroid in vec2 vLightmapUv;
 in vec3 vWorldPositionAtCentre;  // the same at the pixel centre, for screen derivatives
 in vec2 vLightmapUvAtCentre;
 flat in vec2 vTriangleLightmapUv[3];  // the triangle's three lightmap coordinates
+flat in int vTriangle;                 // the triangle's number in the draw (forward.geom)
+centroid in vec3 vCornerWeights;       // the fragment's barycentric weights of its corners
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)
@@ -90,7 +92,9 @@ void main() {
   if (modeUsesDirectLight()) {
     LightList lights = clusterLights(vWorldPosition);
     BakedVisibilityTexels baked;
-    if (uHasBakedVisibility) baked = bakedVisibilityTexels(lightmapUv, uLightmapSize);
+    if (uHasBakedVisibility)
+      baked = uHasCornerVisibility ? cornerVisibilityTexels(vTriangle, vCornerWeights)
+                                   : bakedVisibilityTexels(lightmapUv, uLightmapSize);
     direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked) +
              areaIrradiance(lights, vWorldPosition, n, ng, baked);
   }

@@ -22,6 +22,11 @@ centroid out vec2 vLightmapUv;
 out vec3 vWorldPositionAtCentre;
 out vec2 vLightmapUvAtCentre;
 flat out vec2 vTriangleLightmapUv[3];
+// The triangle's number in its draw (its mesh's `indices` order: the draws are de-indexed) and
+// the fragment's barycentric weights of its corners: the probe-lit instances' baked visibility
+// is per triangle corner (baked_visibility.glsl). Centroid, as the position: inside the triangle.
+flat out int vTriangle;
+centroid out vec3 vCornerWeights;
 
 void main() {
   for (int i = 0; i < 3; ++i) {
@@ -35,6 +40,8 @@ void main() {
     vTriangleLightmapUv[0] = vsLightmapUv[0];
     vTriangleLightmapUv[1] = vsLightmapUv[1];
     vTriangleLightmapUv[2] = vsLightmapUv[2];
+    vTriangle = gl_PrimitiveIDIn;
+    vCornerWeights = vec3(i == 0, i == 1, i == 2);
     EmitVertex();
   }
   EndPrimitive();

@@ -31,10 +31,15 @@ float spotFalloff(vec2 cosCone, float cosTheta) {
 // its baked visible fraction where the texels name it. A light with a map ignores the texels'
 // shared "every other light" slot (a mix of other lights' V, no bound on its own); a light
 // without one takes it, as the area lights do.
+//
+// Where the texels give the light V = 0, min(V_map, V) is 0 whatever the map says: no tap.
+// (Skipping the map where they give V = 1 as well was tried: on the sunlit room the cascades
+// still darken some of those pixels rightly, 1.21% -> 1.32% off the tracer.)
 float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTexels baked) {
-  float v = lightVisibility(light, p, ng);
+  float v = 1.0;
   if (uHasBakedVisibility && light.bakedIndex >= 0)
-    v = min(v, bakedVisibility(baked, light.bakedIndex, light.shadowSlot < 0));
+    v = bakedVisibility(baked, light.bakedIndex, light.shadowSlot < 0);
+  if (v > 0.0) v = min(v, lightVisibility(light, p, ng));
   return v;
 }
 

@@ -37,6 +37,118 @@ bool hasBakeableVisibility(const AreaLightSet& lights, std::span<const Light> pu
   });
 }
 
+PointSetVisibility estimatePointSetVisibility(const AreaLightSet& lights,
+                                              std::span<const Light> punctual,
+                                              const RayKernel& kernel,
+                                              std::span<const TexelPoint> points, uint32_t salt,
+                                              uint32_t seed, uint32_t index, int samplesPerLight) {
+  PointSetVisibility result;
+  const auto points32 = static_cast<uint32_t>(points.size());
+  const auto lightCount = static_cast<uint32_t>(lights.staticCount());
+  if (points.empty()) return result;
+  const int samples = std::max(samplesPerLight, 1);
+  std::vector<LightEstimate> estimates;
+  uint64_t rays = 0;
+  for (uint32_t l = 0; l < lightCount; ++l) {
+    const AreaLight& light = lights.lights[l];
+    if (light.bakeDirect) continue;  // in the lightmap: the renderer never draws it live
+    const uint32_t key = hashKeys(seed ^ salt, index, l);
+    const glm::vec2 rotation(uniformFloat(key, 0), uniformFloat(key, 1));
+    double sumW = 0.0, sumVisible = 0.0;
+    for (int k = 0; k < samples; ++k) {
+      const TexelPoint& x = points[static_cast<uint32_t>(k) % points32];
+      glm::vec2 u((static_cast<float>(k) + rotation.x) / static_cast<float>(samples),
+                  unitFloat(reverseBits(static_cast<uint32_t>(k))) + rotation.y);
+      u.y -= std::floor(u.y);
+      const glm::vec3 y = pointOnLight(lights, l, u);
+      const glm::vec3 d = y - x.position;
+      const float r2 = glm::dot(d, d);
+      if (!(r2 > 0.0f)) continue;
+      const float cosX = glm::dot(x.shadingNormal, d);
+      float cosY = -glm::dot(light.normal, d);
+      if (light.doubleSided || light.normal == glm::vec3(0.0f)) cosY = std::abs(cosY);
+      if (cosX <= 0.0f || cosY <= 0.0f) continue;
+      const double w = static_cast<double>(cosX) * cosY / (static_cast<double>(r2) * r2);
+      Ray ray;
+      ray.origin = offsetRayOrigin(x.position, x.geometricNormal, d);
+      ray.direction = y - ray.origin;
+      ray.tmax = 1.0f - 1e-4f;  // stop short of the light's own surface
+      ++rays;
+      sumW += w;
+      if (!kernel.occluded(ray)) sumVisible += w;
+    }
+    if (sumW <= 0.0) continue;
+    // E = L·A·mean(cosθ_x·cosθ_y/r²) for points y uniform over the light's area A.
+    const double e =
+        luminance(lights.triangles[light.first].radiance) * light.area * sumW / samples;
+    estimates.push_back({static_cast<uint16_t>(l), e, sumVisible / sumW});
+  }
+  const uint32_t pairs = std::min(static_cast<uint32_t>(samples), points32);
+  for (std::size_t p = 0; p < punctual.size(); ++p) {
+    const Light& light = punctual[p];
+    if (light.mobility == Mobility::Dynamic || light.bakeDirect) continue;
+    const bool directional = light.type == LightType::Directional;
+    double sumW = 0.0, sumVisible = 0.0;
+    for (uint32_t k = 0; k < pairs; ++k) {
+      const TexelPoint& x = points[k];
+      // d: towards the light; for a point or spot light its length is the distance r.
+      const glm::vec3 d = directional ? -light.direction : light.position - x.position;
+      const float r2 = glm::dot(d, d);
+      if (!(r2 > 0.0f)) continue;
+      const float cosX = glm::dot(x.shadingNormal, d) / std::sqrt(r2);
+      if (cosX <= 0.0f) continue;
+      double w = cosX;
+      if (!directional) {
+        w /= r2;
+        if (light.type == LightType::Spot)
+          w *= spotFalloff(light, glm::dot(-d, light.direction) / std::sqrt(r2));
+      }
+      if (w <= 0.0) continue;
+      Ray ray;
+      ray.origin = offsetRayOrigin(x.position, x.geometricNormal, d);
+      if (directional) {
+        ray.direction = d;  // unbounded: anything above the texel hides the sun
+      } else {
+        ray.direction = light.position - ray.origin;
+        ray.tmax = 1.0f - 1e-4f;
+      }
+      ++rays;
+      sumW += w;
+      if (!kernel.occluded(ray)) sumVisible += w;
+    }
+    if (sumW <= 0.0) continue;
+    const glm::vec3 power = directional ? light.irradiance : light.intensity;
+    const double e = luminance(power) * sumW / pairs;
+    if (!(e > 0.0)) continue;
+    estimates.push_back({static_cast<uint16_t>(lightCount + p), e, sumVisible / sumW});
+  }
+  result.rays = static_cast<uint32_t>(rays);
+  if (estimates.empty()) return result;
+  std::stable_sort(
+      estimates.begin(), estimates.end(),
+      [](const LightEstimate& a, const LightEstimate& b) { return a.irradiance > b.irradiance; });
+  TexelVisibility& record = result.record;
+  const std::size_t named =
+      estimates.size() <= kVisibilitySlots ? estimates.size() : kVisibilitySlots - 1;
+  for (std::size_t s = 0; s < named; ++s) {
+    record.light[s] = estimates[s].light;
+    record.visible[s] = static_cast<float>(estimates[s].visible);
+  }
+  for (const LightEstimate& e : estimates) result.irradiance += e.irradiance;
+  if (named < estimates.size()) {
+    double rest = 0.0, restVisible = 0.0;
+    for (std::size_t s = named; s < estimates.size(); ++s) {
+      rest += estimates[s].irradiance;
+      restVisible += estimates[s].irradiance * estimates[s].visible;
+    }
+    record.light[kVisibilitySlots - 1] = kOtherLights;
+    record.visible[kVisibilitySlots - 1] =
+        static_cast<float>(std::clamp(restVisible / rest, 0.0, 1.0));
+    result.otherIrradiance = rest;
+  }
+  return result;
+}
+
 VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, std::span<const Light> punctual,
                                       const RayKernel& kernel, const TexelCoverage& coverage,
                                       const VisibilityBakeSettings& settings) {
@@ -61,108 +173,13 @@ VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, std::span<cons
     const uint32_t begin = coverage.first[texel];
     const uint32_t points = coverage.first[texel + 1] - begin;
     if (points == 0 || out.indexCount() == 0) return;
-    std::vector<LightEstimate> estimates;
-    uint64_t texelRays = 0;
-    for (uint32_t l = 0; l < out.lightCount; ++l) {
-      const AreaLight& light = lights.lights[l];
-      if (light.bakeDirect) continue;  // in the lightmap: the renderer never draws it live
-      const uint32_t key =
-          hashKeys(settings.seed ^ kVisibilitySalt, static_cast<uint32_t>(texel), l);
-      const glm::vec2 rotation(uniformFloat(key, 0), uniformFloat(key, 1));
-      double sumW = 0.0, sumVisible = 0.0;
-      for (int k = 0; k < samples; ++k) {
-        const TexelPoint& x = coverage.points[begin + static_cast<uint32_t>(k) % points];
-        glm::vec2 u((static_cast<float>(k) + rotation.x) / static_cast<float>(samples),
-                    unitFloat(reverseBits(static_cast<uint32_t>(k))) + rotation.y);
-        u.y -= std::floor(u.y);
-        const glm::vec3 y = pointOnLight(lights, l, u);
-        const glm::vec3 d = y - x.position;
-        const float r2 = glm::dot(d, d);
-        if (!(r2 > 0.0f)) continue;
-        const float cosX = glm::dot(x.shadingNormal, d);
-        float cosY = -glm::dot(light.normal, d);
-        if (light.doubleSided || light.normal == glm::vec3(0.0f)) cosY = std::abs(cosY);
-        if (cosX <= 0.0f || cosY <= 0.0f) continue;
-        const double w = static_cast<double>(cosX) * cosY / (static_cast<double>(r2) * r2);
-        Ray ray;
-        ray.origin = offsetRayOrigin(x.position, x.geometricNormal, d);
-        ray.direction = y - ray.origin;
-        ray.tmax = 1.0f - 1e-4f;  // stop short of the light's own surface
-        ++texelRays;
-        sumW += w;
-        if (!kernel.occluded(ray)) sumVisible += w;
-      }
-      if (sumW <= 0.0) continue;
-      // E = L·A·mean(cosθ_x·cosθ_y/r²) for points y uniform over the light's area A.
-      const double e =
-          luminance(lights.triangles[light.first].radiance) * light.area * sumW / samples;
-      estimates.push_back({static_cast<uint16_t>(l), e, sumVisible / sumW});
-    }
-    const uint32_t pairs = std::min(static_cast<uint32_t>(samples), points);
-    for (std::size_t p = 0; p < punctual.size(); ++p) {
-      const Light& light = punctual[p];
-      if (light.mobility == Mobility::Dynamic || light.bakeDirect) continue;
-      const bool directional = light.type == LightType::Directional;
-      double sumW = 0.0, sumVisible = 0.0;
-      for (uint32_t k = 0; k < pairs; ++k) {
-        const TexelPoint& x = coverage.points[begin + k];
-        // d: towards the light; for a point or spot light its length is the distance r.
-        const glm::vec3 d = directional ? -light.direction : light.position - x.position;
-        const float r2 = glm::dot(d, d);
-        if (!(r2 > 0.0f)) continue;
-        const float cosX = glm::dot(x.shadingNormal, d) / std::sqrt(r2);
-        if (cosX <= 0.0f) continue;
-        double w = cosX;
-        if (!directional) {
-          w /= r2;
-          if (light.type == LightType::Spot)
-            w *= spotFalloff(light, glm::dot(-d, light.direction) / std::sqrt(r2));
-        }
-        if (w <= 0.0) continue;
-        Ray ray;
-        ray.origin = offsetRayOrigin(x.position, x.geometricNormal, d);
-        if (directional) {
-          ray.direction = d;  // unbounded: anything above the texel hides the sun
-        } else {
-          ray.direction = light.position - ray.origin;
-          ray.tmax = 1.0f - 1e-4f;
-        }
-        ++texelRays;
-        sumW += w;
-        if (!kernel.occluded(ray)) sumVisible += w;
-      }
-      if (sumW <= 0.0) continue;
-      const glm::vec3 power = directional ? light.irradiance : light.intensity;
-      const double e = luminance(power) * sumW / pairs;
-      if (!(e > 0.0)) continue;
-      estimates.push_back({out.punctualIndex(p), e, sumVisible / sumW});
-    }
-    result.rays[texel] = static_cast<uint32_t>(texelRays);
-    if (estimates.empty()) return;
-    std::stable_sort(
-        estimates.begin(), estimates.end(),
-        [](const LightEstimate& a, const LightEstimate& b) { return a.irradiance > b.irradiance; });
-    TexelVisibility& record = out.texels[texel];
-    const std::size_t named =
-        estimates.size() <= kVisibilitySlots ? estimates.size() : kVisibilitySlots - 1;
-    for (std::size_t s = 0; s < named; ++s) {
-      record.light[s] = estimates[s].light;
-      record.visible[s] = static_cast<float>(estimates[s].visible);
-    }
-    double all = 0.0;
-    for (const LightEstimate& e : estimates) all += e.irradiance;
-    result.irradiance[texel] = all;
-    if (named < estimates.size()) {
-      double rest = 0.0, restVisible = 0.0;
-      for (std::size_t s = named; s < estimates.size(); ++s) {
-        rest += estimates[s].irradiance;
-        restVisible += estimates[s].irradiance * estimates[s].visible;
-      }
-      record.light[kVisibilitySlots - 1] = kOtherLights;
-      record.visible[kVisibilitySlots - 1] =
-          static_cast<float>(std::clamp(restVisible / rest, 0.0, 1.0));
-      result.otherIrradiance[texel] = rest;
-    }
+    const PointSetVisibility v = estimatePointSetVisibility(
+        lights, punctual, kernel, std::span(coverage.points).subspan(begin, points),
+        kVisibilitySalt, settings.seed, static_cast<uint32_t>(texel), samples);
+    result.rays[texel] = v.rays;
+    out.texels[texel] = v.record;
+    result.irradiance[texel] = v.irradiance;
+    result.otherIrradiance[texel] = v.otherIrradiance;
   };
 
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);

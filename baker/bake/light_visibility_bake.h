@@ -36,6 +36,7 @@ class StageProgress;
 struct TexelCoverage;
 
 struct VisibilityTexels;
+struct TexelPoint;
 
 struct VisibilityBakeSettings {
   bool enabled = true;       // bake it when the scene has static area lights
@@ -76,6 +77,21 @@ struct VisibilityBakeReport {
 VisibilityTexels bakeVisibilityTexels(const AreaLightSet& lights, std::span<const Light> punctual,
                                       const RayKernel& kernel, const TexelCoverage& coverage,
                                       const VisibilityBakeSettings& settings);
+
+// The estimate above for one set of surface points (a texel's, a triangle corner's): the
+// lights' (light, V) slots, the rays traced and the unshadowed irradiance summed over the lights
+// (luminance, W/m²) with the part the kOtherLights slot holds. Light l's pairs are drawn from
+// the key hashKeys(seed ^ salt, index, l), so a set's result depends only on its own keys.
+struct PointSetVisibility {
+  TexelVisibility record;
+  uint32_t rays = 0;
+  double irradiance = 0.0, otherIrradiance = 0.0;
+};
+PointSetVisibility estimatePointSetVisibility(const AreaLightSet& lights,
+                                              std::span<const Light> punctual,
+                                              const RayKernel& kernel,
+                                              std::span<const TexelPoint> points, uint32_t salt,
+                                              uint32_t seed, uint32_t index, int samplesPerLight);
 
 // Whether the visibility stage has anything to bake: a static area light or a static punctual
 // light whose direct light is drawn live.

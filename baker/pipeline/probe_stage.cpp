@@ -1,9 +1,13 @@
 #include "pipeline/probe_stage.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "atlas/atlas.h"
+#include "bake/corner_visibility_bake.h"
 #include "bake/irradiance_probes.h"
+#include "bake/light_visibility_bake.h"
+#include "bake/lightmap_bake.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/scene_bake_stages.h"
 #include "scene/static_scene.h"
@@ -37,6 +41,38 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
   settings.progress = stage.get();
   ProbeBake bake = bakeIrradianceProbes(statics, geometry, kernel, instances, settings);
   out.probes = std::move(bake.probes);
+  // Their direct light is drawn live: the static lights' visibility per triangle corner, as the
+  // texels have it per texel (corner_visibility_bake.h).
+  const AreaLightSet lights = sceneAreaLights(statics);
+  if (LightmapBakeSettings{}.visibility.enabled && hasBakeableVisibility(lights, statics.lights)) {
+    std::vector<uint32_t> tracedInstances;
+    std::vector<uint8_t> mirrored;
+    for (const ProbedInstance& p : instances) {
+      tracedInstances.push_back(p.tracedIndex);
+      mirrored.push_back(
+          glm::determinant(glm::mat3(scene.instances[p.fileIndex].transform)) < 0.0f ? 1 : 0);
+    }
+    CornerVisibilitySettings corner;
+    corner.samplesPerLight = LightmapBakeSettings{}.visibility.samplesPerLight;
+    corner.seed = o.seed;
+    corner.threads = o.threads;
+    CornerVisibilityBake v = bakeCornerVisibility(lights, statics.lights, geometry, kernel,
+                                                  tracedInstances, mirrored, corner);
+    // Each grid's corners in the grids' order (probe_file.h: consecutive, none unused).
+    ProbeVisibility& visibility = out.probes.visibility;
+    visibility.lightCount = v.visibility.lightCount;
+    visibility.punctualCount = v.visibility.punctualCount;
+    for (ProbeGrid& g : out.probes.grids)
+      for (std::size_t i = 0; i < instances.size(); ++i)
+        if (instances[i].fileIndex == g.instance) {
+          g.firstCorner = static_cast<uint32_t>(visibility.corners.size());
+          g.cornerCount = v.cornerCount[i];
+          const auto from = v.visibility.corners.begin() + v.firstCorner[i];
+          visibility.corners.insert(visibility.corners.end(), from, from + v.cornerCount[i]);
+        }
+    out.visibilityRays = v.rays;
+    out.visibilitySeconds = v.seconds;
+  }
   BakeManifest::Probes& m = out.manifest;
   m.count = out.probes.probes.size();
   m.grids = out.probes.grids.size();
@@ -76,7 +112,16 @@ void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& 
                 const SceneBakeSettings& settings, const StagePlan& plan, SceneBake& result) {
   ProbeStage probes = runProbeStage(scene, *statics.scene, *statics.geometry, *statics.kernel,
                                     atlas.vplLitInstances, settings, plan);
-  result.folder.manifest.measured.seconds.probes = probes.seconds;
+  // The stage's seconds: the probes' and their instances' baked visibility.
+  result.folder.manifest.measured.seconds.probes = probes.seconds + probes.visibilitySeconds;
+  if (!probes.probes.visibility.corners.empty()) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f", probes.visibilitySeconds);
+    result.notes.push_back("the static lights' visibility on the probe-lit instances: " +
+                           std::to_string(probes.probes.visibility.corners.size()) +
+                           " triangle corners, " + std::to_string(probes.visibilityRays) +
+                           " occlusion rays, " + seconds + " s");
+  }
   if (!probes.probes.grids.empty()) {
     result.folder.manifest.probes = probes.manifest;
     result.folder.probes = std::move(probes.probes);

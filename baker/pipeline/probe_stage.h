@@ -28,6 +28,10 @@ struct ProbeStage {
   BakeManifest::Probes manifest;   // bake.json's "probes"
   std::vector<std::string> notes;  // e.g. grids left dark
   double seconds = 0.0;
+  // The static lights' visibility per corner of the same instances (corner_visibility_bake.h):
+  // occlusion rays traced and seconds, 0 without static lights to bake.
+  uint64_t visibilityRays = 0;
+  double visibilitySeconds = 0.0;
 };
 
 // `scene` is the scene file's, `statics` = staticScene(scene) that `geometry` and `kernel` trace;

@@ -310,7 +310,22 @@ void checkProbesAgainstScene(const fs::path& file, const IrradianceProbes& probe
     if (layout.find(instance) != nullptr)
       throw LoadError(file,
                       which + " ('" + scene.instances[instance].name + "') has a lightmap region");
+    const std::size_t corners = 3 * scene.meshes.at(scene.instances[instance].mesh).triangleCount();
+    if (probes.grids[i].cornerCount != 0 && probes.grids[i].cornerCount != corners)
+      throw LoadError(file, which + " ('" + scene.instances[instance].name + "') has " +
+                                std::to_string(probes.grids[i].cornerCount) +
+                                " visibility corners, its mesh " + std::to_string(corners) +
+                                ": rebake");
   }
+  if (probes.visibility.corners.empty()) return;
+  const std::size_t lights = sceneAreaLights(scene).staticCount();
+  if (probes.visibility.lightCount != lights ||
+      probes.visibility.punctualCount != scene.lights.size())
+    throw LoadError(
+        file, "its corners name " + std::to_string(probes.visibility.lightCount) +
+                  " static area and " + std::to_string(probes.visibility.punctualCount) +
+                  " punctual lights, " + scene.source + " has " + std::to_string(lights) + " and " +
+                  std::to_string(scene.lights.size()) + ": rebake");
 }
 
 // Every file bake.json records is there with its recorded size and hash, and every file of the

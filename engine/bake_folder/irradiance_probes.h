@@ -16,6 +16,9 @@
 //
 // A probe holds the light the lightmap holds (texel_irradiance.h): light that reflected at least
 // once, plus the direct light of the lights and emitters marked baked-only.
+//
+// The same instances' direct light is drawn live, and the static lights' visibility they need is
+// baked per triangle corner (ProbeVisibility below), as a lightmapped surface's is per texel.
 #pragma once
 
 #include <array>
@@ -23,6 +26,8 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "bake_folder/light_visibility.h"
 
 namespace bounce {
 
@@ -58,15 +63,36 @@ struct ProbeGrid {
   // m: the renderer reads the grid at p + normalOffset·n, so a surface reads the probes on its
   // lit side of a thin object (the grid's box is the instance's grown by this much).
   float normalOffset = 0.0f;
+  // The instance's baked visibility: corners [firstCorner, firstCorner + cornerCount) of
+  // ProbeVisibility::corners, 3 per triangle of its mesh in the mesh's `indices` order (corner k
+  // of triangle t at 3t + k), or none (cornerCount 0: the bake has no static light to bake).
+  uint32_t firstCorner = 0;
+  uint32_t cornerCount = 0;
   bool operator==(const ProbeGrid&) const = default;
 
   uint32_t probeCount() const { return counts.x * counts.y * counts.z; }
   glm::vec3 position(glm::uvec3 cell) const { return origin + glm::vec3(cell) * spacing; }
 };
 
+// Baked visibility of the static lights on the probe-lit instances (Unity's shadowmask for
+// objects without lightmaps, at the mesh's own resolution): per triangle corner, the (light, V)
+// slots of a lightmap texel (light_visibility.h, the same light numbering and kOtherLights
+// rule). Corner k of a triangle holds V_l = ∫ b_k E_l vis / ∫ b_k E_l over the triangle, b_k the
+// corner's barycentric weight: the visible fraction of the irradiance the part of the triangle
+// nearest the corner receives, so V = Σ_k b_k V_k interpolated over the triangle reproduces a
+// V that varies linearly across it. The renderer reads it as it reads 3 texels, weighted by the
+// fragment's barycentric coordinates (shaders/baked_visibility.glsl).
+struct ProbeVisibility {
+  uint32_t lightCount = 0;     // static area lights (BakedVisibility::lightCount)
+  uint32_t punctualCount = 0;  // punctual lights (BakedVisibility::punctualCount)
+  std::vector<TexelVisibility> corners;
+  bool operator==(const ProbeVisibility&) const = default;
+};
+
 struct IrradianceProbes {
   std::vector<ProbeGrid> grids;  // by instance, ascending
   std::vector<ProbeIrradiance> probes;
+  ProbeVisibility visibility;  // empty when the bake has no static light to bake
   bool operator==(const IrradianceProbes&) const = default;
 };
 

@@ -31,6 +31,7 @@ inline constexpr uint16_t kOtherLights = 0xfffe;  // every static light the texe
 struct TexelVisibility {
   std::array<uint16_t, kVisibilitySlots> light{kNoLight, kNoLight, kNoLight, kNoLight};
   std::array<float, kVisibilitySlots> visible{1.0f, 1.0f, 1.0f, 1.0f};  // V, in [0, 1]
+  bool operator==(const TexelVisibility&) const = default;
 };
 
 struct BakedVisibility {

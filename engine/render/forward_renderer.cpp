@@ -175,7 +175,11 @@ void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
   p.lightmap.attach(bake, p.scene);
   p.probes.attach(bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{},
-                  p.scene.instances().size());
+                  p.scene.instances().size(), p.lightmap.hasBakedVisibility());
+  std::vector<uint8_t> cornerVisibility(p.scene.instances().size(), 0);
+  for (std::size_t i = 0; i < cornerVisibility.size(); ++i)
+    cornerVisibility[i] = p.probes.cornerVisibility(i) ? 1 : 0;
+  p.lightmap.setCornerVisibility(std::move(cornerVisibility));
   if (!p.lightmap.visibilityRefusal().empty())
     warnings_.push_back("the bake's area-light visibility is not used (" +
                         p.lightmap.visibilityRefusal() + "): area lights use their shadow maps");
@@ -185,6 +189,8 @@ void ForwardRenderer::setBake(const Bake& bake) {
   // Which lights static surfaces still read cubes for: the area-shadow budget ranks the rest by
   // the dynamic instances only.
   p.shadows.setAreaBake(p.lightmap.bakedVisibilityLights(p.scene), true);
+  // Likewise the static spot and point lights the bake names: a map only for what moves.
+  p.shadows.setStaticVisibilityBaked(p.lightmap.visibilityOnEveryStaticInstance(p.scene));
   // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
   // through cubes of their own.
   if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&

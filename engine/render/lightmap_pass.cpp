@@ -126,20 +126,27 @@ void LightmapPass::attachVisibility(const Bake& bake) {
   bakedPunctual_ = v.punctualCount;
 }
 
+bool LightmapPass::readsVisibility(std::size_t index) const {
+  return (index < lightmapped_.size() && lightmapped_[index]) ||
+         (index < cornerVisibility_.size() && cornerVisibility_[index]);
+}
+
 bool LightmapPass::visibilityCoversEveryInstance(const GpuScene& scene) const {
   if (!visibility_) return false;
   for (std::size_t i = 0; i < scene.instances().size(); ++i)
-    if (i >= lightmapped_.size() || !lightmapped_[i]) return false;
+    if (!readsVisibility(i)) return false;
+  return true;
+}
+
+bool LightmapPass::visibilityOnEveryStaticInstance(const GpuScene& scene) const {
+  if (!visibility_) return false;
+  for (std::size_t i = 0; i < scene.instances().size(); ++i)
+    if (scene.instances()[i].mobility == Mobility::Static && !readsVisibility(i)) return false;
   return true;
 }
 
 std::size_t LightmapPass::bakedVisibilityLights(const GpuScene& scene) const {
-  if (!visibility_) return 0;
-  for (std::size_t i = 0; i < scene.instances().size(); ++i)
-    if (scene.instances()[i].mobility == Mobility::Static &&
-        (i >= lightmapped_.size() || !lightmapped_[i]))
-      return 0;
-  return static_cast<std::size_t>(bakedLights_);
+  return visibilityOnEveryStaticInstance(scene) ? static_cast<std::size_t>(bakedLights_) : 0;
 }
 
 void LightmapPass::bind(gl::Program& program, RenderMode mode) const {

@@ -32,12 +32,21 @@ class LightmapPass {
   // Whether static surfaces read the static area lights' visibility from the bake; when the
   // bake has some but this is false, `why` says why not (for a renderer warning).
   bool hasBakedVisibility() const { return visibility_.has_value(); }
-  // Whether every instance of `scene` reads the baked visibility (static, with an atlas region):
-  // then no surface needs the area lights' all-caster cubes.
+  // The instances without an atlas region that read the same lights' visibility per triangle
+  // corner (ProbePass::cornerVisibility), by instance index: they count as reading the bake's
+  // visibility below.
+  void setCornerVisibility(std::vector<uint8_t> perInstance) {
+    cornerVisibility_ = std::move(perInstance);
+  }
+  // Whether every instance of `scene` reads the baked visibility (static, with an atlas region
+  // or corner visibility): then no surface needs the area lights' all-caster cubes.
   bool visibilityCoversEveryInstance(const GpuScene& scene) const;
   const std::string& visibilityRefusal() const { return visibilityRefusal_; }
+  // Whether every static instance of `scene` reads the bake's visibility (false without one).
+  bool visibilityOnEveryStaticInstance(const GpuScene& scene) const;
   // The static area lights [0, n) whose visibility every static instance of `scene` reads from
-  // the bake (0 when some static instance has no atlas region, or without visibility).
+  // the bake (0 when some static instance has neither an atlas region nor corner visibility, or
+  // without visibility).
   std::size_t bakedVisibilityLights(const GpuScene& scene) const;
   // The visibility's area lights (its first indices) and the punctual lights that follow them;
   // 0 and 0 without visibility.
@@ -55,6 +64,8 @@ class LightmapPass {
 
  private:
   void attachVisibility(const Bake& bake);
+  // Instance `index` reads the visibility: from the table (a region) or per corner.
+  bool readsVisibility(std::size_t index) const;
 
   std::optional<gl::Texture2D> irradiance_;
   std::optional<gl::Texture2D> charts_;
@@ -65,8 +76,9 @@ class LightmapPass {
   int bakedLights_ = 0;                      // static area lights the visibility names
   std::size_t bakedPunctual_ = 0;            // punctual lights it names after them
   glm::vec2 size_{1.0f};
-  float targetTexelsPerMetre_ = 1.0f;  // 1 / the layout's texel size (the texel-density view)
-  std::vector<uint8_t> lightmapped_;   // per instance
+  float targetTexelsPerMetre_ = 1.0f;      // 1 / the layout's texel size (the texel-density view)
+  std::vector<uint8_t> lightmapped_;       // per instance
+  std::vector<uint8_t> cornerVisibility_;  // per instance: visibility per corner (probe-lit)
   bool attached_ = false;
   std::string visibilityRefusal_;
 };

@@ -1,5 +1,7 @@
 #include "render/probe_pass.h"
 
+#include "bake_folder/irradiance_probes.h"
+#include "render/shader_constants.h"
 #include "render/texture_units.h"
 
 namespace bounce {
@@ -14,33 +16,71 @@ std::vector<glm::vec4> probeTexels(const IrradianceProbes& probes) {
   return texels;
 }
 
-ProbePass::ProbePass() : buffer_(std::in_place, std::span<const glm::vec4>{}) {}
+std::vector<glm::vec4> cornerVisibilityTexels(const ProbeVisibility& visibility) {
+  std::vector<glm::vec4> texels;
+  texels.reserve(2 * visibility.corners.size());
+  for (const TexelVisibility& corner : visibility.corners) {
+    glm::vec4 lights, visible;
+    for (int s = 0; s < kVisibilitySlots; ++s) {
+      const uint16_t l = corner.light[s];
+      lights[s] = l == kNoLight       ? -1.0f
+                  : l == kOtherLights ? kVisibilityOtherLightsCode
+                                      : static_cast<float>(l);
+      visible[s] = corner.visible[s];
+    }
+    texels.push_back(lights);
+    texels.push_back(visible);
+  }
+  return texels;
+}
 
-void ProbePass::attach(const IrradianceProbes& probes, std::size_t instances) {
+ProbePass::ProbePass()
+    : buffer_(std::in_place, std::span<const glm::vec4>{}),
+      corners_(std::in_place, std::span<const glm::vec4>{}) {}
+
+void ProbePass::attach(const IrradianceProbes& probes, std::size_t instances, bool visibility) {
   const std::vector<glm::vec4> texels = probeTexels(probes);
   buffer_.reset();
   buffer_.emplace(std::span<const glm::vec4>(texels));
-  grids_ = probes.grids;
+  const std::vector<glm::vec4> corners = cornerVisibilityTexels(probes.visibility);
+  visibility_ = visibility && !corners.empty() && corners.size() <= gl::TextureBuffer::maxTexels();
+  corners_.reset();
+  corners_.emplace(visibility_ ? std::span<const glm::vec4>(corners)
+                               : std::span<const glm::vec4>{});
+  grids_.clear();
   gridOf_.assign(instances, -1);
-  for (std::size_t g = 0; g < grids_.size(); ++g)
-    if (grids_[g].instance < instances) gridOf_[grids_[g].instance] = static_cast<int>(g);
+  for (const ProbeGrid& g : probes.grids) {
+    if (g.instance < instances) gridOf_[g.instance] = static_cast<int>(grids_.size());
+    grids_.push_back({static_cast<int>(g.first), glm::ivec3(g.counts), g.origin, g.spacing,
+                      g.normalOffset, static_cast<int>(g.firstCorner),
+                      static_cast<int>(g.cornerCount)});
+  }
   probeCount_ = probes.probes.size();
 }
 
 void ProbePass::bind(gl::Program& program) const {
   program.set("uProbes", TextureUnit::kProbes);
   buffer_->bind(TextureUnit::kProbes);
+  program.set("uCornerVisibility", TextureUnit::kCornerVisibility);
+  corners_->bind(TextureUnit::kCornerVisibility);
 }
 
 void ProbePass::setInstance(gl::Program& program, std::size_t index) const {
+  program.set("uHasCornerVisibility", 0);
   if (!probeLit(index)) {
     program.set("uHasProbes", 0);
     return;
   }
-  const ProbeGrid& g = grids_[static_cast<std::size_t>(gridOf_[index])];
+  const Grid& g = grids_[static_cast<std::size_t>(gridOf_[index])];
+  if (cornerVisibility(index)) {
+    // In place of the lightmap's table (LightmapPass::setInstance set it false: no region).
+    program.set("uHasBakedVisibility", 1);
+    program.set("uHasCornerVisibility", 1);
+    program.set("uCornerVisibilityFirst", g.firstCorner);
+  }
   program.set("uHasProbes", 1);
-  program.set("uProbeFirst", static_cast<int>(g.first));
-  program.set("uProbeCounts", glm::ivec3(g.counts));
+  program.set("uProbeFirst", g.first);
+  program.set("uProbeCounts", g.counts);
   program.set("uProbeOrigin", g.origin);
   program.set("uProbeSpacing", g.spacing);
   program.set("uProbeNormalOffset", g.normalOffset);

@@ -7,6 +7,12 @@
 //
 // Texel c (0, 1, 2: red, green, blue) of probe i, at 3i + c: (Y00·E00, Y1·E11, Y1·E1−1, Y1·E10)
 // of channel c, so that E_c(n) = t.x + dot(t.yzw, n) (W/m²).
+//
+// The same instances' baked visibility of the static lights, per triangle corner
+// (ProbeVisibility), is a second texture buffer, 2 texels per corner: (the 4 slots' light
+// indices, −1 empty, −2 every other light), (their V). A draw of such an instance reads it in
+// place of the lightmap's visibility table (shaders/baked_visibility.glsl), so its direct light
+// needs no shadow map of a static light for the static occluders.
 #pragma once
 
 #include <cstddef>
@@ -15,22 +21,33 @@
 
 #include <glm/glm.hpp>
 
-#include "bake_folder/irradiance_probes.h"
 #include "gl/shader.h"
 #include "gl/texture_buffer.h"
 
 namespace bounce {
 
+struct IrradianceProbes;  // bake_folder/irradiance_probes.h
+struct ProbeVisibility;
+
 // The 3 texels of each probe, in order (the layout above).
 std::vector<glm::vec4> probeTexels(const IrradianceProbes& probes);
+// The 2 texels of each corner of the probes' visibility, in order (the layout above).
+std::vector<glm::vec4> cornerVisibilityTexels(const ProbeVisibility& visibility);
 
 class ProbePass {
  public:
   ProbePass();
   // `probes` already checked against the scene by readBake; `instances` the scene's count.
-  void attach(const IrradianceProbes& probes, std::size_t instances);
+  // `visibility`: whether the draws read the corners' visibility (the lightmap pass has the
+  // bake's visibility table, whose light numbering and counts the corners share).
+  void attach(const IrradianceProbes& probes, std::size_t instances, bool visibility);
   // Whether instance `index` (into GpuScene::instances) takes its baked light from probes.
   bool probeLit(std::size_t index) const { return index < gridOf_.size() && gridOf_[index] >= 0; }
+  // Whether instance `index` reads the static lights' visibility per corner.
+  bool cornerVisibility(std::size_t index) const {
+    return visibility_ && probeLit(index) &&
+           grids_[static_cast<std::size_t>(gridOf_[index])].cornerCount > 0;
+  }
   std::size_t probeCount() const { return probeCount_; }
 
   // Per frame: the buffer.
@@ -40,7 +57,17 @@ class ProbePass {
 
  private:
   std::optional<gl::TextureBuffer> buffer_;
-  std::vector<ProbeGrid> grids_;
+  std::optional<gl::TextureBuffer> corners_;
+  bool visibility_ = false;
+  // What a draw reads of its instance's grid (ProbeGrid of bake_folder/irradiance_probes.h).
+  struct Grid {
+    int first = 0;  // its first probe
+    glm::ivec3 counts{2};
+    glm::vec3 origin{0.0f}, spacing{0.0f};  // m
+    float normalOffset = 0.0f;              // m
+    int firstCorner = 0, cornerCount = 0;   // its corners' visibility
+  };
+  std::vector<Grid> grids_;
   std::vector<int> gridOf_;  // per instance, index into grids_ or −1
   std::size_t probeCount_ = 0;
 };

@@ -21,7 +21,8 @@ float largestPunctualIrradiance(const Light& light, glm::vec3 power, glm::vec3 p
 
 std::vector<float> punctualLightContributions(std::span<const Light> lights,
                                               std::span<const glm::vec3> power,
-                                              const ShadowReceivers& receivers, float floor) {
+                                              const ShadowReceivers& receivers, float floor,
+                                              std::span<const uint8_t> bakedOnStatics) {
   std::vector<float> contribution(lights.size(), 0.0f);
   for (std::size_t l = 0; l < lights.size(); ++l) {
     const Light& light = lights[l];
@@ -34,10 +35,12 @@ std::vector<float> punctualLightContributions(std::span<const Light> lights,
                      return largestPunctualIrradiance(light, drawn, p);
                    }));
     }
-    contribution[l] = shadowContribution(c, receivers.viewStats([&](glm::vec3 p) {
-      return largestPunctualIrradiance(light, drawn, p);
-    }),
-                                         floor);
+    const bool baked = l < bakedOnStatics.size() && bakedOnStatics[l] != 0;
+    const ShadowReceivers::Stats view =
+        baked ? ShadowReceivers::Stats{} : receivers.viewStats([&](glm::vec3 p) {
+          return largestPunctualIrradiance(light, drawn, p);
+        });
+    contribution[l] = shadowContribution(c, view, floor);
   }
   return contribution;
 }

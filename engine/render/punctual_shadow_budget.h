@@ -14,7 +14,9 @@
 //     each weighted by the screen its surface takes (shadow_receivers.h).
 // The most irradiance a surface at p can get is I·f(θ)/d² (point: f = 1; spot: f its angular
 // falloff, scene/light_falloff.h), d the distance to the light, and E⊥ for a directional light.
-// A light drawn with no power (its direct light baked) brings nothing and gets no map.
+// A light drawn with no power (its direct light baked) brings nothing and gets no map. A spot or
+// point light whose visibility the bake holds for every static surface is ranked by the dynamic
+// instances alone (shadow_pass.h says which).
 #pragma once
 
 #include <span>
@@ -33,10 +35,14 @@ namespace bounce {
 float largestPunctualIrradiance(const Light& light, glm::vec3 power, glm::vec3 p);
 
 // C_l of every light (W/m², see above; 0 for a light under `floor` everywhere the maps are
-// read, shadowContribution); power[i] is light i's drawn power.
+// read, shadowContribution); power[i] is light i's drawn power. A light with
+// bakedOnStatics[i] != 0 has its visibility baked on every static surface: the view points do not
+// rank it, only the dynamic instances in its reach (the dynamic receivers, and the dynamic
+// casters' shadows on static surfaces), so with none it brings 0 and gets no map.
 std::vector<float> punctualLightContributions(std::span<const Light> lights,
                                               std::span<const glm::vec3> power,
-                                              const ShadowReceivers& receivers, float floor = 0.0f);
+                                              const ShadowReceivers& receivers, float floor = 0.0f,
+                                              std::span<const uint8_t> bakedOnStatics = {});
 
 // How many maps each kind has.
 struct PunctualShadowSlots {

@@ -50,8 +50,21 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
 
 bool ShadowPass::choosePunctualMaps(const GpuScene& scene, const PunctualLights& lights,
                                     const ViewVolume& view, float floor) {
-  // Every light has its map: nothing to choose (and no view points to find each frame).
-  if (!crowded_) return false;
+  // Spot and point lights the bake names where every static surface reads it (setStaticVisibility-
+  // Baked): ranked by the dynamic instances alone.
+  std::vector<uint8_t> baked(lights.size(), 0);
+  bool anyBaked = false, anyUnbaked = false;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    baked[i] =
+        staticBaked_ && lights.bakedIndex(i) >= 0 && lights.light(i).type != LightType::Directional
+            ? 1
+            : 0;
+    anyBaked = anyBaked || baked[i] != 0;
+    anyUnbaked = anyUnbaked || baked[i] == 0;
+  }
+  // Every light has its map and none can do without: nothing to choose (and no view points to
+  // find each frame).
+  if (!crowded_ && !anyBaked) return false;
   std::vector<Light> current;
   std::vector<glm::vec3> power;
   for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -59,9 +72,13 @@ bool ShadowPass::choosePunctualMaps(const GpuScene& scene, const PunctualLights&
     power.push_back(lights.drawnPower(i));
   }
   const std::vector<float> contribution = punctualLightContributions(
-      current, power, shadowReceivers(scene, view, true, view.eye), floor);
-  const std::vector<int> slot =
+      current, power, shadowReceivers(scene, view, anyUnbaked, view.eye), floor, baked);
+  std::vector<int> slot =
       assignPunctualShadowSlots(current, contribution, slots_, 0.0f, lightSlot_);
+  // An unchosen light keeps a map no other light took, unless it needs none: a baked light with
+  // no dynamic instance in its reach reads the bake alone, and its map is not drawn.
+  for (std::size_t i = 0; i < slot.size(); ++i)
+    if (baked[i] && !(contribution[i] > 0.0f)) slot[i] = -1;
   if (slot == lightSlot_) return false;
   const Box sceneBox = scene.bounds();
   std::vector<bool> spotUsed(static_cast<std::size_t>(slots_.spot), false);

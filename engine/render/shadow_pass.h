@@ -49,6 +49,14 @@ class ShadowPass {
     area_.setBakedVisibilityLights(bakedVisibilityLights);
     area_.setBakedDirectSkipped(bakedDirectSkipped);
   }
+  // Whether every static instance reads the bake's visibility (a lightmap region, or corners:
+  // LightmapPass::visibilityOnEveryStaticInstance). Then a static spot or point light the bake
+  // names needs a map only for what moves: it gets one while a dynamic instance is in its reach
+  // (an all-caster map: the dynamic receivers need the static casters' shadows, and static
+  // surfaces take min(V_map, V_baked)), and none otherwise. A directional light keeps its
+  // cascades over the view: the sun's hard shadows across a room are where a texel's blur shows
+  // (docs/shadows.md, the sunlit room: 1.23% with cascades and baked V, 7.50% baked V alone).
+  void setStaticVisibilityBaked(bool baked) { staticBaked_ = baked; }
   // Which area lights have a cube this frame and what the others bring; the most cubes at once.
   const ShadowChoice& areaShadowChoice() const { return area_.lastChoice(); }
   int areaShadowSlots() const { return area_.slots(); }
@@ -61,14 +69,16 @@ class ShadowPass {
   const ShadowDrawCount& lastFrame() const { return lastFrame_; }
 
  private:
-  // Gives this frame's maps to the punctual lights (punctual_shadow_budget.h); true when a
-  // light's slot changed.
+  // Gives this frame's maps to the punctual lights (punctual_shadow_budget.h): by contribution
+  // when some kind has more lights than maps or some light's visibility is baked on every static
+  // surface; true when a light's slot changed.
   bool choosePunctualMaps(const GpuScene& scene, const PunctualLights& lights,
                           const ViewVolume& view, float floor);
 
   ShadowSettings settings_;
   PunctualShadowSlots slots_;  // maps of each kind: at most the kind's maximum and its lights
   bool crowded_ = false;       // some kind has more lights than maps
+  bool staticBaked_ = false;   // every static instance reads the bake's visibility
   gl::Program depth_;
   gl::DepthTarget target_;
   std::vector<int> lightSlot_;  // per punctual light: its map's slot in its kind, −1 for none

@@ -13,8 +13,10 @@ struct TextureUnit {
   static constexpr int kDirectionalShadow = 8;  // reserved: cascades (shadow_directional.glsl)
   // sampler2DArray: every area-light slot's cube, 6 layers each (area_shadow_maps.h)
   static constexpr int kAreaShadow0 = 9;
-  static constexpr int kProbes = 10;    // samplerBuffer: irradiance probes (probes.glsl); 11 free
-  static constexpr int kLightmap = 12;  // sampler2D: baked irradiance (lightmap.glsl)
+  static constexpr int kProbes = 10;  // samplerBuffer: irradiance probes (probes.glsl)
+  // samplerBuffer: the probe-lit instances' baked visibility per corner (baked_visibility.glsl)
+  static constexpr int kCornerVisibility = 11;
+  static constexpr int kLightmap = 12;        // sampler2D: baked irradiance (lightmap.glsl)
   static constexpr int kLightmapCharts = 13;  // sampler2D: chart colours (lightmap.glsl)
   static constexpr int kLightTable = 14;      // samplerBuffer: every light (render/light_table.h)
   // sampler2DArrayShadow: the VPL groups' shadow cubes (vpl_shadows.glsl). Beyond the 16 units

@@ -22,11 +22,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Two grids: 2×2×2 around instance 1, 2×3×2 around instance 4.
+// Two grids: 2×2×2 around instance 1 (one triangle's 3 corners), 2×3×2 around instance 4
+// (two triangles' 6 corners); the corners name 2 area lights and 1 punctual light.
 IrradianceProbes someProbes() {
   IrradianceProbes p;
-  p.grids.push_back({1, 0, {2, 2, 2}, {-1.0f, 0.5f, 2.0f}, {0.1f, 0.2f, 0.3f}, 0.025f});
-  p.grids.push_back({4, 8, {2, 3, 2}, {3.0f, -2.0f, 0.0f}, {0.5f, 0.25f, 1e-3f}, 0.0f});
+  p.grids.push_back({1, 0, {2, 2, 2}, {-1.0f, 0.5f, 2.0f}, {0.1f, 0.2f, 0.3f}, 0.025f, 0, 3});
+  p.grids.push_back({4, 8, {2, 3, 2}, {3.0f, -2.0f, 0.0f}, {0.5f, 0.25f, 1e-3f}, 0.0f, 3, 6});
+  p.visibility.lightCount = 2;
+  p.visibility.punctualCount = 1;
+  for (uint32_t i = 0; i < 9; ++i) {
+    TexelVisibility corner;
+    corner.light = {static_cast<uint16_t>(i % 3), kOtherLights, kNoLight, kNoLight};
+    corner.visible = {0.125f * static_cast<float>(i % 8), 1.0f, 1.0f, 1.0f};
+    p.visibility.corners.push_back(corner);
+  }
   for (uint32_t i = 0; i < 20; ++i) {
     ProbeIrradiance probe;
     probe.sh[0] = {1.0f + i, 2.0f, 0.0f};
@@ -62,17 +71,26 @@ std::string decodeError(const std::vector<unsigned char>& bytes) {
 TEST(ProbeFile, BytesFollowTheDocumentedLayout) {
   const IrradianceProbes p = someProbes();
   const std::vector<unsigned char> b = encodeProbes(p);
-  ASSERT_EQ(b.size(), 20u + 48u * 2 + 48u * 20);
+  ASSERT_EQ(b.size(), 32u + 56u * 2 + 48u * 20 + 24u * 9);
   EXPECT_EQ(std::memcmp(b.data(), "BNCPRBS\0", 8), 0);
   EXPECT_EQ(u32At(b, 8), kProbeFormatVersion);
   EXPECT_EQ(u32At(b, 12), 2u);
   EXPECT_EQ(u32At(b, 16), 20u);
-  EXPECT_EQ(u32At(b, 20 + 48), 4u);                            // grid 1's instance
-  EXPECT_EQ(u32At(b, 20 + 48 + 4), 8u);                        // its first probe
-  EXPECT_EQ(u32At(b, 20 + 48 + 12), 3u);                       // its count along y
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 20 + 44)), 0.025f);  // grid 0's normal offset
-  // Probe 3's E1−1 green, at 20 + 96 + 48·3 + 4·4.
-  EXPECT_EQ(std::bit_cast<float>(u32At(b, 20 + 96 + 48 * 3 + 16)), 1e-30f);
+  EXPECT_EQ(u32At(b, 20), 9u);                                 // corners
+  EXPECT_EQ(u32At(b, 24), 2u);                                 // area lights they may name
+  EXPECT_EQ(u32At(b, 28), 1u);                                 // punctual lights
+  EXPECT_EQ(u32At(b, 32 + 56), 4u);                            // grid 1's instance
+  EXPECT_EQ(u32At(b, 32 + 56 + 4), 8u);                        // its first probe
+  EXPECT_EQ(u32At(b, 32 + 56 + 12), 3u);                       // its count along y
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 32 + 44)), 0.025f);  // grid 0's normal offset
+  EXPECT_EQ(u32At(b, 32 + 56 + 48), 3u);                       // grid 1's first corner
+  EXPECT_EQ(u32At(b, 32 + 56 + 52), 6u);                       // its corner count
+  // Probe 3's E1−1 green, at 32 + 112 + 48·3 + 4·4.
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, 32 + 112 + 48 * 3 + 16)), 1e-30f);
+  // Corner 5: its lights (u16) 2 and the other lights' mark, then its first V, 0.625.
+  const std::size_t corner5 = 32 + 112 + 48 * 20 + 24 * 5;
+  EXPECT_EQ(u32At(b, corner5), 2u | (uint32_t{kOtherLights} << 16));
+  EXPECT_EQ(std::bit_cast<float>(u32At(b, corner5 + 8)), 0.625f);
 }
 
 TEST(ProbeFile, RoundTripIsBitExact) {
@@ -85,7 +103,8 @@ TEST(ProbeFile, RoundTripIsBitExact) {
 TEST(ProbeFile, EachDamageIsRefusedWithTheFileAndTheReason) {
   const std::vector<unsigned char> good = encodeProbes(someProbes());
   ASSERT_EQ(decodeError(good), "");
-  constexpr std::size_t grid0 = 20, grid1 = 20 + 48, probe0 = 20 + 96;
+  constexpr std::size_t grid0 = 32, grid1 = 32 + 56, probe0 = 32 + 112;
+  constexpr std::size_t corner0 = probe0 + 48 * 20;
   struct Case {
     const char* what;
     std::function<void(std::vector<unsigned char>&)> damage;
@@ -119,6 +138,23 @@ TEST(ProbeFile, EachDamageIsRefusedWithTheFileAndTheReason) {
        "a coefficient is not finite or beyond"},
       {"negative mean", [&](auto& b) { putF32(b, probe0 + 48 * 2 + 8, -1e-3f); },
        "probe 2: mean irradiance"},
+      {"too many lights", [](auto& b) { putU32(b, 24, 70000); }, "at most 65533"},
+      {"corner count", [](auto& b) { putU32(b, 20, 8); }, "announced need"},
+      {"first corner", [&](auto& b) { putU32(b, grid1 + 48, 2); }, "the grids before it hold 3"},
+      {"corners per triangle", [&](auto& b) { putU32(b, grid1 + 52, 5); }, "not 3 per triangle"},
+      {"corners past the end", [&](auto& b) { putU32(b, grid1 + 52, 9); }, "run past the 9"},
+      {"unused corners", [&](auto& b) { putU32(b, grid1 + 52, 3); }, "the grids hold 6 corners"},
+      {"corner light", [&](auto& b) { b[corner0 + 24 * 4] = 3; }, "corner 4: light 3 of 3"},
+      {"corner light twice",
+       [&](auto& b) {
+         b[corner0 + 2] = 0;
+         b[corner0 + 3] = 0;
+       },
+       "corner 0: names light 0 twice"},
+      {"corner V", [&](auto& b) { putF32(b, corner0 + 24 * 7 + 8, nan); },
+       "corner 7: visible fraction is not in [0, 1]"},
+      {"corner V over 1", [&](auto& b) { putF32(b, corner0 + 12, 1.5f); },
+       "visible fraction is not in [0, 1]"},
   };
   for (const Case& c : cases) {
     std::vector<unsigned char> bad = good;
@@ -210,6 +246,30 @@ TEST(ProbeFile, AGridAroundAnInstanceWithARegionOrADynamicOneIsRefused) {
   writeBake(dir, probeBake(scene, 3));
   message = readBakeError(dir, scene);
   EXPECT_NE(message.find("out of range"), std::string::npos) << message;
+}
+
+// The corners must be 3 per triangle of the instance's mesh and name the scene's lights.
+TEST(ProbeFile, CornersThatAreNotTheMeshsOrNameOtherLightsAreRefused) {
+  const Scene scene = probeScene();  // one triangle, no light
+  const fs::path dir = freshDir("corners") / "scene.bake";
+  Bake bake = probeBake(scene, 1);
+  bake.probes->grids[0].cornerCount = 3;
+  bake.probes->visibility.corners.assign(3, TexelVisibility{});
+  writeBake(dir, bake);
+  EXPECT_EQ(readBakeError(dir, scene), "");
+  bake.probes->grids[0].cornerCount = 6;
+  bake.probes->visibility.corners.assign(6, TexelVisibility{});
+  writeBake(dir, bake);
+  std::string message = readBakeError(dir, scene);
+  EXPECT_NE(message.find("probes.bin"), std::string::npos) << message;
+  EXPECT_NE(message.find("6 visibility corners, its mesh 3"), std::string::npos) << message;
+  bake.probes->grids[0].cornerCount = 3;
+  bake.probes->visibility.corners.assign(3, TexelVisibility{});
+  bake.probes->visibility.lightCount = 1;
+  writeBake(dir, bake);
+  message = readBakeError(dir, scene);
+  EXPECT_NE(message.find("its corners name 1 static area and 0 punctual lights"), std::string::npos)
+      << message;
 }
 
 TEST(ProbeFile, AManifestThatDisagreesIsRefusedWhenWritten) {

@@ -259,6 +259,8 @@ TEST(Tiles, TheProbesDoNotDependOnTheTileSizeOrTheThreads) {
   const SceneBake x = bakeScene(scene, a), y = bakeScene(scene, b);
   ASSERT_TRUE(x.folder.probes && y.folder.probes);
   EXPECT_GE(x.folder.probes->grids.size(), 1u);  // the block, and what the coarse atlas adds
+  // With the probe-lit instances' visibility per triangle corner (12 triangles of the block).
+  EXPECT_GE(x.folder.probes->visibility.corners.size(), 36u);
   EXPECT_EQ(encodeProbes(*x.folder.probes), encodeProbes(*y.folder.probes));
   ASSERT_TRUE(x.folder.manifest.probes && y.folder.manifest.probes);
   EXPECT_EQ(x.folder.manifest.probes->samplesTotal, y.folder.manifest.probes->samplesTotal);

@@ -1,12 +1,15 @@
 // Direct light of many area lights over thin casters, the renderer against the path tracer
-// (at CI size; also a dynamic box under a static panel): the renderer's
+// (at CI size; also a dynamic box under a static panel, and static instances without a lightmap
+// that read their baked visibility per triangle corner): the renderer's
 // direct-only frame, 4× supersampled and box-filtered, against bounce-trace's --direct-only
 // image over the pixels that see a static surface (indirect_accuracy.h's comparison). Shadow
 // maps fail here (at most 6 of the 16 area lights get a cube, and 2 cm rails are thinner than
 // their texels); baked visibility does not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include "indirect_accuracy.h"
 #include "lightmap_scenes.h"
@@ -145,6 +148,209 @@ TEST(BakedDirect, ADynamicBoxCastsAndReceivesShadowsUnderABakedPanel) {
   ASSERT_GT(pixels, kWidth * kHeight / 2);
   std::printf("dynamic box under a baked panel: %d of %d pixels disagree\n", disagree, pixels);
   EXPECT_LE(disagree, pixels / 100);
+}
+
+// A 1.2 m mat on the floor (20 × 20 cells: 6 cm triangles) and a table top, both static and left
+// without a lightmap (lightmapScale 0: probe-lit, their visibility baked per triangle corner),
+// under a panel; the floor around them lightmapped. `dynamicBox`: a box on the mat, partly under
+// the table.
+Scene matUnderAProbeLitTable(bool dynamicBox) {
+  Scene scene;
+  addQuad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, matte("floor", glm::vec3(0.7f)));
+  Material glow;
+  glow.name = "glow";
+  glow.emission = glm::vec3(10.0f);
+  addQuad(scene, {-0.3f, 1.2f, -0.2f}, {0.6f, 0, 0}, {0, 0, 0.4f}, glow);  // facing down
+  Mesh mat;
+  mat.name = "mat";
+  constexpr int kCells = 20;
+  const glm::vec3 corner(-0.7f, 0.01f, -0.7f);
+  const float cell = 1.2f / kCells;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      mat.positions.push_back(corner + glm::vec3(cell * i, 0.0f, cell * j));
+      mat.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    }
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) {
+      const auto a = static_cast<uint32_t>(j * (kCells + 1) + i), b = a + 1, c = a + kCells + 1,
+                 d = c + 1;
+      for (const uint32_t k : {a, c, d, a, d, b}) mat.indices.push_back(k);  // facing +y
+    }
+  addMesh(scene, std::move(mat), matte("mat", glm::vec3(0.6f, 0.5f, 0.4f)));
+  scene.instances.back().lightmapScale = 0.0f;
+  addBox(scene, {-0.5f, 0.55f, -0.5f}, {0.1f, 0.6f, 0.2f}, matte("table", glm::vec3(0.6f)));
+  scene.instances.back().lightmapScale = 0.0f;
+  if (dynamicBox) {
+    addBox(scene, {0.0f, 0.01f, 0.05f}, {0.3f, 0.25f, 0.4f}, matte("box", glm::vec3(0.8f)));
+    scene.instances.back().mobility = Mobility::Dynamic;
+  }
+  return scene;
+}
+
+// Pixels (interior, lit in the reference) that disagree with it by more than 20% + 3σ + 1% of
+// the compared pixels' mean, and how many were compared; `instances`: only those (empty: every
+// surface). The mean's 1%: V interpolated linearly over a triangle cannot follow the umbra's
+// quadratic onset (the largest miss, h²/8·V'' over 6 cm triangles in a ~0.5 m penumbra, is
+// ~0.2% of the unshadowed light), where 20% of a nearly black pixel is no allowance at all.
+std::pair<int, int> disagreeingPixels(const Scene& scene, const Camera& camera,
+                                      const Image& rendered, const Reference& reference,
+                                      const std::vector<uint32_t>& instances) {
+  const WorldGeometry geometry = flatten(scene);
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  const PixelSurfaces surfaces = findPixelSurfaces(geometry, *kernel, camera, kWidth, kHeight);
+  std::vector<std::size_t> compared;
+  double mean = 0.0;
+  for (std::size_t i = 0; i < rendered.pixels.size(); ++i) {
+    const double yt = luminance(reference.radiance.pixels[i]);
+    if (!surfaces.interior[i] || !(yt > 0.0)) continue;
+    const uint32_t instance = geometry.triangleInstance[surfaces.triangle[i]];
+    if (!instances.empty() &&
+        std::find(instances.begin(), instances.end(), instance) == instances.end())
+      continue;
+    compared.push_back(i);
+    mean += yt;
+  }
+  mean /= std::max<double>(1.0, static_cast<double>(compared.size()));
+  int disagree = 0;
+  for (const std::size_t i : compared) {
+    const double yt = luminance(reference.radiance.pixels[i]);
+    const double sigma = luminance(reference.stdError.pixels[i]);
+    disagree += std::abs(luminance(rendered.pixels[i]) - yt) > 0.2 * yt + 3 * sigma + 0.01 * mean;
+  }
+  return {disagree, static_cast<int>(compared.size())};
+}
+
+// Every static surface reads baked visibility (the mat and the table per corner) and nothing
+// moves: no shadow map is drawn and no pixel takes a shadow-map tap (the cost view), and the
+// table's soft shadow on the mat still matches the path tracer.
+TEST(BakedDirect, ProbeLitInstancesReadTheirCornersAndNoShadowMapIsDrawn) {
+  const Scene scene = matUnderAProbeLitTable(false);
+  const Camera camera = overTheRoom();
+  const Bake bake = bakeVisibility(scene).folder;
+  ASSERT_TRUE(bake.probes.has_value());
+  ASSERT_EQ(bake.probes->grids.size(), 2u);  // the mat and the table
+  EXPECT_EQ(bake.probes->visibility.corners.size(), 3u * (800u + 12u));
+  testContext();
+  RendererSettings cost;
+  cost.mode = RenderMode::Cost;
+  ForwardRenderer counter(scene, gl::shaderDirectory(), cost, &bake);
+  const Image counts = counter.renderImage(camera, kWidth, kHeight);
+  EXPECT_EQ(counter.shadowDrawCount().views, 0);
+  EXPECT_EQ(counter.areaShadowChoice().lights.size(), 0u);
+  float taps = 0.0f;
+  for (const glm::vec3& c : counts.pixels) taps = std::max(taps, c.b);
+  EXPECT_EQ(taps, 0.0f) << "the most shadow-map taps a pixel took";
+
+  const Reference reference =
+      traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
+  const Image rendered = renderDirect(scene, &bake, camera);
+  const uint32_t mat = 2, table = 3;
+  const auto [disagree, pixels] =
+      disagreeingPixels(scene, camera, rendered, reference, {mat, table});
+  const auto [onTable, tablePixels] =
+      disagreeingPixels(scene, camera, rendered, reference, {table});
+  const IndirectComparison all = compareIndirect(scene, camera, rendered, reference);
+  std::printf(
+      "probe-lit mat and table under a panel: %d of %d of their pixels disagree (table %d of "
+      "%d); every surface %.2f%% (bias %+.2f%%, reference noise %.2f%%)\n",
+      disagree, pixels, onTable, tablePixels, 100 * all.meanAbsRelError, 100 * all.bias,
+      100 * all.referenceNoise);
+  ASSERT_GT(pixels, 200);
+  EXPECT_LE(disagree, pixels / 100);
+  EXPECT_LT(all.meanAbsRelError, 0.05 + all.referenceNoise);
+}
+
+// The same with a dynamic box on the mat, half under the probe-lit table: the box's shadow on
+// the mat and the floor (static receivers: baked V times the dynamic casters' cube) and the
+// table's shadow on the box (a dynamic receiver: the all-caster cube) both appear.
+TEST(BakedDirect, ADynamicBoxShadowsTheProbeLitMatAndTakesTheProbeLitTablesShadow) {
+  const Scene scene = matUnderAProbeLitTable(true);
+  const Camera camera = overTheRoom();
+  const Bake bake = bakeVisibility(scene).folder;
+  ASSERT_TRUE(bake.probes.has_value());
+  const Reference reference =
+      traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
+  const Image rendered = renderDirect(scene, &bake, camera);
+  const uint32_t mat = 2, box = 4;
+  const auto [onMat, matPixels] = disagreeingPixels(scene, camera, rendered, reference, {mat});
+  const auto [onBox, boxPixels] = disagreeingPixels(scene, camera, rendered, reference, {box});
+  const auto [disagree, pixels] = disagreeingPixels(scene, camera, rendered, reference, {});
+  std::printf(
+      "dynamic box on a probe-lit mat under a probe-lit table: %d of %d pixels disagree (mat %d "
+      "of %d, box %d of %d)\n",
+      disagree, pixels, onMat, matPixels, onBox, boxPixels);
+  ASSERT_GT(boxPixels, 20);
+  EXPECT_LE(onBox, boxPixels / 20);
+  EXPECT_LE(onMat, matPixels / 20);
+  EXPECT_LE(disagree, pixels / 100);
+}
+
+// A static spot over a static table on a lightmapped floor: the bake names the spot, so with
+// nothing dynamic no map is drawn and no pixel takes a tap, and the table's shadow comes from the
+// floor's 2.5 cm texels alone: its hard edge blurred over a texel (5.1% off the tracer over the
+// frame, against 1.0% with the map; bound 10%: without the baked V the shadow is gone, 128%). A
+// dynamic box in the spot's reach brings its map back (all casters: the box's shadow on the
+// floor, the table's on the box; static surfaces take min(V_map, V_baked)).
+TEST(BakedDirect, ABakedSpotDrawsAMapOnlyWhileADynamicBoxIsInItsReach) {
+  const auto spotScene = [](bool box) {
+    Scene scene;
+    addQuad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, matte("floor", glm::vec3(0.7f)));
+    addBox(scene, {-0.5f, 0.55f, -0.5f}, {0.1f, 0.6f, 0.2f}, matte("table", glm::vec3(0.6f)));
+    if (box) {
+      addBox(scene, {0.2f, 0.0f, 0.1f}, {0.45f, 0.25f, 0.35f}, matte("box", glm::vec3(0.8f)));
+      scene.instances.back().mobility = Mobility::Dynamic;
+    }
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.1f, 1.3f, 0.1f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.intensity = glm::vec3(3.0f);
+    spot.innerConeAngle = 0.6f;
+    spot.outerConeAngle = 0.9f;
+    scene.lights.push_back(spot);
+    return scene;
+  };
+  const Camera camera = overTheRoom();
+  testContext();
+  RendererSettings cost;
+  cost.mode = RenderMode::Cost;
+  {
+    const Scene scene = spotScene(false);
+    const Bake bake = bakeVisibility(scene).folder;
+    ASSERT_TRUE(bake.visibility.has_value());
+    ASSERT_EQ(bake.visibility->punctualCount, 1u);
+    ForwardRenderer counter(scene, gl::shaderDirectory(), cost, &bake);
+    const Image counts = counter.renderImage(camera, kWidth, kHeight);
+    EXPECT_EQ(counter.shadowDrawCount().views, 0);
+    EXPECT_EQ(counter.punctualShadowSlots()[0], -1);
+    float taps = 0.0f;
+    for (const glm::vec3& c : counts.pixels) taps = std::max(taps, c.b);
+    EXPECT_EQ(taps, 0.0f) << "the most shadow-map taps a pixel took";
+    const Reference reference =
+        traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
+    const IndirectComparison all =
+        compareIndirect(scene, camera, renderDirect(scene, &bake, camera), reference);
+    std::printf("baked spot, no map: %.2f%% (bias %+.2f%%, reference noise %.2f%%)\n",
+                100 * all.meanAbsRelError, 100 * all.bias, 100 * all.referenceNoise);
+    EXPECT_LT(all.meanAbsRelError, 0.10 + all.referenceNoise);
+  }
+  const Scene scene = spotScene(true);
+  const Bake bake = bakeVisibility(scene).folder;
+  ForwardRenderer counter(scene, gl::shaderDirectory(), cost, &bake);
+  counter.renderImage(camera, kWidth, kHeight);
+  EXPECT_GT(counter.shadowDrawCount().views, 0);
+  EXPECT_EQ(counter.punctualShadowSlots()[0], 0);
+  const Reference reference =
+      traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
+  const Image rendered = renderDirect(scene, &bake, camera);
+  const uint32_t floor = 0;
+  const auto [onFloor, floorPixels] =
+      disagreeingPixels(scene, camera, rendered, reference, {floor});
+  std::printf("baked spot and a dynamic box: %d of %d floor pixels disagree\n", onFloor,
+              floorPixels);
+  ASSERT_GT(floorPixels, kWidth * kHeight / 4);
+  EXPECT_LE(onFloor, floorPixels / 100);
 }
 
 }  // namespace

@@ -99,9 +99,16 @@ TEST(BakedPunctualVisibility, ATexelsVisibleFractionScalesTheLampsExactIrradianc
 }
 
 // The shared slot's V mixes other lights' visibility (exact only for their weighted sum): a lamp
-// with a shadow map ignores it, one without takes it as the area lights do.
+// with a shadow map ignores it, one without takes it as the area lights do. A baked lamp has a
+// map only while something dynamic is in its reach (shadow_pass.h): here a box under the floor,
+// hidden from the camera and casting nothing on the floor.
 TEST(BakedPunctualVisibility, TheSharedSlotShadowsOnlyALampWithoutAMap) {
-  const Scene scene = floorUnderLamp(Mobility::Static);
+  Scene scene = floorUnderLamp(Mobility::Static);
+  Material grey;
+  grey.name = "box";
+  grey.albedo = glm::vec3(0.5f);
+  addBox(scene, {-0.1f, -0.3f, -0.1f}, {0.1f, -0.1f, 0.1f}, grey);
+  scene.instances.back().mobility = Mobility::Dynamic;
   const Bake bake = lampBake(scene, 0.2f, true);
   expectRatio(frames(scene, bake, true), 1.0f, "with its cube");
   expectRatio(frames(scene, bake, false), 0.2f, "without a map");

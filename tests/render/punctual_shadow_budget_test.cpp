@@ -99,6 +99,24 @@ TEST(PunctualShadowBudget, ViewPointsRankByTheMeanIrradianceOverTheVisibleSurfac
   EXPECT_EQ(assignPunctualShadowSlots(lights, c, {0, 1, 0}, 0.0f, {}), (std::vector<int>{0, -1}));
 }
 
+// A light whose visibility every static surface reads from the bake (bakedOnStatics) is ranked
+// by the dynamic instances in its reach alone: the view points bring it nothing, so with no
+// dynamic instance it needs no map; a box under it brings its largest irradiance there.
+TEST(PunctualShadowBudget, ABakedLightIsRankedByTheDynamicInstancesAlone) {
+  const std::vector<Light> lights = {point({0, 2, 0}, 4.0f), point({10, 1, 0}, 1.0f)};
+  const std::vector<uint8_t> baked = {1, 0};
+  ShadowReceivers view;
+  view.viewPoints = {{0, 0, 0}, {0, 1, 0}, {10, 0, 0}};
+  std::vector<float> c = punctualLightContributions(lights, powers(lights), view, 0.0f, baked);
+  EXPECT_EQ(c[0], 0.0f);
+  EXPECT_NEAR(c[1], (1.0f / 101 + 1.0f / 100 + 1.0f / 1) / 3, 1e-5f);  // not baked: as before
+  ShadowReceivers box = boxAt({0, 0, 0});
+  box.viewPoints = view.viewPoints;
+  c = punctualLightContributions(lights, powers(lights), box, 0.0f, baked);
+  // The box's top (0.3 m up) is 1.7 m from the lamp: I/d².
+  EXPECT_NEAR(c[0], 4.0f / (1.7f * 1.7f), 1e-4f);
+}
+
 // Weighted by the screen their surface takes, near points rank a light; one that reaches the
 // floor at a single point still competes, with its (small) mean; one under it everywhere does
 // not, whatever its mean.

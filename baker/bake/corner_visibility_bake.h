@@ -1,0 +1,63 @@
+// Bakes the static lights' visibility per triangle corner of the static instances the atlas
+// leaves without a lightmap region (bake_folder/irradiance_probes.h, ProbeVisibility): their
+// direct light is drawn live, and a lightmapped surface's baked V (light_visibility_bake.h) does
+// not reach them. Corner k of a triangle takes the texels' estimator
+// (estimatePointSetVisibility, the same pairs, weights and slots) over M points of the triangle
+// drawn with density ∝ b_k, the corner's barycentric weight: b_k ~ Beta(2, 2), by inverting its
+// CDF 3b² − 2b³, and the rest 1 − b_k split between the other two corners uniformly. Then
+//   V_k = ∫ b_k E_l vis / ∫ b_k E_l   over the triangle,
+// the V the renderer interpolates with the fragment's barycentric weights. The points' two
+// coordinates are an R2 (Kronecker) sequence with a Cranley–Patterson rotation per corner,
+// independent of the light samples' rotation, so every pair (x_k, y_k) is uniform over
+// triangle × light.
+//
+// Each corner is computed from its own keys (seed, corner number, light): the result does not
+// depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bake_folder/irradiance_probes.h"
+#include "scene/area_lights.h"
+#include "scene/scene.h"
+
+namespace bounce {
+
+class RayKernel;
+struct WorldGeometry;
+struct TexelPoint;
+
+struct CornerVisibilitySettings {
+  int samplesPerLight = 64;  // M, as the texels': σ(V) ≤ 1/(2√M) per corner
+  uint32_t seed = 0;
+  int threads = 0;  // 0: all cores
+};
+
+// M points of world triangle `t` of `geometry` for its corner `corner` (0, 1, 2 in the world
+// triangle's order), density ∝ the corner's barycentric weight, from `key`'s rotation.
+std::vector<TexelPoint> cornerPoints(const WorldGeometry& geometry, uint32_t t, int corner,
+                                     int count, uint32_t key);
+
+struct CornerVisibilityBake {
+  ProbeVisibility visibility;
+  // Per instance of `tracedInstances` (in order): its first corner and its corner count
+  // (3 per triangle, in its mesh's `indices` order).
+  std::vector<uint32_t> firstCorner, cornerCount;
+  uint64_t rays = 0;
+  double seconds = 0.0;
+};
+
+// `tracedInstances`: the instances to bake, as indices of `geometry`'s triangleInstance (the
+// static scene's numbering), ascending; `mirrored[i]` whether instance i's transform mirrors
+// (flatten swapped corners 1 and 2 of its triangles: the result is put back in the mesh's
+// order). `lights` must hold the static lights first; `punctual` is Scene::lights.
+CornerVisibilityBake bakeCornerVisibility(const AreaLightSet& lights,
+                                          std::span<const Light> punctual,
+                                          const WorldGeometry& geometry, const RayKernel& kernel,
+                                          std::span<const uint32_t> tracedInstances,
+                                          std::span<const uint8_t> mirrored,
+                                          const CornerVisibilitySettings& settings);
+
+}  // namespace bounce
