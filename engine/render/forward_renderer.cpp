@@ -190,7 +190,8 @@ void ForwardRenderer::setBake(const Bake& bake) {
   // the dynamic instances only.
   p.shadows.setAreaBake(p.lightmap.bakedVisibilityLights(p.scene), true);
   // Likewise the static spot and point lights the bake names: a map only for what moves.
-  p.shadows.setStaticVisibilityBaked(p.lightmap.visibilityOnEveryStaticInstance(p.scene));
+  p.shadows.setStaticVisibilityBaked(settings_.shadows.bakedPunctualMapsOnlyForDynamic &&
+                                     p.lightmap.visibilityOnEveryStaticInstance(p.scene));
   // Baked visibility holds the static occluders; the dynamic ones still shadow static surfaces
   // through cubes of their own.
   if (p.lightmap.hasBakedVisibility() && hasDynamicInstance(p.scene) &&

@@ -17,6 +17,12 @@ struct ShadowSettings {
   ShadowFilter filter = ShadowFilter::Poisson;
   // Radius of the Poisson kernel in texels of the map (ignored by Hardware).
   float filterRadius = 1.5f;
+  // A static spot or point light whose visibility the bake holds on every static surface draws
+  // a map only while a dynamic instance is in its reach; static surfaces then read the texels' V
+  // alone (docs/shadows.md). Off by default: a texel's V alone lets the light through at a thin
+  // wall's edge pixels (ThinWallLeak.NoLightmapLightAtTheDarkRoomsMultisampledEdgePixels: one
+  // pixel at 3% of the lit room's mean), where min(V_map, V) holds it at 0.
+  bool bakedPunctualMapsOnlyForDynamic = false;
 };
 
 // What a shadow pass drew in one frame: map views (a spot map, a cube face) and instances drawn
