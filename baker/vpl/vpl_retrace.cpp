@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "bake_folder/bake_folder.h"
 #include "ray/ray_kernel.h"
 #include "scene/world_geometry.h"
 

@@ -18,12 +18,14 @@
 
 #include <glm/glm.hpp>
 
-#include "bake_folder/bake_folder.h"
 #include "bake_folder/vpl.h"
 #include "scene/scene.h"
 #include "vpl/vpl_generate.h"
 
 namespace bounce {
+
+struct Bake;
+struct BakeManifest;
 
 // The count rule a bake's VPLs were traced with, from its bake.json ("vpls": cap, errorTarget;
 // "settings": seed; a hand-made manifest leaves them 0: VplSettings{}, bounce-bake's defaults), for

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "pipeline/scene_bake.h"
+
 namespace bounce {
 
 SceneBakeSettings BackgroundBake::previewSettings(int threads) {

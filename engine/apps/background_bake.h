@@ -13,8 +13,9 @@
 #include <thread>
 
 #include "bake_folder/bake_folder.h"
-#include "pipeline/scene_bake.h"
+#include "pipeline/scene_bake_settings.h"
 #include "scene/scene.h"
+#include "trace/stage_progress.h"
 
 namespace bounce {
 

@@ -4,6 +4,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/texture.h"
+#include "render/gpu_scene.h"
 #include "render/shadow_receivers.h"
 #include "render/texture_units.h"
 

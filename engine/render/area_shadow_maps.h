@@ -17,10 +17,11 @@
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/area_shadow_budget.h"
-#include "render/gpu_scene.h"
 #include "render/shadow_map_geometry.h"
 
 namespace bounce {
+
+class GpuScene;
 
 // Must match AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl.
 constexpr int kAreaShadowSamples = 32;

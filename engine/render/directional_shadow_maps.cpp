@@ -1,6 +1,7 @@
 #include "render/directional_shadow_maps.h"
 
 #include "gl/draw_state.h"
+#include "render/gpu_scene.h"
 #include "render/shader_constants.h"
 #include "render/texture_units.h"
 

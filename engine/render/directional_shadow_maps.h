@@ -11,11 +11,12 @@
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
 #include "render/cascades.h"
-#include "render/gpu_scene.h"
 #include "render/shadow_map_stamp.h"
 #include "render/shadow_settings.h"
 
 namespace bounce {
+
+class GpuScene;
 
 class DirectionalShadowMaps {
  public:

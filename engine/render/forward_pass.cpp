@@ -1,8 +1,16 @@
 #include "render/forward_pass.h"
 
 #include "gl/draw_state.h"
+#include "gl/render_target.h"
+#include "render/gpu_scene.h"
+#include "render/light_culling.h"
+#include "render/light_table.h"
+#include "render/lightmap_pass.h"
+#include "render/probe_pass.h"
 #include "render/shader_constants.h"
+#include "render/shadow_pass.h"
 #include "render/texture_units.h"
+#include "render/vpl_pass.h"
 
 namespace bounce {
 

@@ -7,17 +7,23 @@
 
 #include <filesystem>
 
-#include "gl/render_target.h"
+#include <glm/glm.hpp>
+
 #include "gl/shader.h"
-#include "render/gpu_scene.h"
-#include "render/light_culling.h"
-#include "render/light_table.h"
-#include "render/lightmap_pass.h"
-#include "render/probe_pass.h"
-#include "render/shadow_pass.h"
-#include "render/vpl_pass.h"
+#include "render/render_mode.h"
 
 namespace bounce {
+
+class GpuScene;
+class LightCulling;
+class LightTable;
+class LightmapPass;
+class ProbePass;
+class ShadowPass;
+class VplPass;
+namespace gl {
+class RenderTarget;
+}  // namespace gl
 
 class ForwardPass {
  public:

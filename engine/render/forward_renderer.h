@@ -18,18 +18,20 @@
 #include <string>
 #include <vector>
 
-#include "gl/render_target.h"
 #include "image/image.h"
-#include "render/area_shadow_budget.h"
 #include "render/frame_profile.h"
-#include "render/light_culling.h"
+#include "render/light_culling_settings.h"
 #include "render/render_mode.h"
 #include "render/shadow_settings.h"
-#include "render/vpl_pass.h"
+#include "render/vpl_render_settings.h"
 #include "scene/scene.h"
 
 namespace bounce {
+
+class VplPass;
+struct ShadowChoice;
 namespace gl {
+class RenderTarget;
 class GpuPassTimers;  // gl/gpu_pass_timers.h
 }  // namespace gl
 

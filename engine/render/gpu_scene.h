@@ -17,6 +17,7 @@
 #include "gl/shader.h"
 #include "gl/texture.h"
 #include "render/frustum.h"
+#include "render/gpu_instance.h"
 #include "scene/area_lights.h"
 #include "scene/load.h"
 #include "scene/scene.h"
@@ -28,17 +29,6 @@ struct GpuMaterial {
   glm::vec3 emission{0.0f};     // Le, W/(sr·m²) (surface_rules.h: emittedRadiance)
   bool doubleSided = false;
   int texture = -1;  // index into the scene's textures, -1 for none
-};
-
-struct GpuInstance {
-  uint32_t mesh = 0;
-  uint32_t material = 0;  // into GpuScene::materials(); the absorber for a bad index
-  Mobility mobility = Mobility::Static;
-  glm::mat4 model{1.0f};         // object → world
-  glm::mat3 normalMatrix{1.0f};  // inverse transpose of model's linear part
-  bool mirrored = false;         // det < 0: winding flips, so culling flips
-  Box worldBox;                  // metres
-  gl::VertexArray vertexArray;
 };
 
 class GpuScene {

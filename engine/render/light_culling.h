@@ -18,6 +18,7 @@
 #include "gl/shader.h"
 #include "render/cluster_grid.h"
 #include "render/frustum.h"
+#include "render/light_culling_settings.h"
 #include "render/light_cutoff.h"
 #include "render/light_grid.h"
 #include "render/light_table.h"
@@ -26,20 +27,6 @@
 #include "scene/scene.h"
 
 namespace bounce {
-
-struct LightCullingSettings {
-  bool enabled = true;
-  // E_floor, W/m²: below it a light is left out (light_cutoff.h); the default is EV 0's.
-  float irradianceFloor = irradianceFloorForExposure(0.0f);
-  ClusterGridSize grid;
-};
-
-// What the last frame's lists held.
-struct LightGridStats {
-  int clusters = 0;
-  std::size_t punctualEntries = 0, areaEntries = 0;  // Σ over clusters of their list lengths
-  std::size_t maxPunctual = 0, maxArea = 0;          // the longest lists
-};
 
 class LightCulling {
  public:

@@ -1,5 +1,7 @@
 #include "render/shadow_casters.h"
 
+#include "render/gpu_scene.h"
+
 #include "gl/draw_state.h"
 
 namespace bounce {

@@ -4,10 +4,11 @@
 #pragma once
 
 #include "gl/shader.h"
-#include "render/gpu_scene.h"
 #include "render/shadow_map_geometry.h"
 
 namespace bounce {
+
+class GpuScene;
 
 // Returns the number of instances drawn.
 int drawShadowCasters(const GpuScene& scene, const ShadowView& view, glm::vec3 lightPosition,

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/gpu_scene.h"
+#include "render/gpu_instance.h"
 
 namespace bounce {
 

@@ -4,6 +4,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/gpu_pass_timers.h"
+#include "render/gpu_scene.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/shader_constants.h"
 #include "render/shadow_receivers.h"

@@ -16,13 +16,14 @@
 #include "gl/shader.h"
 #include "render/area_shadow_maps.h"
 #include "render/directional_shadow_maps.h"
-#include "render/gpu_scene.h"
 #include "render/point_shadow_maps.h"
 #include "render/punctual_lights.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/spot_shadow_maps.h"
 
 namespace bounce {
+
+class GpuScene;
 namespace gl {
 class GpuPassTimers;  // gl/gpu_pass_timers.h
 }  // namespace gl

@@ -1,5 +1,6 @@
 #include "render/spot_shadow_maps.h"
 
+#include "render/gpu_scene.h"
 #include "render/shadow_casters.h"
 #include "render/texture_units.h"
 

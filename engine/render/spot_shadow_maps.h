@@ -6,12 +6,13 @@
 
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
-#include "render/gpu_scene.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"
 #include "render/shadow_map_stamp.h"
 
 namespace bounce {
+
+class GpuScene;
 
 class SpotShadowMaps {
  public:

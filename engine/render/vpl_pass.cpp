@@ -7,6 +7,7 @@
 #include "gl/depth_texture.h"
 #include "gl/texture.h"
 
+#include "render/gpu_scene.h"
 #include "render/texture_units.h"
 
 namespace bounce {

@@ -16,27 +16,14 @@
 
 #include "gl/shader.h"
 #include "render/frustum.h"
-#include "render/gpu_scene.h"
 #include "render/light_table.h"
+#include "render/vpl_render_settings.h"
 #include "render/vpl_shadow_maps.h"
 #include "vpl_runtime/vpl_groups.h"
 
 namespace bounce {
 
-struct VplRenderSettings {
-  std::size_t groups = kMaxVplGroups;  // K, coarse groups (≤ kMaxVplGroups)
-  // false: every VPL at every fragment (one cell, all near). Also what culling falls back to
-  // when the cut would keep more than half the VPLs (few VPLs: nothing to gain).
-  bool culling = true;
-  float kappa = 4.0f;  // a tree node is far beyond κ node radii (vpl_groups.h)
-  int maxCellsPerAxis = 16;
-  // Lights a fragment evaluates at most (VplLightCutSettings::maxLights; 0: no bound), whatever
-  // the VPL count: the dynamic objects' cost per pixel.
-  uint32_t maxLights = VplLightCutSettings{}.maxLights;
-  // Visibility: one shadow cube per group (render/vpl_shadow_maps.h); shadows.enabled = false
-  // draws every VPL unoccluded.
-  VplShadowSettings shadows;
-};
+class GpuScene;
 
 class VplPass {
  public:

@@ -8,6 +8,7 @@
 
 #include "gl/draw_state.h"
 #include "gl/texture.h"
+#include "render/gpu_scene.h"
 #include "render/shader_constants.h"
 #include "render/shadow_casters.h"
 #include "render/shadow_map_geometry.h"

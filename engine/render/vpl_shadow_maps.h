@@ -31,23 +31,13 @@
 #include "bake_folder/vpl.h"
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
-#include "render/gpu_scene.h"
 #include "render/shadow_settings.h"
+#include "render/vpl_render_settings.h"
 #include "vpl_runtime/vpl_groups.h"
 
 namespace bounce {
 
-struct VplShadowSettings {
-  bool enabled = true;  // false: vplVisibility returns 1 (no maps rendered)
-  int resolution = 64;  // texels per face side
-  // Map origin above the VPL's surface along its normal, metres; ≤ 0: 1e-3 × the scene box's
-  // diagonal.
-  float originOffset = 0.0f;
-  // Cubes per VPL group (a power of two ≤ kVplShadowCubesPerGroup; vplShadowCubes): 1 puts one
-  // cube at each group's member nearest its centroid, a quarter of the redraw cost and up to 8%
-  // darker on the dynamic sphere (docs/vpl.md "Visibility").
-  int cubesPerGroup = 4;
-};
+class GpuScene;
 
 // The groups (K ≤ kMaxVplGroups) and cubes per group; kMaxVplShadowCubes must match
 // MAX_VPL_SHADOW_CUBES in shaders/vpl_shadows.glsl.

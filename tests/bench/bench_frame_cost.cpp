@@ -19,6 +19,7 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/bake_search.h"
 #include "gl/context.h"
+#include "gl/render_target.h"
 #include "gl/shader.h"
 #include "render/cost_view.h"
 #include "render/forward_renderer.h"

@@ -15,6 +15,7 @@
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "render/forward_renderer.h"
+#include "render/vpl_pass.h"
 #include "scene/framing.h"
 #include "scene/load.h"
 

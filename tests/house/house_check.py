@@ -20,17 +20,7 @@ MAX_PROJECT_HEADERS = 15
 # Headers over the limit today, with the count they may not exceed: the list only shrinks (a
 # header that is back under the limit must leave it, so no room is kept for growth).
 HEADERS_OVER_THE_LIMIT = {
-    "baker/vpl/vpl_retrace.h": 16,
-    "engine/apps/background_bake.h": 16,
-    "engine/render/area_shadow_maps.h": 17,
-    "engine/render/directional_shadow_maps.h": 16,
-    "engine/render/forward_pass.h": 44,
-    "engine/render/forward_renderer.h": 30,
-    "engine/render/point_shadow_maps.h": 16,
-    "engine/render/shadow_pass.h": 27,
-    "engine/render/spot_shadow_maps.h": 16,
-    "engine/render/vpl_pass.h": 18,
-    "engine/render/vpl_visibility_probe.h": 16,
+    "engine/render/shadow_pass.h": 24,
 }
 # No function in the programs and the bake pipeline runs longer than this many lines (issue 29,
 # measurement 3): they read as a short list of steps.

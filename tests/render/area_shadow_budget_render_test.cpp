@@ -12,8 +12,10 @@
 #include <filesystem>
 #include <numbers>
 
+#include "gl/render_target.h"
 #include "image/image_io.h"
 #include "indirect_accuracy.h"
+#include "render/area_shadow_budget.h"
 #include "shadow_scenes.h"
 #include "test_scenes.h"
 

@@ -13,6 +13,7 @@
 
 #include "indirect_accuracy.h"
 #include "lightmap_scenes.h"
+#include "render/area_shadow_budget.h"
 #include "shadow_scenes.h"
 #include "test_scenes.h"
 

@@ -19,6 +19,7 @@
 #include "render/cluster_grid.h"
 #include "render/light_grid.h"
 #include "render/light_reach.h"
+#include "render/vpl_pass.h"
 #include "test_scenes.h"
 #include "vpl_runtime/vpl_groups.h"
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "gl/render_target.h"
 #include "lightmap_scenes.h"
 #include "support/clipped_area.h"
 #include "test_scenes.h"

@@ -12,6 +12,7 @@
 
 #include "image/luminance.h"
 #include "lightmap_scenes.h"
+#include "render/vpl_pass.h"
 #include "test_scenes.h"
 #include "vpl/vpl_gather.h"
 #include "vpl_runtime/vpl_groups.h"

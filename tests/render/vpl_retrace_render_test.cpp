@@ -12,6 +12,7 @@
 #include "gl/shader.h"
 #include "lightmap_scenes.h"
 #include "render/forward_renderer.h"
+#include "render/vpl_pass.h"
 #include "shadow_scenes.h"
 #include "vpl/vpl_retrace.h"
 
