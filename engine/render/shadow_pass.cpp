@@ -4,13 +4,50 @@
 
 #include "gl/draw_state.h"
 #include "gl/gpu_pass_timers.h"
+#include "render/area_shadow_maps.h"
+#include "render/directional_shadow_maps.h"
 #include "render/gpu_scene.h"
+#include "render/point_shadow_maps.h"
+#include "render/punctual_lights.h"
 #include "render/punctual_shadow_budget.h"
 #include "render/shader_constants.h"
 #include "render/shadow_receivers.h"
+#include "render/spot_shadow_maps.h"
 #include "render/texture_units.h"
 
 namespace bounce {
+
+struct ShadowPass::Maps {
+  Maps(const ShadowSettings& settings, const std::filesystem::path& shaderDir)
+      : spot(settings), point(settings), directional(settings, shaderDir), area(settings) {}
+  SpotShadowMaps spot;
+  PointShadowMaps point;
+  DirectionalShadowMaps directional;
+  AreaShadowMaps area;
+};
+
+ShadowPass::~ShadowPass() = default;
+
+bool ShadowPass::setDynamicCasterCubes(bool enabled) {
+  return maps_->area.setDynamicCasterCubes(enabled);
+}
+
+void ShadowPass::setAreaCubesNeeded(bool needed) {
+  maps_->area.setAllCasterCubesNeeded(needed);
+}
+
+void ShadowPass::setAreaBake(std::size_t bakedVisibilityLights, bool bakedDirectSkipped) {
+  maps_->area.setBakedVisibilityLights(bakedVisibilityLights);
+  maps_->area.setBakedDirectSkipped(bakedDirectSkipped);
+}
+
+const ShadowChoice& ShadowPass::areaShadowChoice() const {
+  return maps_->area.lastChoice();
+}
+
+int ShadowPass::areaShadowSlots() const {
+  return maps_->area.slots();
+}
 
 ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                        const ShadowSettings& settings, const std::filesystem::path& shaderDir,
@@ -18,19 +55,16 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
     : settings_(settings),
       depth_(shaderDir / "shadow_depth.vert", shaderDir / "shadow_depth.frag", shaderConstants()),
       lightSlot_(lights.size(), -1),
-      spot_(settings),
-      point_(settings),
-      directional_(settings, shaderDir),
-      area_(settings) {
+      maps_(std::make_unique<Maps>(settings, shaderDir)) {
   if (!settings.enabled) return;
   // Until the first frame chooses, the maps go to the first lights of each kind.
   const Box sceneBox = scene.bounds();
   int unshadowed = 0;
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const Light& light = lights.light(i);
-    if (light.type == LightType::Spot) lightSlot_[i] = spot_.add(light, sceneBox);
-    if (light.type == LightType::Point) lightSlot_[i] = point_.add(light, sceneBox);
-    if (light.type == LightType::Directional) lightSlot_[i] = directional_.add(light);
+    if (light.type == LightType::Spot) lightSlot_[i] = maps_->spot.add(light, sceneBox);
+    if (light.type == LightType::Point) lightSlot_[i] = maps_->point.add(light, sceneBox);
+    if (light.type == LightType::Directional) lightSlot_[i] = maps_->directional.add(light);
     if (lightSlot_[i] < 0) ++unshadowed;
     // The maps each kind has: one past the highest slot handed out.
     int& maps = light.type == LightType::Spot    ? slots_.spot
@@ -38,7 +72,7 @@ ShadowPass::ShadowPass(const GpuScene& scene, const PunctualLights& lights,
                                                  : slots_.directional;
     maps = std::max(maps, lightSlot_[i] + 1);
   }
-  area_.add(scene);
+  maps_->area.add(scene);
   crowded_ = unshadowed > 0;
   if (unshadowed > 0)
     warnings.push_back(std::to_string(unshadowed) + " punctual lights more than the maps (" +
@@ -91,22 +125,22 @@ bool ShadowPass::choosePunctualMaps(const GpuScene& scene, const PunctualLights&
     const bool moved = slot[i] != lightSlot_[i];
     if (light.type == LightType::Spot) {
       spotUsed[static_cast<std::size_t>(slot[i])] = true;
-      if (moved) spot_.assign(slot[i], light, sceneBox);
+      if (moved) maps_->spot.assign(slot[i], light, sceneBox);
     }
     if (light.type == LightType::Point) {
       pointUsed[static_cast<std::size_t>(slot[i])] = true;
-      if (moved) point_.assign(slot[i], light, sceneBox);
+      if (moved) maps_->point.assign(slot[i], light, sceneBox);
     }
     if (light.type == LightType::Directional) {
       directionalUsed = true;
-      if (moved) directional_.assign(light);
+      if (moved) maps_->directional.assign(light);
     }
   }
   for (std::size_t s = 0; s < spotUsed.size(); ++s)
-    if (!spotUsed[s]) spot_.release(static_cast<int>(s));
+    if (!spotUsed[s]) maps_->spot.release(static_cast<int>(s));
   for (std::size_t s = 0; s < pointUsed.size(); ++s)
-    if (!pointUsed[s]) point_.release(static_cast<int>(s));
-  if (!directionalUsed && slots_.directional > 0) directional_.release();
+    if (!pointUsed[s]) maps_->point.release(static_cast<int>(s));
+  if (!directionalUsed && slots_.directional > 0) maps_->directional.release();
   lightSlot_ = slot;
   return true;
 }
@@ -114,9 +148,9 @@ bool ShadowPass::choosePunctualMaps(const GpuScene& scene, const PunctualLights&
 void ShadowPass::setLight(std::size_t index, const Light& light) {
   const int slot = index < lightSlot_.size() ? lightSlot_[index] : -1;
   if (slot < 0) return;
-  if (light.type == LightType::Spot) spot_.setLight(slot, light);
-  if (light.type == LightType::Point) point_.setLight(slot, light);
-  if (light.type == LightType::Directional) directional_.setLight(light);
+  if (light.type == LightType::Spot) maps_->spot.setLight(slot, light);
+  if (light.type == LightType::Point) maps_->point.setLight(slot, light);
+  if (light.type == LightType::Directional) maps_->directional.setLight(light);
 }
 
 bool ShadowPass::render(const GpuScene& scene, const PunctualLights& lights, const ViewVolume& view,
@@ -128,19 +162,19 @@ bool ShadowPass::render(const GpuScene& scene, const PunctualLights& lights, con
   using Timed = gl::GpuPassTimers::Scope;
   {
     const Timed timed(timers, "shadow: spot maps");
-    lastFrame_ += spot_.render(scene, view, depth_, target_);
+    lastFrame_ += maps_->spot.render(scene, view, depth_, target_);
   }
   {
     const Timed timed(timers, "shadow: point cubes");
-    lastFrame_ += point_.render(scene, view, depth_, target_);
+    lastFrame_ += maps_->point.render(scene, view, depth_, target_);
   }
   {
     const Timed timed(timers, "shadow: directional cascades");
-    lastFrame_ += directional_.render(scene, camera, aspect, target_);
+    lastFrame_ += maps_->directional.render(scene, camera, aspect, target_);
   }
   {
     const Timed timed(timers, "shadow: area-light cubes");
-    lastFrame_ += area_.render(scene, view, floor, depth_, target_);
+    lastFrame_ += maps_->area.render(scene, view, floor, depth_, target_);
   }
   gl::checkErrors("shadow pass");
   return slotsChanged;
@@ -148,10 +182,10 @@ bool ShadowPass::render(const GpuScene& scene, const PunctualLights& lights, con
 
 void ShadowPass::bind(gl::Program& forward) const {
   forward.set("uShadowFilter", settings_.filter == ShadowFilter::Poisson ? 1 : 0);
-  spot_.bind(forward);
-  point_.bind(forward);
-  directional_.bind(forward);
-  area_.bind(forward);
+  maps_->spot.bind(forward);
+  maps_->point.bind(forward);
+  maps_->directional.bind(forward);
+  maps_->area.bind(forward);
 }
 
 }  // namespace bounce

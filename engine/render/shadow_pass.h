@@ -12,18 +12,21 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+#include <span>
+
 #include "gl/depth_texture.h"
 #include "gl/shader.h"
-#include "render/area_shadow_maps.h"
-#include "render/directional_shadow_maps.h"
-#include "render/point_shadow_maps.h"
-#include "render/punctual_lights.h"
 #include "render/punctual_shadow_budget.h"
-#include "render/spot_shadow_maps.h"
+#include "render/shadow_settings.h"
+#include "scene/scene.h"
 
 namespace bounce {
 
 class GpuScene;
+class PunctualLights;
+struct ShadowChoice;
+struct ViewVolume;
 namespace gl {
 class GpuPassTimers;  // gl/gpu_pass_timers.h
 }  // namespace gl
@@ -32,6 +35,9 @@ class ShadowPass {
  public:
   ShadowPass(const GpuScene& scene, const PunctualLights& lights, const ShadowSettings& settings,
              const std::filesystem::path& shaderDir, std::vector<std::string>& warnings);
+  ~ShadowPass();
+  ShadowPass(const ShadowPass&) = delete;
+  ShadowPass& operator=(const ShadowPass&) = delete;
 
   // `view`: what the camera can see; maps that cannot reach it are not rendered. `camera` and
   // the image's `aspect`: what the directional cascades are fitted to. `floor` (W/m²): a light
@@ -43,13 +49,10 @@ class ShadowPass {
   // Binds the maps and sets every shadow uniform of the forward program.
   void bind(gl::Program& forward) const;
   // AreaShadowMaps::setDynamicCasterCubes: false when the driver cannot.
-  bool setDynamicCasterCubes(bool enabled) { return area_.setDynamicCasterCubes(enabled); }
-  void setAreaCubesNeeded(bool needed) { area_.setAllCasterCubesNeeded(needed); }
+  bool setDynamicCasterCubes(bool enabled);
+  void setAreaCubesNeeded(bool needed);
   // AreaShadowMaps::setBakedVisibilityLights and setBakedDirectSkipped.
-  void setAreaBake(std::size_t bakedVisibilityLights, bool bakedDirectSkipped) {
-    area_.setBakedVisibilityLights(bakedVisibilityLights);
-    area_.setBakedDirectSkipped(bakedDirectSkipped);
-  }
+  void setAreaBake(std::size_t bakedVisibilityLights, bool bakedDirectSkipped);
   // Whether every static instance reads the bake's visibility (a lightmap region, or corners:
   // LightmapPass::visibilityOnEveryStaticInstance). Then a static spot or point light the bake
   // names needs a map only for what moves: it gets one while a dynamic instance is in its reach
@@ -59,8 +62,8 @@ class ShadowPass {
   // (docs/shadows.md, the sunlit room: 1.23% with cascades and baked V, 7.50% baked V alone).
   void setStaticVisibilityBaked(bool baked) { staticBaked_ = baked; }
   // Which area lights have a cube this frame and what the others bring; the most cubes at once.
-  const ShadowChoice& areaShadowChoice() const { return area_.lastChoice(); }
-  int areaShadowSlots() const { return area_.slots(); }
+  const ShadowChoice& areaShadowChoice() const;
+  int areaShadowSlots() const;
   // Punctual light `index` moved, turned or changed power (its kind stays): its map follows.
   void setLight(std::size_t index, const Light& light);
   // Per punctual light: its map's slot among its kind's maps, −1 for none (the first lights of
@@ -83,10 +86,8 @@ class ShadowPass {
   gl::Program depth_;
   gl::DepthTarget target_;
   std::vector<int> lightSlot_;  // per punctual light: its map's slot in its kind, −1 for none
-  SpotShadowMaps spot_;
-  PointShadowMaps point_;
-  DirectionalShadowMaps directional_;
-  AreaShadowMaps area_;
+  struct Maps;  // each kind's maps (spot, point, directional, area cubes): shadow_pass.cpp
+  std::unique_ptr<Maps> maps_;
   ShadowDrawCount lastFrame_;
 };
 
