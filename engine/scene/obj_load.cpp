@@ -69,12 +69,14 @@ std::string readText(const std::filesystem::path& path) {
 // tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999", "abc") as 0 and a
 // missing component as 0: OBJ and MTL statements with numbers are checked here first, so such
 // a value is a LoadError naming the line. Binary data (a NUL or other control byte) is refused.
-// `keywords` maps a statement to its least and most number of numeric arguments.
+// `keywords` maps a statement to its least and most number of numeric arguments. Lines end as
+// tinyobjloader ends them: at "\n", "\r\n" or a lone "\r" (a statement after a lone "\r"
+// is one it reads, so it is one checked here).
 void checkNumbers(const std::filesystem::path& path, const std::string& text,
                   const std::map<std::string_view, std::pair<int, int>>& keywords, double maxAbs) {
   std::size_t lineNo = 0, begin = 0;
   while (begin <= text.size()) {
-    std::size_t end = text.find('\n', begin);
+    std::size_t end = text.find_first_of("\r\n", begin);
     if (end == std::string::npos) end = text.size();
     ++lineNo;
     const std::string_view line(text.data() + begin, end - begin);
@@ -125,7 +127,7 @@ void checkNumbers(const std::filesystem::path& path, const std::string& text,
         }
       }
     }
-    begin = end + 1;
+    begin = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
   }
 }
 
