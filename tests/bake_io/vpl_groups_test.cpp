@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "bake_folder/vpl_clamp.h"
 
@@ -54,6 +55,22 @@ Room makeRoom(std::size_t count, uint32_t seed) {
     room.vpls.push_back(v);
   }
   return room;
+}
+
+// Receiver i of the accuracy tests: even i a floor point (normal up), odd i a point in the air
+// 0.1 m inside the walls with a random normal.
+std::pair<glm::vec3, glm::vec3> receiverInRoom(const Room& room, int i, std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const glm::vec3 e = room.hi - room.lo;
+  glm::vec3 p, n;
+  if (i % 2 == 0) {
+    p = {u(rng) * e.x, 0.0f, u(rng) * e.z};
+    n = {0, 1, 0};
+  } else {
+    p = room.lo + glm::vec3(0.1f) + glm::vec3(u(rng), u(rng), u(rng)) * (e - 0.2f);
+    n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+  }
+  return {p, n};
 }
 
 double relativeError(const glm::dvec3& a, const glm::dvec3& b) {
@@ -149,20 +166,10 @@ TEST(VplGroups, CutIrradianceWithinTheFarFieldBound) {
   for (const float kappa : {2.0f, 4.0f, 8.0f}) {
     const VplLightCuts cuts = buildVplLightCuts(groups, room.lo, room.hi, {kappa, 16, 0});
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     double worst = 0.0, evaluated = 0.0;
     int receivers = 0;
-    const glm::vec3 e = room.hi - room.lo;
     for (int i = 0; i < 200; ++i) {
-      // Floor receivers (normal up) and points in the air with random normals.
-      glm::vec3 p, n;
-      if (i % 2 == 0) {
-        p = {u(rng) * e.x, 0.0f, u(rng) * e.z};
-        n = {0, 1, 0};
-      } else {
-        p = room.lo + glm::vec3(0.1f) + glm::vec3(u(rng), u(rng), u(rng)) * (e - 0.2f);
-        n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
-      }
+      const auto [p, n] = receiverInRoom(room, i, rng);
       const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, r);
       const VplIrradiance cut = vplCutIrradiance(groups, cuts, p, n, r);
       if (!(full.irradiance.r > 0.0 && full.irradiance.g > 0.0 && full.irradiance.b > 0.0))
@@ -202,19 +209,10 @@ TEST(VplGroups, BoundedCutKeepsItsCostWhateverTheVplCount) {
       most = std::max(most, bounded.lightsEvaluated(c));
     EXPECT_LE(most, 256u);
     std::mt19937 rng(13);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    const glm::vec3 e = room.hi - room.lo;
     double worst = 0.0, looseLights = 0.0;
     int receivers = 0;
     for (int i = 0; i < 200; ++i) {
-      glm::vec3 p, n;
-      if (i % 2 == 0) {
-        p = {u(rng) * e.x, 0.0f, u(rng) * e.z};
-        n = {0, 1, 0};
-      } else {
-        p = room.lo + glm::vec3(0.1f) + glm::vec3(u(rng), u(rng), u(rng)) * (e - 0.2f);
-        n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
-      }
+      const auto [p, n] = receiverInRoom(room, i, rng);
       const VplIrradiance full = vplIrradianceSum(room.vpls, p, n, r);
       if (!(full.irradiance.r > 0.0 && full.irradiance.g > 0.0 && full.irradiance.b > 0.0))
         continue;
