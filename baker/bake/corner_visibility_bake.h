@@ -11,8 +11,17 @@
 // independent of the light samples' rotation, so every pair (x_k, y_k) is uniform over
 // triangle × light.
 //
-// Each corner is computed from its own keys (seed, corner number, light): the result does not
-// depend on the thread count.
+// The corners that meet at one world vertex (flatten shares vertices within an instance, where
+// the mesh does) are estimated once, over the vertex's ring: its triangles, each picked with
+// probability ∝ its area, and a point in it with density ∝ the vertex's barycentric weight, so
+// over the ring the density is ∝ the vertex's hat function φ and
+//   V_v = ∫ φ E_l vis / ∫ φ E_l   over the ring,
+// the value per-vertex interpolation wants (for a lone triangle, V_k above). Every corner at the
+// vertex gets it: one estimate where there were as many as its triangles (about six on a smooth
+// mesh), and no step between the triangles that share the vertex.
+//
+// Each vertex is computed from its own keys (seed, its first corner's number, light): the result
+// does not depend on the thread count.
 #pragma once
 
 #include <cstdint>
@@ -40,11 +49,24 @@ struct CornerVisibilitySettings {
 std::vector<TexelPoint> cornerPoints(const WorldGeometry& geometry, uint32_t t, int corner,
                                      int count, uint32_t key);
 
+// A triangle at a vertex: world triangle and which of its corners (0, 1, 2) is the vertex.
+struct RingCorner {
+  uint32_t triangle = 0;
+  int corner = 0;
+};
+
+// M points over the triangles of a vertex's ring with density ∝ the vertex's hat function: each
+// triangle takes its area's share (a Kronecker pick over the areas, from `key`), then
+// its points as cornerPoints'. A ring of one triangle gives cornerPoints' points.
+std::vector<TexelPoint> vertexRingPoints(const WorldGeometry& geometry,
+                                         std::span<const RingCorner> ring, int count, uint32_t key);
+
 struct CornerVisibilityBake {
   ProbeVisibility visibility;
   // Per instance of `tracedInstances` (in order): its first corner and its corner count
   // (3 per triangle, in its mesh's `indices` order).
   std::vector<uint32_t> firstCorner, cornerCount;
+  uint64_t vertices = 0;  // world vertices estimated (each once, for all its corners)
   uint64_t rays = 0;
   double seconds = 0.0;
 };

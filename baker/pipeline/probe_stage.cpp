@@ -71,6 +71,7 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
           visibility.corners.insert(visibility.corners.end(), from, from + v.cornerCount[i]);
         }
     out.visibilityRays = v.rays;
+    out.visibilityVertices = v.vertices;
     out.visibilitySeconds = v.seconds;
   }
   BakeManifest::Probes& m = out.manifest;
@@ -119,7 +120,8 @@ void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& 
     std::snprintf(seconds, sizeof seconds, "%.1f", probes.visibilitySeconds);
     result.notes.push_back("the static lights' visibility on the probe-lit instances: " +
                            std::to_string(probes.probes.visibility.corners.size()) +
-                           " triangle corners, " + std::to_string(probes.visibilityRays) +
+                           " triangle corners at " + std::to_string(probes.visibilityVertices) +
+                           " vertices, " + std::to_string(probes.visibilityRays) +
                            " occlusion rays, " + seconds + " s");
   }
   if (!probes.probes.grids.empty()) {

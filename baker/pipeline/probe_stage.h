@@ -31,6 +31,7 @@ struct ProbeStage {
   // The static lights' visibility per corner of the same instances (corner_visibility_bake.h):
   // occlusion rays traced and seconds, 0 without static lights to bake.
   uint64_t visibilityRays = 0;
+  uint64_t visibilityVertices = 0;  // the corners' world vertices, each estimated once
   double visibilitySeconds = 0.0;
 };
 

@@ -53,10 +53,17 @@ glm::dvec2 irradiance(const Rectangle& light, const Rectangle& blocker, glm::dve
   return e;
 }
 
-// V_k of triangle (p0, p1, p2) by the midpoint rule over its n² equal sub-triangles.
-glm::dvec3 exactCornerVisibility(const std::array<glm::dvec3, 3>& p, const Rectangle& light,
-                                 const Rectangle& blocker, int n = 24) {
-  glm::dvec3 all(0.0), visible(0.0);
+// ∫_T b_k E_vis and ∫_T b_k E per corner k of triangle (p0, p1, p2), by the midpoint rule over
+// its n² equal sub-triangles, each weighted by its area.
+struct CornerIntegrals {
+  glm::dvec3 visible{0.0}, all{0.0};
+};
+CornerIntegrals exactCornerIntegrals(const std::array<glm::dvec3, 3>& p, const Rectangle& light,
+                                     const Rectangle& blocker, int n = 24) {
+  const double cell = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) / (n * n);
+  CornerIntegrals sums;
+  glm::dvec3& all = sums.all;
+  glm::dvec3& visible = sums.visible;
   for (int i = 0; i < n; ++i)
     for (int j = 0; i + j < n; ++j)
       for (int up = 0; up < (i + j + 1 < n ? 2 : 1); ++up) {
@@ -66,10 +73,17 @@ glm::dvec3 exactCornerVisibility(const std::array<glm::dvec3, 3>& p, const Recta
         const glm::dvec3 bary(1.0 - a - b, a, b);
         const glm::dvec3 x = bary.x * p[0] + bary.y * p[1] + bary.z * p[2];
         const glm::dvec2 e = irradiance(light, blocker, x);
-        all += bary * e.x;
-        visible += bary * e.y;
+        all += bary * e.x * cell;
+        visible += bary * e.y * cell;
       }
-  return visible / all;
+  return sums;
+}
+
+// V_k of a lone triangle.
+glm::dvec3 exactCornerVisibility(const std::array<glm::dvec3, 3>& p, const Rectangle& light,
+                                 const Rectangle& blocker) {
+  const CornerIntegrals sums = exactCornerIntegrals(p, light, blocker);
+  return sums.visible / sums.all;
 }
 
 // A 0.4 m square light 1 m over the floor, facing down; a blocker at 0.5 m over x < 0, so the
@@ -139,6 +153,91 @@ TEST(CornerVisibility, EachCornerHoldsTheVisibleFractionOfTheTriangleNearIt) {
     EXPECT_LT(std::min(exact[0], exact[2]), 0.4);
     EXPECT_GT(std::max(exact[0], exact[2]), 0.6);
   }
+}
+
+// A fan of three floor triangles of unequal areas around a vertex in the penumbra, written as a
+// triangle soup (every corner its own mesh vertex, as an OBJ without normals loads): the corners
+// at one place are one vertex, and each holds its ring's
+//   V_v = Σ_T ∫_T b_v E_vis / Σ_T ∫_T b_v E.
+// A wall triangle standing on the fan's centre (normal 90° off) stays a vertex of its own.
+TEST(CornerVisibility, CornersAtOnePlaceHoldTheirRingsVisibleFraction) {
+  const Rectangle light{{-0.2, 1.0, -0.2}, {0.4, 0, 0}, {0, 0, 0.4}};
+  const Rectangle blocker{{-1.0, 0.5, -2.0}, {0, 0, 4.0}, {1.0, 0, 0}};
+  Scene scene;
+  addQuad(scene, light.corner, light.corner + light.u, light.corner + light.u + light.v,
+          light.corner + light.v, addMaterial(scene, glm::vec3(0.0f), glm::vec3(1.0f)));
+  const uint32_t grey = addMaterial(scene, glm::vec3(0.5f));
+  addQuad(scene, blocker.corner, blocker.corner + blocker.u, blocker.corner + blocker.u + blocker.v,
+          blocker.corner + blocker.v, grey);
+  // Centre o at x = 0.02 (the penumbra's middle); a wide triangle into the umbra, a middle one,
+  // a small one on the lit side. Each wound to face +y.
+  const glm::dvec3 o(0.02, 0, 0), a(-0.45, 0, -0.3), b(-0.1, 0, 0.35), c(0.2, 0, 0.3),
+      d(0.3, 0, 0.1);
+  const std::vector<std::array<glm::dvec3, 3>> fan{{o, a, b}, {o, b, c}, {o, c, d}};
+  Mesh soup;
+  for (const auto& t : fan)
+    for (const glm::dvec3& p : t) {
+      soup.indices.push_back(static_cast<uint32_t>(soup.positions.size()));
+      soup.positions.emplace_back(p);
+      soup.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    }
+  // The wall: through o, facing +x, its corner 0 at o.
+  for (const glm::vec3 p : {glm::vec3(o), glm::vec3(o) + glm::vec3(0, 0.2f, -0.1f),
+                            glm::vec3(o) + glm::vec3(0, 0.2f, 0.1f)}) {
+    soup.indices.push_back(static_cast<uint32_t>(soup.positions.size()));
+    soup.positions.push_back(p);
+    soup.normals.emplace_back(1.0f, 0.0f, 0.0f);
+  }
+  soup.material = grey;
+  scene.meshes.push_back(soup);
+  Instance instance;
+  instance.name = "fan";
+  instance.mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
+  scene.instances.push_back(instance);
+  const WorldGeometry geometry = flatten(scene);
+  for (std::size_t t = 0; t < fan.size(); ++t) {
+    const glm::dvec3 n = glm::cross(fan[t][1] - fan[t][0], fan[t][2] - fan[t][0]);
+    ASSERT_GT(n.y, 0.0) << "triangle " << t << " faces up";
+  }
+  const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+  const AreaLightSet lights = sceneAreaLights(scene);
+  CornerVisibilitySettings settings;
+  settings.samplesPerLight = 4096;
+  const std::vector<uint32_t> traced{static_cast<uint32_t>(scene.instances.size() - 1)};
+  const CornerVisibilityBake baked =
+      bakeCornerVisibility(lights, {}, geometry, *kernel, traced, {}, settings);
+  ASSERT_EQ(baked.visibility.corners.size(), 12u);
+  // o, a, b, c, d on the floor, and the wall's three corners.
+  EXPECT_EQ(baked.vertices, 8u);
+
+  std::vector<CornerIntegrals> exact;
+  for (const auto& t : fan) exact.push_back(exactCornerIntegrals(t, light, blocker));
+  // Each floor place and the fan corners at it.
+  const std::vector<std::pair<glm::dvec3, std::vector<std::pair<int, int>>>> places{
+      {o, {{0, 0}, {1, 0}, {2, 0}}},
+      {a, {{0, 1}}},
+      {b, {{0, 2}, {1, 1}}},
+      {c, {{1, 2}, {2, 1}}},
+      {d, {{2, 2}}}};
+  double spread = 0.0;  // how far the ring's V is from its triangles' own corner V
+  for (const auto& [place, corners] : places) {
+    double visible = 0.0, all = 0.0;
+    for (const auto& [t, k] : corners) {
+      visible += exact[static_cast<std::size_t>(t)].visible[k];
+      all += exact[static_cast<std::size_t>(t)].all[k];
+    }
+    for (const auto& [t, k] : corners) {
+      const TexelVisibility& corner = baked.visibility.corners[3 * t + k];
+      ASSERT_EQ(corner.light[0], 0u);
+      // As above: 4096 pairs, the binomial bound 0.0078 times 4.
+      EXPECT_NEAR(corner.visible[0], visible / all, 0.03)
+          << "fan triangle " << t << " corner " << k << " at x = " << place.x;
+      const CornerIntegrals& own = exact[static_cast<std::size_t>(t)];
+      spread = std::max(spread, std::abs(own.visible[k] / own.all[k] - visible / all));
+    }
+  }
+  // The centre's triangles see the light differently, so one corner alone would be off.
+  EXPECT_GT(spread, 0.1);
 }
 
 // Each corner draws its points and pairs from its own keys: any thread count, the same bytes.
