@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
 
+#include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
 #include "bake_merge.h"
@@ -73,6 +75,12 @@ int runShard(const Options& o, const bounce::Scene& scene, bounce::BakeObserver&
 }
 
 int run(Options o) {
+  // --threads bounds every stage, the load and the atlas too (their parallel loops run outside
+  // the tiles' arenas).
+  std::optional<tbb::global_control> threads;
+  if (o.shared.threads > 0)
+    threads.emplace(tbb::global_control::max_allowed_parallelism,
+                    static_cast<std::size_t>(o.shared.threads));
   const auto start = std::chrono::steady_clock::now();
   const bounce::Scene scene = bounce::loadScene(o.scene);
   for (const std::string& warning : scene.warnings)

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "atlas/chart_bundle.h"
 #include "atlas/chart_flatten.h"
 #include "atlas/chart_mask.h"
@@ -49,9 +51,11 @@ WorldMesh worldMeshOf(const Scene& scene, const Instance& instance) {
 // charts under one texel that lie close and face one way are bundled (chart_bundle.h).
 std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, float texelSize) {
   const TriangleGroups groups = segmentCharts(world, SegmentSettings{});
-  std::vector<FlatGroup> flat;
-  for (const std::vector<uint32_t>& group : groups.charts)
-    flat.push_back({group, flattenChart(world, group, 1.0f)});
+  // Each group flattened on its own (in parallel; the result does not depend on the order).
+  std::vector<FlatGroup> flat(groups.charts.size());
+  tbb::parallel_for(std::size_t{0}, flat.size(), [&](std::size_t g) {
+    flat[g] = {groups.charts[g], flattenChart(world, groups.charts[g], 1.0f)};
+  });
   const double smallArea = kSmallChartTexels * static_cast<double>(texelSize) * texelSize;
   flat = mergeSmallCharts(world, std::move(flat), groups.contacts, {smallArea, texelSize});
   std::vector<Chart> charts;
@@ -74,6 +78,23 @@ std::vector<Chart> generateCharts(uint32_t instance, const WorldMesh& world, flo
                       std::vector<glm::vec2>(3 * groups.degenerate.size(), glm::vec2(0.5f)),
                       ChartSource::Degenerate});
   return bundleSubTexelCharts(world, std::move(charts), texelSize);
+}
+
+// generateCharts for every instance of `statics` whose mesh has no usable uv1 at its texel and
+// no charts yet, in parallel: each instance's charts depend on it alone. `uv1[i]` gets the
+// check of statics[i].
+template <typename TexelOf>
+void generateMissingCharts(const Scene& scene, std::vector<StaticInstance>& statics,
+                           const TexelOf& texelOf, const AtlasSettings& settings,
+                           std::vector<Uv1Check>& uv1) {
+  uv1.assign(statics.size(), Uv1Check{});
+  tbb::parallel_for(std::size_t{0}, statics.size(), [&](std::size_t i) {
+    StaticInstance& s = statics[i];
+    const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
+    const float texel = texelOf(s);
+    uv1[i] = checkMeshUv1(mesh, s.world, texel, settings.padding, settings.maxSize);
+    if (!uv1[i].usable && s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texel);
+  });
 }
 
 // Scales a chart laid out in metres to texel units and returns its extent in whole texels.
@@ -236,13 +257,13 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   // Instances whose lightmap would be mostly padding around sub-texel pieces take the probes'
   // light too (kMinLightmapFill). A mesh's own uv1 is one square region: never judged.
   std::vector<std::string> sparse;
-  if (settings.minLightmapFill > 0.0)
+  std::vector<Uv1Check> uv1;
+  if (settings.minLightmapFill > 0.0) {
+    generateMissingCharts(scene, statics, instanceTexel, settings, uv1);
+    std::size_t i = 0;
     std::erase_if(statics, [&](StaticInstance& s) {
-      const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
+      if (uv1[i++].usable) return false;
       const float texel = instanceTexel(s);
-      if (checkMeshUv1(mesh, s.world, texel, settings.padding, settings.maxSize).usable)
-        return false;
-      s.charts = generateCharts(s.instance, s.world, texel);
       const double areaTexels = s.weightedArea / (static_cast<double>(texelSize) * texelSize);
       if (lightmapFill(s.charts, texel, areaTexels, settings.padding) >= settings.minLightmapFill)
         return false;
@@ -250,6 +271,7 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
       sparse.push_back(scene.instances[s.instance].name);
       return true;
     });
+  }
   std::sort(atlas.vplLitInstances.begin(), atlas.vplLitInstances.end());
   if (!sparse.empty()) {
     std::ostringstream note;
@@ -270,24 +292,24 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
     std::vector<Chart> charts;
     std::vector<glm::ivec2> cells;
     uv1Notes.clear();
-    for (StaticInstance& s : statics) {
+    generateMissingCharts(scene, statics, instanceTexel, settings, uv1);
+    for (std::size_t i = 0; i < statics.size(); ++i) {
+      StaticInstance& s = statics[i];
       const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];
-      const float texel = instanceTexel(s);
-      const Uv1Check uv1 = checkMeshUv1(mesh, s.world, texel, settings.padding, settings.maxSize);
-      if (uv1.usable) {
+      if (uv1[i].usable) {
         Chart chart{s.instance, {}, {}, ChartSource::MeshUv1};
         for (uint32_t t = 0; t < mesh.triangleCount(); ++t) chart.triangles.push_back(t);
         for (const uint32_t v : mesh.indices)
-          chart.cornerUv.push_back(mesh.uv1[v] * static_cast<float>(uv1.side));
+          chart.cornerUv.push_back(mesh.uv1[v] * static_cast<float>(uv1[i].side));
         charts.push_back(std::move(chart));
-        cells.emplace_back(uv1.side, uv1.side);
+        cells.emplace_back(uv1[i].side, uv1[i].side);
         continue;
       }
-      if (!uv1.reason.empty())
+      if (!uv1[i].reason.empty())
         uv1Notes.push_back("mesh '" + mesh.name + "' (instance '" +
-                           scene.instances[s.instance].name + "'): " + uv1.reason +
+                           scene.instances[s.instance].name + "'): " + uv1[i].reason +
                            ", so its lightmap UVs were generated");
-      if (s.charts.empty()) s.charts = generateCharts(s.instance, s.world, texel);
+      const float texel = instanceTexel(s);
       for (Chart chart : s.charts) {
         cells.push_back(toTexels(chart, texel));
         charts.push_back(std::move(chart));

@@ -6,6 +6,8 @@
 #include <map>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
 namespace bounce {
 namespace {
 
@@ -421,8 +423,12 @@ CrossingCuts cutAtCrossings(Scene& scene) {
     std::vector<std::pair<uint32_t, std::vector<CrossingPlane>>> cuts;
     // Every crossing line over the instance's triangles: what the crossers cover along it.
     std::map<std::array<int64_t, 8>, std::vector<std::pair<double, double>>> lines;
+    // Each triangle's crossing planes on its own (in parallel), then gathered in order.
+    std::vector<std::vector<CrossingPlane>> found(next - first);
+    tbb::parallel_for(first, next,
+                      [&](std::size_t k) { found[k - first] = crossingPlanes(all[k], tree); });
     for (std::size_t k = first; k < next; ++k)
-      if (auto planes = crossingPlanes(all[k], tree); !planes.empty()) {
+      if (auto planes = std::move(found[k - first]); !planes.empty()) {
         for (const CrossingPlane& p : planes) {
           std::vector<std::pair<double, double>>& line = lines[p.line];
           line.insert(line.end(), p.covered.begin(), p.covered.end());

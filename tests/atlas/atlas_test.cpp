@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include <tbb/task_arena.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "atlas/atlas.h"
@@ -515,17 +516,43 @@ TEST(AtlasContent, DISABLED_ConferenceRoomUsesSeventyPercent) {
   EXPECT_GE(used, 0.70);
 }
 
-TEST(AtlasContent, SameSceneSameLayout) {
-  Scene scene = variedScene();
-  const Atlas a = buildAtlas(scene, AtlasSettings{});
-  const Atlas b = buildAtlas(scene, AtlasSettings{});
-  ASSERT_EQ(a.layout.width, b.layout.width);
-  ASSERT_EQ(a.layout.height, b.layout.height);
-  ASSERT_EQ(a.layout.instances.size(), b.layout.instances.size());
-  for (std::size_t i = 0; i < a.layout.instances.size(); ++i) {
+// The crossing cuts and the atlas run their loops in parallel (each triangle's crossings, each
+// instance's charts, each group's flattening, the packing's widths): the same bits at any thread
+// count. The varied scene's rotated cube and cylinder cross its 4 m floor, so it is cut.
+TEST(AtlasContent, SameCutsAndLayoutAtAnyThreadCount) {
+  struct Result {
+    Scene scene;
+    CrossingCuts cuts;
+    Atlas atlas;
+  };
+  const auto run = [](int threads) {
+    Result r{variedScene(), {}, {}};
+    // More work to interleave: a finer sphere, through the floor.
+    addInstance(r.scene, addSphereMesh(r.scene, 48, 96),
+                glm::scale(glm::translate(glm::mat4(1), glm::vec3(2, 2, 0)), glm::vec3(0.8f)));
+    tbb::task_arena(threads).execute([&] {
+      r.cuts = cutAtCrossings(r.scene);
+      r.atlas = buildAtlas(r.scene, AtlasSettings{});
+    });
+    return r;
+  };
+  const Result a = run(1), b = run(4);
+  ASSERT_GT(a.cuts.cutTriangles, 0u);
+  EXPECT_EQ(a.cuts.cutTriangles, b.cuts.cutTriangles);
+  ASSERT_EQ(a.scene.meshes.size(), b.scene.meshes.size());
+  for (std::size_t m = 0; m < a.scene.meshes.size(); ++m) {
+    EXPECT_TRUE(a.scene.meshes[m].positions == b.scene.meshes[m].positions) << "mesh " << m;
+    EXPECT_TRUE(a.scene.meshes[m].indices == b.scene.meshes[m].indices) << "mesh " << m;
+  }
+  ASSERT_EQ(a.atlas.layout.width, b.atlas.layout.width);
+  ASSERT_EQ(a.atlas.layout.height, b.atlas.layout.height);
+  ASSERT_EQ(a.atlas.layout.instances.size(), b.atlas.layout.instances.size());
+  EXPECT_GT(a.atlas.layout.chartCount, 10);
+  for (std::size_t i = 0; i < a.atlas.layout.instances.size(); ++i) {
     // Bit for bit (== on floats), without printing whole vectors.
-    EXPECT_TRUE(a.layout.instances[i].cornerUv == b.layout.instances[i].cornerUv) << "region " << i;
-    EXPECT_TRUE(a.triangleChart[i] == b.triangleChart[i]) << "region " << i;
+    EXPECT_TRUE(a.atlas.layout.instances[i].cornerUv == b.atlas.layout.instances[i].cornerUv)
+        << "region " << i;
+    EXPECT_TRUE(a.atlas.triangleChart[i] == b.atlas.triangleChart[i]) << "region " << i;
   }
 }
 
