@@ -88,6 +88,7 @@ void generateMissingCharts(const Scene& scene, std::vector<StaticInstance>& stat
                            const TexelOf& texelOf, const AtlasSettings& settings,
                            std::vector<Uv1Check>& uv1) {
   uv1.assign(statics.size(), Uv1Check{});
+  const SilencedOpenMeshErrors silenced;  // for every thread's segmentation at once
   tbb::parallel_for(std::size_t{0}, statics.size(), [&](std::size_t i) {
     StaticInstance& s = statics[i];
     const Mesh& mesh = scene.meshes[scene.instances[s.instance].mesh];

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <set>
 #include <tuple>
 
@@ -77,8 +78,7 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
            cut.count(edgeKey(halfEdges.from_vertex_handle(h), halfEdges.to_vertex_handle(h))) > 0;
   };
   // OpenMesh reports each refused face on its error stream; refusals are handled below.
-  const bool omerrWasEnabled = omerr().is_enabled();
-  omerr().disable();
+  const SilencedOpenMeshErrors silenced;
   for (std::size_t t = 0; t < triangles; ++t) {
     // Non-finite corners (never from the loaders, which refuse them) join no chart either.
     if (!(mesh.area(t) >= settings.degenerateArea)) {
@@ -111,7 +111,6 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     }
     faceTriangle.push_back(static_cast<uint32_t>(t));
   }
-  if (omerrWasEnabled) omerr().enable();
 
   std::vector<glm::dvec3> normal(faceTriangle.size());
   std::vector<double> area(faceTriangle.size());
@@ -246,6 +245,25 @@ TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& setti
     groups.contacts.push_back({static_cast<uint32_t>(pair.first),
                                static_cast<uint32_t>(pair.second), shared.first, shared.second});
   return groups;
+}
+
+namespace {
+std::mutex silencedLock;
+int silencedCount = 0;             // guarded by silencedLock
+bool enabledBeforeSilence = true;  // guarded by silencedLock
+}  // namespace
+
+SilencedOpenMeshErrors::SilencedOpenMeshErrors() {
+  const std::lock_guard<std::mutex> hold(silencedLock);
+  if (silencedCount++ == 0) {
+    enabledBeforeSilence = omerr().is_enabled();
+    omerr().disable();
+  }
+}
+
+SilencedOpenMeshErrors::~SilencedOpenMeshErrors() {
+  const std::lock_guard<std::mutex> hold(silencedLock);
+  if (--silencedCount == 0 && enabledBeforeSilence) omerr().enable();
 }
 
 }  // namespace bounce

@@ -38,4 +38,16 @@ struct TriangleGroups {
 
 TriangleGroups segmentCharts(const WorldMesh& mesh, const SegmentSettings& settings);
 
+// OpenMesh's error stream (a process-wide object) silenced while one is alive, counted across
+// threads: segmentCharts refuses faces on purpose and holds one, and the atlas holds one around
+// its parallel chart generation, so that no thread turns the stream back on while another's
+// refusals are still being written. The stream is as it was once the last one ends.
+class SilencedOpenMeshErrors {
+ public:
+  SilencedOpenMeshErrors();
+  ~SilencedOpenMeshErrors();
+  SilencedOpenMeshErrors(const SilencedOpenMeshErrors&) = delete;
+  SilencedOpenMeshErrors& operator=(const SilencedOpenMeshErrors&) = delete;
+};
+
 }  // namespace bounce

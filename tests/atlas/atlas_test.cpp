@@ -556,6 +556,31 @@ TEST(AtlasContent, SameCutsAndLayoutAtAnyThreadCount) {
   }
 }
 
+// Non-manifold meshes (three triangles on one edge: OpenMesh refuses the third and says so on its
+// error stream, which segmentation silences) laid out by many threads at once: nothing reaches
+// stderr, whichever thread finishes first.
+TEST(AtlasCharts, NoOpenMeshRefusalIsPrintedWhenInstancesSegmentInParallel) {
+  Scene scene;
+  Mesh fins;  // 200 fins a row, each three triangles on one edge, each refused once
+  for (int k = 0; k < 200; ++k) {
+    const auto first = static_cast<uint32_t>(fins.positions.size());
+    const glm::vec3 at(0, 0, 2.0f * k);
+    for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0.5f, 1, 0),
+                              glm::vec3(0.5f, -1, 0), glm::vec3(0.5f, 0, 1)})
+      fins.positions.push_back(at + p);
+    for (const uint32_t v : {0u, 1u, 2u, 1u, 0u, 3u, 0u, 1u, 4u})
+      fins.indices.push_back(first + v);  // three triangles on the edge 0–1
+  }
+  fins.normals.assign(fins.positions.size(), glm::vec3(0, 0, 1));
+  scene.meshes.push_back(fins);
+  for (int i = 0; i < 32; ++i)
+    addInstance(scene, 0, glm::translate(glm::mat4(1), glm::vec3(3.0f * i, 0, 0)));
+  testing::internal::CaptureStderr();
+  tbb::task_arena(4).execute([&] { buildAtlas(scene, AtlasSettings{}); });
+  const std::string printed = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(printed.find("PolyMeshT"), std::string::npos) << printed.substr(0, 200);
+}
+
 // Triangles without area (repeated corners, collinear, non-finite) share a one-texel chart;
 // the rest of the mesh is laid out as usual.
 TEST(AtlasCharts, DegenerateTrianglesGetOneTexel) {
