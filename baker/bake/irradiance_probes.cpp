@@ -228,7 +228,8 @@ uint64_t fillInvalid(const std::vector<ProbeGrid>& grids, const std::vector<uint
 }  // namespace
 
 std::vector<ProbeGrid> placeProbeGrids(const WorldGeometry& geometry,
-                                       std::span<const ProbedInstance> instances) {
+                                       std::span<const ProbedInstance> instances,
+                                       float maxSpacing) {
   const std::vector<std::vector<uint32_t>> triangles = instanceTriangles(geometry, instances);
   std::vector<ProbeGrid> grids;
   uint32_t first = 0;
@@ -242,7 +243,8 @@ std::vector<ProbeGrid> placeProbeGrids(const WorldGeometry& geometry,
     if (box.empty()) continue;
     const glm::vec3 extent = box.upper - box.lower;
     const float longest = std::max(extent.x, std::max(extent.y, extent.z));
-    const float h = std::clamp(0.5f * longest, kMinProbeSpacing, kMaxProbeSpacing);
+    const float h =
+        std::clamp(0.5f * longest, kMinProbeSpacing, std::max(maxSpacing, kMinProbeSpacing));
     const float margin = std::max(0.25f * h, kMinProbeMargin);
     ProbeGrid grid;
     grid.instance = instances[i].fileIndex;
@@ -293,7 +295,7 @@ ProbeBake bakeIrradianceProbes(const Scene& scene, const WorldGeometry& geometry
                                const ProbeSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   ProbeBake out;
-  out.probes.grids = placeProbeGrids(geometry, instances);
+  out.probes.grids = placeProbeGrids(geometry, instances, settings.maxSpacing);
   out.needed = neededProbes(geometry, instances, out.probes.grids);
   std::vector<glm::vec3> positions;
   for (const ProbeGrid& g : out.probes.grids)

@@ -76,8 +76,11 @@ class ShProjection {
 
 // One grid per instance with triangles (in `instances` order, which must ascend by fileIndex),
 // the probes numbered grid after grid.
+// `maxSpacing` (m): the h clamp's upper end, kMaxProbeSpacing unless a measurement asks
+// (bench_probe_spacing).
 std::vector<ProbeGrid> placeProbeGrids(const WorldGeometry& geometry,
-                                       std::span<const ProbedInstance> instances);
+                                       std::span<const ProbedInstance> instances,
+                                       float maxSpacing = kMaxProbeSpacing);
 
 // Per probe of `grids` (placeProbeGrids's, for the same instances): whether a surface of its
 // instance can read it (a corner of a cell that a triangle's box, grown by the normal offset,
@@ -92,7 +95,8 @@ struct ProbeSettings {
   int maxDepth = 64;
   uint32_t seed = 0;
   LightChoice lightChoice = LightChoice::ByPlace;
-  int threads = 0;  // 0: all cores
+  int threads = 0;                      // 0: all cores
+  float maxSpacing = kMaxProbeSpacing;  // m, placeProbeGrids's
   // Probes done are counted here (total: the probe count), and cancelling stops the stage.
   StageProgress* progress = nullptr;
 };
