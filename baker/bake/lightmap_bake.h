@@ -15,6 +15,7 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/texel_irradiance.h"
 #include "bake/tile_scheduler.h"
+#include "bake_folder/gather.h"
 #include "image/image.h"
 
 namespace bounce {
@@ -45,6 +46,10 @@ struct LightmapBakeSettings {
   bool stitch = true;
   bool dilate = true;
   LightmapTiles tiles;
+  // Gather::Cache: a cache pass of `cacheSpp` whole paths per texel first, through the filters
+  // above; then the texels' paths end at its map (irradiance_cache.h).
+  Gather gather = Gather::Paths;
+  int cacheSpp = 64;
 };
 
 struct BakePhaseSeconds {
@@ -86,6 +91,10 @@ struct LightmapBake {
   // tiles are zero).
   uint32_t tiles = 0, tilesShare = 0, tilesRestored = 0;
   bool partial = false;
+  // The cache pass (Gather::Cache), when this process computed tiles: its samples and seconds
+  // (part of the irradiance's; its rays are in `rays`).
+  uint64_t cacheSamples = 0;
+  double cacheSeconds = 0.0;
 };
 
 // bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): at most 4096 samples per
