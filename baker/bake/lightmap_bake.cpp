@@ -251,8 +251,10 @@ std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const World
   std::vector<uint8_t> readable(valid.size(), 0);
   for (std::size_t t = 0; t < readable.size(); ++t)
     readable[t] = valid[t] && !map.invalid[t] ? 1 : 0;
+  // Its rays are not in bake.rays: a merge computes no cache, yet must report what one process
+  // does (bake.json's rays.traced: the leak guard's and the tiles' rays).
   bake.cacheSamples = gathered.totalSamples;
-  bake.rays += gathered.totalRays;
+  bake.cacheRays = gathered.totalRays;
   bake.cacheSeconds = clock.lap();
   return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(map.irradiance),
                                            std::move(readable));
@@ -265,6 +267,8 @@ LightmapBakeSettings defaultBakeSettings() {
   settings.irradiance.maxSpp = 4096;
   settings.irradiance.targetError = 0.1f;
   settings.denoise = true;
+  settings.gather = Gather::Cache;
+  settings.cacheSpp = 32;
   return settings;
 }
 

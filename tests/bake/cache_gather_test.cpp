@@ -71,7 +71,7 @@ TEST(CacheGather, ClosedFurnaceGivesTheExactIrradiance) {
   }
   EXPECT_LE(outliers, static_cast<int>(texels.size()) / 100);
   // One reflection and its emission instead of whole paths: fewer rays per sample.
-  const double raysPerSample = static_cast<double>(cached.rays) /
+  const double raysPerSample = static_cast<double>(cached.rays + cached.cacheRays) /
                                static_cast<double>(cached.totalSamples + cached.cacheSamples);
   const double pathRaysPerSample =
       static_cast<double>(cacheAlike.rays) / static_cast<double>(cacheAlike.totalSamples);
