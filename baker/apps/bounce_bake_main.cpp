@@ -37,6 +37,7 @@ struct Options {
   std::filesystem::path out;
   bounce::SceneBakeSettings bake;
   std::string denoise = kDefaults.denoise ? "on" : "off";
+  std::string gather = bounce::gatherName(kDefaults.gather);
   std::string maxMemory;  // "512M", "4G"; empty: no limit
   std::filesystem::path png;
   std::string shard;  // "K/N"; empty: the whole bake
@@ -93,6 +94,7 @@ int run(Options o) {
   o.bake.backend = bounce::parseRayBackend(o.shared.backend);
   o.bake.lightChoice = *bounce::parseLightChoice(o.shared.lightChoice);  // checked by CLI11
   o.bake.denoise = o.denoise == "on";
+  o.bake.gather = *bounce::parseGather(o.gather);  // checked by CLI11
   if (!o.maxMemory.empty()) o.bake.maxMemory = bounce::parseMemorySize(o.maxMemory);
   o.bake.resume = o.resume;
   bounce::listenForInterrupt();
@@ -176,6 +178,14 @@ int main(int argc, char** argv) {
                  "--spp)")
       ->check(CLI::Range(0.0, 1.0));
   bounce::addPathTracingOptions(app, shared);
+  app.add_option("--gather", o.gather,
+                 "how texels gather indirect light: 'paths' (every sample a whole path) or "
+                 "'cache' (a short bake of --cache-spp paths per texel first, then paths that "
+                 "end at its map after one reflection; docs/baker.md)")
+      ->check(CLI::IsMember({"paths", "cache"}));
+  app.add_option("--cache-spp", o.bake.cacheSpp,
+                 "samples per texel of the cache pass (--gather cache)")
+      ->check(CLI::Range(1, 1 << 20));
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--png", o.png,

@@ -27,11 +27,13 @@ Scene bakedDirectScene(const Scene& scene) {
 }
 
 BakedLight::BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-                       TraceSettings trace)
+                       TraceSettings trace, const IndirectCache* cache, bool bakedDirect)
     : directScene_(bakedDirectScene(scene)),
-      anyBakedDirect_(!directScene_.lights.empty() || emits(directScene_)),
+      anyBakedDirect_(bakedDirect && (!directScene_.lights.empty() || emits(directScene_))),
       indirect_(scene, geometry, kernel, withPaths(trace, PathSet::IndirectOnly)),
-      bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {}
+      bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {
+  indirect_.setCache(cache);
+}
 
 BakedLight::Sample BakedLight::sample(glm::vec3 position, glm::vec3 normal,
                                       SobolSampler& sampler) const {

@@ -17,6 +17,7 @@
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
+#include "trace/indirect_cache.h"
 #include "trace/path_tracer.h"
 #include "trace/sobol_sampler.h"
 #include "trace/trace_settings.h"
@@ -33,9 +34,11 @@ Scene bakedDirectScene(const Scene& scene);
 class BakedLight {
  public:
   // `trace` gives the depth, seed and light choice (its paths are set here). scene, geometry and
-  // kernel must outlive it.
+  // kernel must outlive it. `cache`, when given (and outliving it), ends the indirect paths at
+  // the cached indirect irradiance (trace/indirect_cache.h); `bakedDirect` false leaves out the
+  // baked-only lights' direct light (what the cache itself holds: the indirect part only).
   BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-             TraceSettings trace);
+             TraceSettings trace, const IndirectCache* cache = nullptr, bool bakedDirect = true);
   BakedLight(const BakedLight&) = delete;
   BakedLight& operator=(const BakedLight&) = delete;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "bake/irradiance_cache.h"
 #include "bake/lightmap_filters.h"
 #include "bake/texel_coverage.h"
 #include "bake/tile_grid.h"
@@ -21,6 +22,8 @@ namespace {
 
 // Candidate points use a pattern of their own, apart from the irradiance samples'.
 constexpr uint32_t kPointSeedSalt = 0x9e3779b9u;
+// So does the cache pass: its errors are independent of the final gather's samples.
+constexpr uint32_t kCacheSeedSalt = 0x85ebca6bu;
 
 // A stage of the plan, begun (and checked for a cancel) when the plan has it.
 std::unique_ptr<StageProgress> beginStage(const StagePlan* plan, const char* name, uint64_t total) {
@@ -57,14 +60,28 @@ uint64_t guardLeaks(const Scene& scene, const WorldGeometry& geometry, const Ray
   return guard.rays;
 }
 
+std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const WorldGeometry& geometry,
+                                                 const RayKernel& kernel,
+                                                 const LightmapLayout& layout,
+                                                 const TexelCoverage& coverage,
+                                                 const LightmapBakeSettings& settings,
+                                                 LightmapBake& bake);
+
 // The irradiance, tile by tile (the scheduler restores, shares and receives the tiles).
 void bakeIrradiance(TileScheduler& tiles, const Scene& scene, const WorldGeometry& geometry,
-                    const RayKernel& kernel, const TexelCoverage& coverage,
-                    const LightmapBakeSettings& settings, LightmapBake& bake) {
+                    const RayKernel& kernel, const LightmapLayout& layout,
+                    const TexelCoverage& coverage, const LightmapBakeSettings& settings,
+                    LightmapBake& bake) {
+  std::unique_ptr<IrradianceCache> cache;
   TiledStage<TexelIrradiance> stage;
   stage.stage = TileStage::Irradiance;
   stage.compute = [&](const TileWork& work, StageProgress* progress, auto done) {
     IrradianceSettings irradiance = settings.irradiance;
+    // Only a process with tiles to compute needs the cache (not a merge, nor a finished resume).
+    if (settings.gather == Gather::Cache && (!work.tiles.empty() || work.next)) {
+      cache = cacheIrradiance(scene, geometry, kernel, layout, coverage, settings, bake);
+      irradiance.cache = cache.get();
+    }
     irradiance.work = work;
     irradiance.tileDone = std::move(done);
     irradiance.progress = progress;
@@ -199,6 +216,50 @@ void dilateMap(const std::vector<uint8_t>& valid, const std::vector<uint32_t>& l
     dilateOnce(bake.irradiance, filled);
 }
 
+// The cache pass (irradiance_cache.h): every covered texel's indirect irradiance (no baked-only
+// direct light) from settings.cacheSpp whole paths of a seed of its own, then the final map's
+// zero fill, denoiser and dilation. A whole-map stage every process that computes tiles runs
+// before them, deterministic like they are, so it is never journalled; readable: covered texels
+// the leak guard kept.
+std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const WorldGeometry& geometry,
+                                                 const RayKernel& kernel,
+                                                 const LightmapLayout& layout,
+                                                 const TexelCoverage& coverage,
+                                                 const LightmapBakeSettings& settings,
+                                                 LightmapBake& bake) {
+  Stopwatch clock;
+  LightmapBakeSettings pass = settings;
+  pass.irradiance.maxSpp = std::max(settings.cacheSpp, 1);
+  pass.irradiance.targetError = 0.0f;
+  pass.irradiance.seed = settings.irradiance.seed ^ kCacheSeedSalt;
+  pass.irradiance.bakedDirect = false;
+  pass.irradiance.cache = nullptr;
+  pass.irradiance.work = TileWork{};
+  pass.irradiance.tileDone = nullptr;
+  pass.irradiance.progress = nullptr;
+  TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, pass.irradiance);
+  LightmapBake map;
+  map.covered = bake.covered;
+  map.invalid = bake.invalid;
+  map.irradiance = std::move(gathered.irradiance);
+  map.samples = std::move(gathered.samples);
+  map.relativeError = std::move(gathered.relativeError);
+  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, map.covered);
+  const std::vector<uint8_t> valid = fillZerosAndSummarise(coverage, labels, pass, map);
+  if (settings.denoise) denoiseMap(coverage, labels, layout, map);
+  dilateMap(valid, labels, layout, map);
+  std::vector<uint8_t> readable(valid.size(), 0);
+  for (std::size_t t = 0; t < readable.size(); ++t)
+    readable[t] = valid[t] && !map.invalid[t] ? 1 : 0;
+  // Its rays are not in bake.rays: a merge computes no cache, yet must report what one process
+  // does (bake.json's rays.traced: the leak guard's and the tiles' rays).
+  bake.cacheSamples = gathered.totalSamples;
+  bake.cacheRays = gathered.totalRays;
+  bake.cacheSeconds = clock.lap();
+  return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(map.irradiance),
+                                           std::move(readable));
+}
+
 }  // namespace
 
 LightmapBakeSettings defaultBakeSettings() {
@@ -206,6 +267,8 @@ LightmapBakeSettings defaultBakeSettings() {
   settings.irradiance.maxSpp = 4096;
   settings.irradiance.targetError = 0.1f;
   settings.denoise = true;
+  settings.gather = Gather::Cache;
+  settings.cacheSpp = 32;
   return settings;
 }
 
@@ -225,7 +288,7 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   bake.tiles = tiles.tiles();
   bake.tilesShare = tiles.share();
   bake.partial = tiles.partial();
-  bakeIrradiance(tiles, scene, geometry, kernel, coverage, settings, bake);
+  bakeIrradiance(tiles, scene, geometry, kernel, layout, coverage, settings, bake);
   bake.seconds.irradiance = clock.lap();
   const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
   const AreaLightSet lights = sceneAreaLights(scene);

@@ -58,7 +58,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   trace.maxDepth = settings.maxDepth;
   trace.seed = settings.seed;
   trace.lightChoice = settings.lightChoice;
-  const BakedLight light(scene, geometry, counting, trace);
+  const BakedLight light(scene, geometry, counting, trace, settings.cache, settings.bakedDirect);
 
   const std::size_t texels = coverage.texelCount();
   TexelIrradiance out;

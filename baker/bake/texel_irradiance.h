@@ -25,6 +25,7 @@
 
 namespace bounce {
 
+class IndirectCache;
 class RayKernel;
 class StageProgress;
 struct Scene;
@@ -45,6 +46,11 @@ struct IrradianceSettings {
   StageProgress* progress = nullptr;
   // The tiles to compute (all texels by default); the others are left zero.
   TileWork work;
+  // Ends the indirect paths at this cache (trace/indirect_cache.h, irradiance_cache.h); null:
+  // whole paths. Must outlive the call.
+  const IndirectCache* cache = nullptr;
+  // false: the indirect light only, without the baked-only lights' direct light (the cache pass).
+  bool bakedDirect = true;
   // Called with each tile of `work` once its texels are in `out`, from the worker that finished
   // it (several at once: it must lock what it shares); may be empty.
   std::function<void(uint32_t tile, const TexelIrradiance& out)> tileDone;

@@ -30,6 +30,10 @@ namespace {
 constexpr double kBytesPerAtlasTexel = 135.0;
 constexpr double kBytesPerCoveredTexel = 150.0;
 constexpr double kFixedBytes = 3e6;
+// The cache gather (bake/irradiance_cache.h) keeps its map through the final pass: per atlas
+// texel its irradiance (12) and mask (1); per static triangle its corner UVs and texel edge (28).
+constexpr double kCacheBytesPerAtlasTexel = 13.0;
+constexpr double kCacheBytesPerTriangle = 28.0;
 // Per static triangle besides the kernel: the flattened world geometry (3 vertices' position,
 // normal and two UVs, 3 indices, material and instance: about 3·40 + 20) and the static scene.
 constexpr double kGeometryBytesPerTriangle = 140.0 + 60.0;
@@ -61,6 +65,8 @@ BakeMemoryEstimate estimateBakeMemory(const Scene& scene, const LightmapLayout& 
   e.geometry = triangles * (kKernelBytesPerTriangle + kGeometryBytesPerTriangle);
   const double texels = static_cast<double>(layout.width) * static_cast<double>(layout.height);
   e.texels = kFixedBytes + texels * (kBytesPerAtlasTexel + utilisation * kBytesPerCoveredTexel);
+  if (settings.gather == Gather::Cache)
+    e.texels += texels * kCacheBytesPerAtlasTexel + triangles * kCacheBytesPerTriangle;
   constexpr int kPointsPerTexel = 8;  // LightmapBakeSettings::pointsPerTexel
   // The point list is allocated once for every covered texel (texel_coverage.cpp).
   e.points = utilisation * texels * kPointsPerTexel * static_cast<double>(sizeof(TexelPoint));

@@ -19,6 +19,8 @@ SceneBakeSettings::SceneBakeSettings() : backend(RayBackend::Embree) {
   targetError = defaults.irradiance.targetError;
   maxDepth = defaults.irradiance.maxDepth;
   denoise = defaults.denoise;
+  gather = defaults.gather;
+  cacheSpp = defaults.cacheSpp;
   pointsPerTexel = defaults.pointsPerTexel;
   vpls = VplSettings{}.maxVpls;
   vplError = VplSettings{}.relativeError;

@@ -39,6 +39,8 @@ LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, c
   settings.irradiance.lightChoice = o.lightChoice;
   settings.irradiance.threads = o.threads;
   settings.denoise = o.denoise;
+  settings.gather = o.gather;
+  settings.cacheSpp = o.cacheSpp;
   settings.pointsPerTexel = o.pointsPerTexel;
   LightmapBake bake = bakeLightmap(*statics.scene, *statics.geometry, *statics.kernel,
                                    staticLayout(scene, atlas.layout), settings);

@@ -177,6 +177,7 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
   if (reachedSurface != nullptr) *reachedSurface = false;
   glm::vec3 radiance(0.0f);
   glm::vec3 beta = throughput;
+  glm::vec3 previous = point.position;  // the vertex `point` was reached from (none at depth 0)
   // Invariant: `point` is reached after `depth` reflections and its emission is counted.
   for (; depth < maxReflections_; ++depth) {
     const uint32_t dim = baseDim + kDimsPerVertex * static_cast<uint32_t>(depth);
@@ -185,6 +186,12 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
       sampler.setDimension(dim);
       radiance += beta * sampleLight(point, sampler);
     }
+    // The cache (indirect_cache.h): the light after depth + 2 or more reflections, ρ/π·E_indirect;
+    // the path then ends after this vertex's BRDF-sampled ray has looked for emission.
+    std::optional<glm::vec3> cached;
+    if (cache_ != nullptr && depth >= 1 && depth + 1 >= minReflections_)
+      cached = cache_->irradianceAt(point, previous);
+    if (cached) radiance += beta * point.albedo * kInvPi * *cached;
 
     // Continue the path by sampling the BRDF: f·cosθ/pdf = (ρ/π)·cosθ / (cosθ/π) = ρ.
     sampler.setDimension(dim + kDimBrdf);
@@ -196,8 +203,9 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     beta *= point.albedo;
     if (maxComponent(beta) <= 0.0f) break;
 
-    // Russian roulette on the throughput: survive with q = min(1, max β), reweight by 1/q.
-    if (depth >= settings_.rouletteDepth) {
+    // Russian roulette on the throughput: survive with q = min(1, max β), reweight by 1/q. Not
+    // on a cached vertex's last ray: it only looks for emission.
+    if (depth >= settings_.rouletteDepth && !cached) {
       const float survive = std::min(1.0f, maxComponent(beta));
       sampler.setDimension(dim + kDimRoulette);
       if (sampler.get1D() >= survive) break;
@@ -228,6 +236,8 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
       }
       radiance += beta * next.emitted * weight;
     }
+    if (cached) break;
+    previous = point.position;
     point = next;
   }
   return radiance;

@@ -14,6 +14,7 @@
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
 #include "trace/emitters.h"
+#include "trace/indirect_cache.h"
 #include "trace/light_sampler.h"
 #include "trace/sobol_sampler.h"
 #include "trace/surface_point.h"
@@ -50,6 +51,13 @@ class PathTracer {
   // wherever the scene has no light at infinity).
   glm::vec3 irradiance(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
                        bool* nonFinite = nullptr, bool* reachedSurface = nullptr) const;
+
+  // Ends paths at `cache` (indirect_cache.h) from the first vertex after a reflection on where its
+  // guards let it answer, and where that vertex's own next-event light is counted (so never for
+  // DirectOnly, and for IndirectOnly from the second vertex of a camera path, the first of an
+  // irradiance estimate). The cache must hold the light of this tracer's scene that reflected at
+  // least once (PathSet::IndirectOnly irradiance) and outlive the tracer; null: no cache.
+  void setCache(const IndirectCache* cache) { cache_ = cache; }
 
   bool hasLights() const { return !emitters_.empty() || !scene_.lights.empty() || !vpls_.empty(); }
   const EmitterTable& emitters() const { return emitters_; }
@@ -91,6 +99,7 @@ class PathTracer {
   bool byPlace_;         // settings ask for it and lights_ can (LightSampler::choosesByPlace)
   int minReflections_;
   int maxReflections_;
+  const IndirectCache* cache_ = nullptr;
 };
 
 }  // namespace bounce

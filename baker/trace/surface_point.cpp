@@ -59,6 +59,7 @@ bool makeSurfacePoint(const Scene& scene, const WorldGeometry& geometry, const R
   const bool frontFace = glm::dot(front, ray.direction) < 0.0f;
   point.position = p;
   point.triangle = hit.triangle;
+  point.barycentric = glm::vec2(hit.u, hit.v);
   point.geometricNormal = frontFace ? front : -front;
 
   // Interpolated shading normal: each corner's normal, or the geometric normal where the

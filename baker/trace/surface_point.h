@@ -23,6 +23,8 @@ struct SurfacePoint {
   glm::vec3 albedo{0.0f};   // ρ in [0,1]: Material::albedo × base colour texture at uv0
   glm::vec3 emitted{0.0f};  // W/(sr·m²) towards the ray origin (front face unless doubleSided)
   uint32_t triangle = kNoHit;
+  // The hit's barycentrics (Hit::u, Hit::v) on `triangle`'s corners 1 and 2 (WorldGeometry order).
+  glm::vec2 barycentric{0.0f};
 };
 
 // Returns false (leaving `point` unspecified) when the hit's geometry is not finite: such a

@@ -17,18 +17,24 @@ constexpr double kFloatMax = std::numeric_limits<float>::max();
 
 nlohmann::json bakeSettingsJson(const BakeSettings& s) {
   // Reals as doubles: the float's exact value, which a parse turns back into the same float.
-  return {{"texelSize", static_cast<double>(s.texelSize)},
-          {"texelBudget", s.texelBudget},
-          {"maxTexels", s.maxTexels},
-          {"maxSpp", s.maxSpp},
-          {"targetError", static_cast<double>(s.targetError)},
-          {"maxDepth", s.maxDepth},
-          {"seed", s.seed},
-          {"denoise", s.denoise},
-          {"lightChoice", lightChoiceName(s.lightChoice)},
-          {"pointsPerTexel", s.pointsPerTexel},
-          {"vpls", s.vpls},
-          {"vplError", static_cast<double>(s.vplError)}};
+  nlohmann::json json = {{"texelSize", static_cast<double>(s.texelSize)},
+                         {"texelBudget", s.texelBudget},
+                         {"maxTexels", s.maxTexels},
+                         {"maxSpp", s.maxSpp},
+                         {"targetError", static_cast<double>(s.targetError)},
+                         {"maxDepth", s.maxDepth},
+                         {"seed", s.seed},
+                         {"denoise", s.denoise},
+                         {"lightChoice", lightChoiceName(s.lightChoice)},
+                         {"pointsPerTexel", s.pointsPerTexel},
+                         {"vpls", s.vpls},
+                         {"vplError", static_cast<double>(s.vplError)}};
+  // Only a cache gather names it: a paths bake keeps the hash it had before the option existed.
+  if (s.gather == Gather::Cache) {
+    json["gather"] = gatherName(s.gather);
+    json["cacheSpp"] = s.cacheSpp;
+  }
+  return json;
 }
 
 BakeSettings parseBakeSettings(const std::filesystem::path& file, const nlohmann::json& object,
@@ -53,6 +59,14 @@ BakeSettings parseBakeSettings(const std::filesystem::path& file, const nlohmann
   s.pointsPerTexel = static_cast<int>(f.integer("pointsPerTexel", 0, kIntMax));
   s.vpls = static_cast<int>(f.integer("vpls", 0, kIntMax));
   s.vplError = static_cast<float>(f.real("vplError", 0.0, kFloatMax));
+  // Settings written before the gather existed, and every paths bake, mean "paths".
+  const std::string gather = f.find("gather") ? f.text("gather") : "paths";
+  const std::optional<Gather> parsedGather = parseGather(gather);
+  if (!parsedGather)
+    f.fail(f.name("gather") + " is \"" + gather + "\", not " + gatherName(Gather::Paths) + " or " +
+           gatherName(Gather::Cache));
+  s.gather = *parsedGather;
+  if (s.gather == Gather::Cache) s.cacheSpp = static_cast<int>(f.integer("cacheSpp", 1, kIntMax));
   return s;
 }
 

@@ -5,8 +5,10 @@
 // (baker/pipeline/tile_journal.h), so a resume or a merge bakes with the same settings. How the
 // work is distributed (threads, journal, shards, MPI) is not here: no byte depends on it. GL-free.
 //
-//   JSON (keys sorted): denoise, lightChoice ("place" | "power"; absent: "power", the only pick
-//   before it existed), maxDepth, maxSpp, maxTexels, pointsPerTexel, seed, targetError (relative
+//   JSON (keys sorted): cacheSpp and gather ("cache"; both only with the cache gather, absent:
+//   "paths", the only gather before it existed, so a paths bake keeps its settings hash),
+//   denoise, lightChoice ("place" | "power"; absent: "power", the only pick before it existed),
+//   maxDepth, maxSpp, maxTexels, pointsPerTexel, seed, targetError (relative
 //   standard error), texelBudget, texelSize (m), vplError (relative), vpls. Reals are written as
 //   the doubles of the floats the bake used, so a parse gives back the same floats.
 #pragma once
@@ -17,6 +19,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "bake_folder/gather.h"
 #include "bake_folder/light_choice.h"
 
 namespace bounce {
@@ -33,7 +36,9 @@ struct BakeSettings {
   LightChoice lightChoice = LightChoice::ByPlace;  // next-event estimation's pick
   int pointsPerTexel = 8;                          // candidate sample points per texel
   int vpls = 0;                                    // most VPLs; 0: none
-  float vplError = 0.0f;  // relative standard error of the total VPL flux to stop at
+  float vplError = 0.0f;          // relative standard error of the total VPL flux to stop at
+  Gather gather = Gather::Paths;  // how texels gather indirect light
+  int cacheSpp = 0;               // samples per texel of the cache pass (Gather::Cache only)
 };
 
 nlohmann::json bakeSettingsJson(const BakeSettings& settings);

@@ -51,6 +51,30 @@ TEST(BakeSettingsJson, EveryFieldComesBackBitForBitFromItsText) {
   EXPECT_EQ(parseBakeSettings("key", old, "settings").lightChoice, LightChoice::ByPower);
 }
 
+// The gather (bake_folder/gather.h): a cache bake names it and its cache's samples, so its hash
+// differs from the paths bake's; a paths bake writes neither key, so the settings and hash of
+// every bake written before the option existed stay what they were.
+TEST(BakeSettingsJson, TheCacheGatherIsNamedAndChangesTheHashAPathsBakeIsUnchanged) {
+  BakeSettings paths;
+  paths.maxSpp = 4096;
+  const nlohmann::json before = bakeSettingsJson(paths);
+  EXPECT_FALSE(before.contains("gather"));
+  EXPECT_FALSE(before.contains("cacheSpp"));
+  EXPECT_EQ(parseBakeSettings("key", before, "settings").gather, Gather::Paths);
+  BakeSettings cache = paths;
+  cache.gather = Gather::Cache;
+  cache.cacheSpp = 48;
+  const nlohmann::json text = nlohmann::json::parse(bakeSettingsJson(cache).dump());
+  EXPECT_EQ(text.value("gather", ""), "cache");
+  const BakeSettings back = parseBakeSettings("key", text, "settings");
+  EXPECT_EQ(back.gather, Gather::Cache);
+  EXPECT_EQ(back.cacheSpp, 48);
+  EXPECT_EQ(settingsHash(back), settingsHash(cache));
+  EXPECT_NE(settingsHash(cache), settingsHash(paths));
+  cache.cacheSpp = 64;
+  EXPECT_NE(settingsHash(cache), settingsHash(back));
+}
+
 TEST(BakeSettingsJson, AFieldMissingOrOutOfRangeIsNamed) {
   const nlohmann::json good = bakeSettingsJson(BakeSettings{});
   const auto refusal = [](const nlohmann::json& j) {
@@ -74,6 +98,13 @@ TEST(BakeSettingsJson, AFieldMissingOrOutOfRangeIsNamed) {
   EXPECT_NE(refusal(choice).find("settings.lightChoice is \"brightest\", not place or power"),
             std::string::npos)
       << refusal(choice);
+  nlohmann::json gather = good;
+  gather["gather"] = "photons";
+  EXPECT_NE(refusal(gather).find("settings.gather is \"photons\", not paths or cache"),
+            std::string::npos)
+      << refusal(gather);
+  gather["gather"] = "cache";
+  EXPECT_NE(refusal(gather).find("\"settings.cacheSpp\""), std::string::npos) << refusal(gather);
 }
 
 }  // namespace

@@ -40,6 +40,10 @@ int main(int argc, char** argv) {
                  "most VPLs (default 0: the lightmap alone; a static instance the atlas leaves to "
                  "the VPLs then reads no indirect light)");
   app.add_option("--denoise", denoise, "on|off")->check(CLI::IsMember({"on", "off"}));
+  std::string gather = gatherName(bake.gather);
+  app.add_option("--gather", gather, "paths|cache (bounce-bake --gather)")
+      ->check(CLI::IsMember({"paths", "cache"}));
+  app.add_option("--cache-spp", bake.cacheSpp, "samples per texel of the cache pass");
   app.add_option("--size", size, "frame width (and height unless --height), pixels");
   app.add_option("--height", height, "frame height, pixels (default: --size)");
   app.add_option("--camera", cameraName, "camera name (default: the scene's first)");
@@ -54,6 +58,7 @@ int main(int argc, char** argv) {
   app.add_flag("--header", header, "print the CSV header first");
   CLI11_PARSE(app, argc, argv);
   bake.denoise = denoise == "on";
+  bake.gather = *parseGather(gather);  // checked by CLI11
   try {
     const Scene scene = loadScene(scenePath);
     if (height == 0) height = size;
