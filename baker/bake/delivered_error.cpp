@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "bake/lightmap_filters.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
 

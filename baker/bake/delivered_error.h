@@ -47,9 +47,9 @@
 
 #include "image/image.h"
 
-#include "bake/lightmap_filters.h"
-
 namespace bounce {
+
+struct DenoiseGuide;  // lightmap_filters.h
 
 // +1 (half A) or −1 (half B) for sample `sample` of texel `texel`.
 float splitSign(uint32_t seed, uint32_t texel, uint32_t sample);
