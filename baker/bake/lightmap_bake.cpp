@@ -100,6 +100,8 @@ void bakeIrradiance(TileScheduler& tiles, const Scene& scene, const WorldGeometr
   bake.irradiance = std::move(gathered.irradiance);
   bake.samples = std::move(gathered.samples);
   bake.relativeError = std::move(gathered.relativeError);
+  bake.halfDifference = std::move(gathered.halfDifference);
+  bake.prefixLuminance = std::move(gathered.prefixLuminance);
   bake.rays += gathered.totalRays;
   bake.totalSamples = gathered.totalSamples;
   bake.nonFiniteSamples = gathered.nonFiniteSamples;
@@ -155,6 +157,11 @@ std::vector<uint8_t> fillZerosAndSummarise(const TexelCoverage& coverage,
                         : 0;
   bake.zerosFilled =
       fillUnresolvedZeros(bake.irradiance, unresolved, bake.invalid, labels, bake.relativeError);
+  std::vector<float> unused = bake.relativeError;  // the same fill of the half difference
+  fillUnresolvedZeros(bake.halfDifference, unresolved, bake.invalid, labels, unused);
+  bake.zeroFilled.assign(texels, 0);
+  for (std::size_t t = 0; t < texels; ++t)
+    bake.zeroFilled[t] = unresolved[t] && bake.irradiance.pixels[t] != glm::vec3(0.0f) ? 1 : 0;
   std::vector<uint8_t> valid(texels, 0);
   std::vector<float> errors;
   for (std::size_t t = 0; t < texels; ++t) {
@@ -198,22 +205,21 @@ void denoiseMap(const TexelCoverage& coverage, const std::vector<uint32_t>& labe
     guide.normal[t] = glm::length(nrm) > 0.0f ? glm::normalize(nrm) : nrm;
     guide.label[t] = labels[t];
   }
-  denoise(bake.irradiance, guide);
+  denoiseWithErrorDraw(bake.irradiance, bake.halfDifference, guide);
 }
 
 // Invalid texels take their chart's valid neighbours' values, then everything grows into the
-// padding.
+// padding. The masks depend on the texels' flags only: the same filter for any image.
 void dilateMap(const std::vector<uint8_t>& valid, const std::vector<uint32_t>& labels,
-               const LightmapLayout& layout, LightmapBake& bake) {
+               const LightmapLayout& layout, const LightmapBake& bake, Image& image) {
   std::vector<uint8_t> filled = valid;
   for (std::size_t t = 0; t < filled.size(); ++t)
     filled[t] |= static_cast<uint8_t>(!bake.covered[t]);
-  while (dilateOnce(bake.irradiance, filled, &labels) > 0) {
+  while (dilateOnce(image, filled, &labels) > 0) {
   }
   filled = valid;
   for (std::size_t t = 0; t < filled.size(); ++t) filled[t] |= bake.invalid[t];
-  for (int ring = 0; ring < std::max(layout.padding, 2); ++ring)
-    dilateOnce(bake.irradiance, filled);
+  for (int ring = 0; ring < std::max(layout.padding, 2); ++ring) dilateOnce(image, filled);
 }
 
 // The cache pass (irradiance_cache.h): every covered texel's indirect irradiance (no baked-only
@@ -244,10 +250,13 @@ std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const World
   map.irradiance = std::move(gathered.irradiance);
   map.samples = std::move(gathered.samples);
   map.relativeError = std::move(gathered.relativeError);
+  // The final map's filters take the half difference along (delivered_error.h); the cache's own
+  // error is not reported, so it is only carried.
+  map.halfDifference = std::move(gathered.halfDifference);
   const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, map.covered);
   const std::vector<uint8_t> valid = fillZerosAndSummarise(coverage, labels, pass, map);
   if (settings.denoise) denoiseMap(coverage, labels, layout, map);
-  dilateMap(valid, labels, layout, map);
+  dilateMap(valid, labels, layout, map, map.irradiance);
   std::vector<uint8_t> readable(valid.size(), 0);
   for (std::size_t t = 0; t < readable.size(); ++t)
     readable[t] = valid[t] && !map.invalid[t] ? 1 : 0;
@@ -300,16 +309,29 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
 
   const std::unique_ptr<StageProgress> step = beginStage(settings.stages, kStageFilters, 1);
   const std::vector<uint8_t> valid = fillZerosAndSummarise(coverage, labels, settings, bake);
+  std::vector<uint8_t> own = valid, sampled = valid;  // texels with samples of their own;
+  for (std::size_t t = 0; t < own.size(); ++t) {      // and of those, the ones holding them
+    own[t] &= static_cast<uint8_t>(!bake.invalid[t] && bake.samples[t] > 0);
+    sampled[t] = own[t] & static_cast<uint8_t>(!bake.zeroFilled[t]);
+  }
+  const std::vector<float> stopBias =
+      stoppingBias(bake.irradiance, bake.prefixLuminance, sampled, labels);
   if (settings.denoise) denoiseMap(coverage, labels, layout, bake);
+  addStoppingBias(bake.halfDifference, bake.irradiance, stopBias);
   bake.seconds.denoise = clock.lap();
-  if (settings.dilate) dilateMap(valid, labels, layout, bake);
+  if (settings.dilate) {
+    dilateMap(valid, labels, layout, bake, bake.irradiance);
+    dilateMap(valid, labels, layout, bake, bake.halfDifference);
+  }
   bake.seconds.dilate = clock.lap();
   if (settings.stitch) {
     const std::vector<Seam> seams = findSeams(scene, geometry, layout);
     bake.seams = seams.size();
     bake.seamMismatch = stitchSeams(bake.irradiance, seams);
+    stitchSeams(bake.halfDifference, seams, 64, false);
   }
   bake.seconds.stitch = clock.lap();
+  bake.delivered = deliveredError(bake.irradiance, bake.halfDifference, own, bake.zeroFilled);
   if (step) step->advance(1);
   return bake;
 }

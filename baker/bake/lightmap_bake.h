@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "bake/delivered_error.h"
 #include "bake/leak_guard.h"
 #include "bake/light_visibility_bake.h"
 #include "bake/texel_irradiance.h"
@@ -69,15 +70,23 @@ struct LightmapBake {
   uint64_t coveredTexels = 0;
   // Texels the zero rule stopped at 0 that took their lit neighbours' mean (fillUnresolvedZeros).
   uint64_t zerosFilled = 0;
+  std::vector<uint8_t> zeroFilled;  // per texel: one of those
   uint64_t invalidTexels = 0;
   uint64_t pointsInside = 0, pointsAcross = 0;
   uint64_t rays = 0;  // leak guard + irradiance
   uint64_t totalSamples = 0;
   uint64_t nonFiniteSamples = 0;  // counted as black (texel_irradiance.h)
-  // Estimated error over valid covered texels with E > 0: mean and 95th percentile of the
-  // per-texel relative standard error.
+  // The sampler's estimate over valid covered texels with E > 0, before any filter: mean and
+  // 95th percentile of the per-texel relative standard error (what the adaptive stop uses).
   float meanRelativeError = 0.0f;
   float p95RelativeError = 0.0f;
+  // The half-sample difference D (W/m², delivered_error.h); after the filters, one draw of the
+  // delivered map's error (the halves' noise through the filters plus the denoiser's and the
+  // stop's estimated bias), and from it the delivered map's estimated relative error (valid
+  // covered texels whose delivered E > 0; perTexel −1 elsewhere).
+  Image halfDifference;
+  std::vector<float> prefixLuminance;  // W/m², texel_irradiance.h
+  DeliveredError delivered;
   std::size_t seams = 0;
   float seamMismatch = 0.0f;  // after stitching, relative (stitchSeams)
   BakePhaseSeconds seconds;

@@ -193,13 +193,14 @@ struct EdgeSide {
 
 }  // namespace
 
-float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations) {
+float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations, bool clampAtZero) {
   const auto points = seamPoints(image, seams);
   for (int it = 0; it < iterations; ++it) {
     for (const auto& [a, b] : points) project(image, a, b);
   }
   // Irradiance is non-negative: a nudge may not push a texel below zero.
-  for (glm::vec3& p : image.pixels) p = glm::max(p, glm::vec3(0.0f));
+  if (clampAtZero)
+    for (glm::vec3& p : image.pixels) p = glm::max(p, glm::vec3(0.0f));
   float worst = 0.0f;
   for (const auto& [a, b] : points) {
     const float la = luminance(lookup(image, a)), lb = luminance(lookup(image, b));
@@ -258,7 +259,7 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
   return seams;
 }
 
-void denoise(Image& image, const DenoiseGuide& guide) {
+void denoise(Image& image, const DenoiseGuide& guide, Image* alongside) {
   static constexpr float kStop = 2.0f;
   static constexpr std::array<float, 5> kB3 = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
   const int w = image.width, h = image.height;
@@ -272,6 +273,7 @@ void denoise(Image& image, const DenoiseGuide& guide) {
     variance[i] = sigma * sigma;
   }
   Image next = image;
+  Image nextAlongside = alongside ? *alongside : Image();
   std::vector<float> nextVariance = variance;
   for (const int step : {1, 2, 4, 8}) {
     if (step > 1 && static_cast<float>(step) * guide.texelSize > guide.maxStepMetres) break;
@@ -287,7 +289,7 @@ void denoise(Image& image, const DenoiseGuide& guide) {
         // A texel no light reaches (every sample exactly 0) is exact: nothing to denoise, and
         // light from a neighbour across a thin wall must not blur into it.
         if (li == 0.0f && variance[i] == 0.0f) continue;
-        glm::vec3 sum(0.0f);
+        glm::vec3 sum(0.0f), sumAlongside(0.0f);
         float weightSum = 0.0f, weight2Variance = 0.0f;
         for (int dy = -2; dy <= 2; ++dy) {
           for (int dx = -2; dx <= 2; ++dx) {
@@ -310,17 +312,20 @@ void denoise(Image& image, const DenoiseGuide& guide) {
             else if (dl != 0.0f)
               weight = 0.0f;
             sum += weight * image.pixels[j];
+            if (alongside) sumAlongside += weight * alongside->pixels[j];
             weightSum += weight;
             weight2Variance += weight * weight * variance[j];
           }
         }
         if (weightSum > 0.0f) {
           next.pixels[i] = sum / weightSum;
+          if (alongside) nextAlongside.pixels[i] = sumAlongside / weightSum;
           nextVariance[i] = weight2Variance / (weightSum * weightSum);
         }
       }
     }
     image = next;
+    if (alongside) *alongside = nextAlongside;
     variance = nextVariance;
   }
 }

@@ -59,8 +59,11 @@ std::vector<Seam> findSeams(const Scene& scene, const WorldGeometry& geometry,
 
 // Adjusts the texels under each seam (least change, Kaczmarz sweeps) so that bilinear lookups at
 // matching points on both sides agree: points every half texel along each seam. Returns the
-// largest remaining |difference| relative to the larger of the two lookups' luminance.
-float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations = 64);
+// largest remaining |difference| relative to the larger of the two lookups' luminance. The
+// sweeps are linear in the image; texels pushed below 0 are then clamped to 0 (irradiance),
+// unless `clampAtZero` is false (a signed image, such as a half-sample difference).
+float stitchSeams(Image& image, const std::vector<Seam>& seams, int iterations = 64,
+                  bool clampAtZero = true);
 
 // Largest |bilinear(side a) − bilinear(side b)| (luminance) over the seams' points, W/m².
 float largestSeamJump(const Image& image, const std::vector<Seam>& seams);
@@ -82,6 +85,8 @@ struct DenoiseGuide {
   // a world-space scale).
   float maxStepMetres = 0.61f;
 };
-void denoise(Image& image, const DenoiseGuide& guide);
+// `alongside`, when given (same size), gets the same weighted means as `image`, with the weights
+// `image` decided: the one linear filter applied to both (delivered_error.h).
+void denoise(Image& image, const DenoiseGuide& guide, Image* alongside = nullptr);
 
 }  // namespace bounce

@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include "bake/baked_light.h"
+#include "bake/delivered_error.h"
 #include "bake/texel_coverage.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
@@ -63,8 +64,10 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   const std::size_t texels = coverage.texelCount();
   TexelIrradiance out;
   out.irradiance = Image(coverage.width, coverage.height);
+  out.halfDifference = Image(coverage.width, coverage.height);
   out.samples.assign(texels, 0);
   out.relativeError.assign(texels, 0.0f);
+  out.prefixLuminance.assign(texels, 0.0f);
   out.nonFinite.assign(texels, 0);
   out.rays.assign(texels, 0);
   std::vector<uint32_t>& nonFinite = out.nonFinite;
@@ -82,6 +85,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
     const uint64_t raysBefore = counting.countOnThisThread();
     SobolSampler sampler(settings.seed, static_cast<uint32_t>(texel));
     glm::dvec3 sum(0.0);
+    HalfSplit halves;
     double mean = 0.0, m2 = 0.0;  // Welford on luminance
     uint32_t n = 0;
     uint32_t reachedSurface = 0;  // samples whose first ray met a surface
@@ -99,6 +103,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         nonFinite[texel] += sample.nonFinite;
         reachedSurface += sample.reachedSurface ? 1 : 0;
         sum += glm::dvec3(e);
+        halves.add(e, splitSign(settings.seed, static_cast<uint32_t>(texel), n));
         const double y = luminance(e);
         const double delta = y - mean;
         mean += delta / static_cast<double>(n + 1);
@@ -108,6 +113,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       const double standardError = std::sqrt(variance / static_cast<double>(n));
       const float relative = mean > 0.0 ? static_cast<float>(standardError / mean) : 0.0f;
       out.relativeError[texel] = relative;
+      if (n <= kMinAdaptiveSpp) out.prefixLuminance[texel] = static_cast<float>(mean);
       // With mean 0 the relative error is undefined (stored as 0).
       if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && mean > 0.0 &&
           relative < settings.targetError)
@@ -120,6 +126,7 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
     }
     out.samples[texel] = n;
     out.irradiance.pixels[texel] = glm::vec3(sum / static_cast<double>(n));
+    out.halfDifference.pixels[texel] = halves.difference(sum / static_cast<double>(n), n);
     out.rays[texel] = static_cast<uint32_t>(counting.countOnThisThread() - raysBefore);
   };
 

@@ -82,6 +82,12 @@ struct TexelIrradiance {
   Image irradiance;                  // W/m², coverage.width × coverage.height; 0 where uncovered
   std::vector<uint32_t> samples;     // per texel
   std::vector<float> relativeError;  // per texel, estimated relative standard error (0 uncovered)
+  // Per texel, a draw of its mean's error from two random halves of its samples (W/m²,
+  // delivered_error.h); 0 uncovered.
+  Image halfDifference;
+  // Per texel, the luminance of the mean of its first min(kMinAdaptiveSpp, n) samples (W/m²):
+  // a fixed count, so unbiased where the adaptive stop is not (delivered_error.h); 0 uncovered.
+  std::vector<float> prefixLuminance;
   // Per texel: samples whose estimate was non-finite (bad scene data) and counted as black (each
   // biases its texel low, PathTracer::irradiance); closest-hit and occlusion rays traced.
   std::vector<uint32_t> nonFinite, rays;

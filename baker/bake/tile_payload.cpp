@@ -13,7 +13,7 @@
 namespace bounce {
 namespace {
 
-constexpr std::size_t kIrradianceTexelBytes = 28;
+constexpr std::size_t kIrradianceTexelBytes = 44;
 constexpr std::size_t kVisibilityTexelBytes = 2 * kVisibilitySlots + 4 * kVisibilitySlots + 20;
 
 // Calls f(texel) for the tile's covered texels in the payload's order.
@@ -53,6 +53,9 @@ std::vector<unsigned char> encodeIrradianceTile(const TexelIrradiance& from,
     w.f32(from.relativeError[t]);
     w.u32(from.nonFinite[t]);
     w.u32(from.rays[t]);
+    const glm::vec3 d = from.halfDifference.pixels[t];
+    w.f32(d.r), w.f32(d.g), w.f32(d.b);
+    w.f32(from.prefixLuminance[t]);
   });
   return w.take();
 }
@@ -68,6 +71,14 @@ void decodeIrradianceTile(const std::filesystem::path& source, std::span<const u
     into.relativeError[t] = r.f32("the relative error");
     into.nonFinite[t] = r.u32("the non-finite count");
     into.rays[t] = r.u32("the ray count");
+    glm::vec3& d = into.halfDifference.pixels[t];
+    d.r = r.f32("D"), d.g = r.f32("D"), d.b = r.f32("D");
+    into.prefixLuminance[t] = r.f32("the first samples' mean");
+    if (!std::isfinite(d.r + d.g + d.b) || !(into.prefixLuminance[t] >= 0.0f))
+      throw LoadError(source,
+                      "texel " + std::to_string(t) +
+                          " holds a non-finite half-sample difference or a negative mean of "
+                          "its first samples: a bake never writes that");
     const float largest = std::max(e.r, std::max(e.g, e.b)),
                 smallest = std::min(e.r, std::min(e.g, e.b));
     if (!(smallest >= 0.0f && std::isfinite(largest)) || !(into.relativeError[t] >= 0.0f))

@@ -3,8 +3,10 @@
 // guard) are stored, rows top first, left to right; the reader knows which from the coverage.
 // All values little-endian, bit for bit as computed, so a restored tile equals a recomputed one.
 //
-//   irradiance, 28 bytes a texel:  f32 E.r, E.g, E.b (W/m²) | u32 samples | f32 relative error |
-//                                  u32 non-finite samples | u32 rays
+//   irradiance, 44 bytes a texel:  f32 E.r, E.g, E.b (W/m²) | u32 samples | f32 relative error |
+//                                  u32 non-finite samples | u32 rays | f32 D.r, D.g, D.b (W/m²,
+//                                  the half-sample difference) | f32 the first samples' mean
+//                                  luminance (W/m²; both delivered_error.h)
 //   visibility, 44 bytes a texel:  4 × u16 light | 4 × f32 V | f64 Σ unshadowed E (W/m²,
 //                                  luminance) | f64 its kOtherLights part | u32 rays
 #pragma once

@@ -10,7 +10,7 @@
 namespace bounce {
 
 // 64 × 64 texels, GPU Lightmass's tile: a tile of the Conference Room's covered texels takes a
-// few seconds on one core, and its journal record is at most 64² × 28 bytes.
+// few seconds on one core, and its journal record is at most 64² × 44 bytes.
 inline constexpr int kDefaultTileSize = 64;
 
 // The tiled stages (values as journalled).

@@ -16,13 +16,15 @@
 namespace bounce {
 namespace {
 
-// The bake folder's error.exr: each texel's estimated relative standard error (before
-// denoising), kNoErrorEstimate where the texel has no samples of its own (uncovered padding,
-// or covered with every point dropped by the leak guard and filled from its neighbours).
+// The bake folder's error.exr: each texel's estimated relative error of the delivered map
+// (delivered_error.h; 0 where the delivered E is 0), kNoErrorEstimate where the texel has no
+// samples of its own (uncovered padding, or covered with every point dropped by the leak guard
+// and filled from its neighbours).
 Image errorMap(const LightmapBake& bake) {
   Image map(bake.irradiance.width, bake.irradiance.height, glm::vec3(kNoErrorEstimate));
   for (std::size_t t = 0; t < map.pixels.size(); ++t)
-    if (bake.covered[t] && !bake.invalid[t]) map.pixels[t] = glm::vec3(bake.relativeError[t]);
+    if (bake.covered[t] && !bake.invalid[t])
+      map.pixels[t] = glm::vec3(std::max(bake.delivered.perTexel[t], 0.0f));
   return map;
 }
 
@@ -131,8 +133,13 @@ void lightmapFolder(const Scene& scene, const SceneBakeSettings& o, const Atlas&
   manifest.scene = std::filesystem::path(scene.source).filename().string();
   manifest.atlas = atlasManifest(atlas, bake);
   manifest.samples = samplesManifest(bake);
-  manifest.estimatedError = {
-      .mean = bake.meanRelativeError, .p95 = bake.p95RelativeError, .target = o.targetError};
+  manifest.estimatedError = {.mean = bake.delivered.mean,
+                             .p95 = bake.delivered.p95,
+                             .luminanceWeighted = bake.delivered.luminanceWeighted,
+                             .target = o.targetError,
+                             .beforeFiltersMean = bake.meanRelativeError,
+                             .beforeFiltersP95 = bake.p95RelativeError,
+                             .unknownTexels = bake.delivered.unknownTexels};
   manifest.leaks = {.pointsInsideGeometry = bake.pointsInside,
                     .pointsAcrossWalls = bake.pointsAcross,
                     .invalidTexelsFilled = bake.invalidTexels};

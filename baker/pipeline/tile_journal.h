@@ -29,7 +29,9 @@
 namespace bounce {
 
 // 2: the key's settings are bake_folder/bake_settings.h's (bake.json's names: maxSpp, not spp).
-inline constexpr uint32_t kTileJournalVersion = 2;
+// 3: an irradiance texel carries its half-sample difference and its first samples' mean
+// (tile_payload.h, 44 bytes).
+inline constexpr uint32_t kTileJournalVersion = 3;
 
 struct TileJournal {
   nlohmann::json key;

@@ -149,12 +149,25 @@ std::string manifestText(const BakeManifest& m) {
         {"nonFinite", m.samples.nonFinite}}},
       {"estimatedError",
        {{"what",
-         "relative standard error of each texel's irradiance (luminance), from its "
-         "sample variance; before denoising"},
+         "relative error of the delivered lightmap (luminance, after the denoiser, fill, "
+         "dilation and seams), |delivered - converged| / converged, estimated per texel from "
+         "two independent halves of its samples sent through the same filters, plus the "
+         "denoiser's and the adaptive stop's estimated bias: mean and p95 over lit texels with "
+         "samples of their own; luminanceWeighted = sum of the errors / sum of E; "
+         "unknownTexels: lit texels filled from their neighbours, whose error is not known "
+         "(1 in error.exr), left out of the three"},
         {"file", "error.exr"},
         {"mean", m.estimatedError.mean},
         {"p95", m.estimatedError.p95},
-        {"target", m.estimatedError.target}}},
+        {"luminanceWeighted", m.estimatedError.luminanceWeighted},
+        {"unknownTexels", m.estimatedError.unknownTexels},
+        {"target", m.estimatedError.target},
+        {"beforeFilters",
+         {{"what",
+           "relative standard error of each texel's irradiance from its own sample variance, "
+           "before any filter: what the adaptive stop compares with target"},
+          {"mean", m.estimatedError.beforeFiltersMean},
+          {"p95", m.estimatedError.beforeFiltersP95}}}}},
       {"leaks",
        {{"pointsInsideGeometry", m.leaks.pointsInsideGeometry},
         {"pointsAcrossWalls", m.leaks.pointsAcrossWalls},
@@ -305,6 +318,15 @@ BakeManifest parseManifest(const std::filesystem::path& file, const std::string&
   m.estimatedError.mean = error.real("mean");
   m.estimatedError.p95 = error.real("p95");
   m.estimatedError.target = error.real("target");
+  // Bakes before the delivered error have only the per-texel figure, as mean and p95.
+  if (error.find("luminanceWeighted"))
+    m.estimatedError.luminanceWeighted = error.real("luminanceWeighted");
+  if (error.find("unknownTexels")) m.estimatedError.unknownTexels = error.count("unknownTexels");
+  if (error.find("beforeFilters")) {
+    const JsonFields before = error.object("beforeFilters");
+    m.estimatedError.beforeFiltersMean = before.real("mean");
+    m.estimatedError.beforeFiltersP95 = before.real("p95");
+  }
   const JsonFields leaks = root.object("leaks");
   m.leaks.pointsInsideGeometry = leaks.count("pointsInsideGeometry");
   m.leaks.pointsAcrossWalls = leaks.count("pointsAcrossWalls");

@@ -74,7 +74,17 @@ struct BakeManifest {
     double perTexelMean = 0.0;
   } samples;
   struct EstimatedError {
-    double mean = 0.0, p95 = 0.0, target = 0.0;  // relative standard error, before denoising
+    // The delivered map's relative error (after every filter; baker/bake/delivered_error.h):
+    // mean and p95 over the lit texels with samples of their own, and Σ|error| / Σ E.
+    double mean = 0.0, p95 = 0.0, luminanceWeighted = 0.0;
+    double target = 0.0;  // the adaptive stop's target (of beforeFilters' per-texel figure)
+    // Each texel's relative standard error from its own samples, before the filters (what the
+    // adaptive stop compares with the target). Bakes before 2026-11-27 have only these, as
+    // mean and p95 (0 here).
+    double beforeFiltersMean = 0.0, beforeFiltersP95 = 0.0;
+    // Lit texels whose error is not known (error.exr 1): filled from their neighbours after the
+    // adaptive stop left them at 0; not in mean, p95 or luminanceWeighted.
+    uint64_t unknownTexels = 0;
   } estimatedError;
   struct Leaks {
     uint64_t pointsInsideGeometry = 0, pointsAcrossWalls = 0, invalidTexelsFilled = 0;

@@ -13,21 +13,6 @@
 namespace bounce {
 namespace {
 
-// A 1 m room lit by a small lamp in one corner of the ceiling, with a block casting shadow:
-// texels near the lamp are bright, the far corners under the block dim (≈ 50× apart).
-void buildCornerLampRoom(test::World& world) {
-  const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.6f));
-  const uint32_t lamp = test::addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(50.0f));
-  test::addInwardBox(world.scene, {0, 0, 0}, {1, 1, 1}, white);
-  test::addQuad(world.scene, {0.05f, 0.95f, 0.05f}, {0.2f, 0.95f, 0.05f}, {0.2f, 0.95f, 0.2f},
-                {0.05f, 0.95f, 0.2f}, lamp);
-  // A floating horizontal board shading the far corner's floor (double-sided white).
-  const uint32_t board = test::addMaterial(world.scene, glm::vec3(0.6f), glm::vec3(0.0f), true);
-  test::addQuad(world.scene, {0.5f, 0.3f, 0.5f}, {0.5f, 0.3f, 0.95f}, {0.95f, 0.3f, 0.95f},
-                {0.95f, 0.3f, 0.5f}, board);
-  world.build();
-}
-
 std::vector<std::size_t> validLitTexels(const LightmapBake& bake) {
   std::vector<std::size_t> out;
   for (std::size_t t = 0; t < bake.covered.size(); ++t)
@@ -38,7 +23,7 @@ std::vector<std::size_t> validLitTexels(const LightmapBake& bake) {
 
 TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
   test::World world;
-  buildCornerLampRoom(world);
+  test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   LightmapBakeSettings settings = test::testBakeSettings(4096);
   settings.irradiance.targetError = 0.05f;
@@ -70,7 +55,7 @@ TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
 // may only err high).
 TEST(AdaptiveSampling, EstimatedErrorMatchesTheActualErrorAndTheTargetIsMet) {
   test::World world;
-  buildCornerLampRoom(world);
+  test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   LightmapBakeSettings quick = test::testBakeSettings(64, 11);
   LightmapBakeSettings longBake = test::testBakeSettings(4096, 12);
@@ -203,7 +188,7 @@ TEST(AdaptiveSampling, DimClosedRoomHasNoBlackSpecks) {
 // not stop on zeros. The floor under the lit board above keeps its rare light with the same rule.
 TEST(AdaptiveSampling, TexelsNoLightReachesStopEarly) {
   test::World world;
-  buildCornerLampRoom(world);
+  test::buildCornerLampRoom(world);
   const uint32_t dark = test::addMaterial(world.scene, glm::vec3(0.6f));
   test::addInwardBox(world.scene, {3, 0, 0}, {3.5f, 0.5f, 0.5f}, dark);  // closed, no light
   test::addQuad(world.scene, {-3, 2, 0}, {-3, 2, 0.5f}, {-2.5f, 2, 0.5f}, {-2.5f, 2, 0},
@@ -242,7 +227,7 @@ TEST(AdaptiveSampling, TexelsNoLightReachesStopEarly) {
 
 TEST(Determinism, SameSeedGivesBitIdenticalLightmapsAtOneAndTwoThreads) {
   test::World world;
-  buildCornerLampRoom(world);
+  test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   LightmapBakeSettings one = test::testBakeSettings(256, 5, 1);
   LightmapBakeSettings two = test::testBakeSettings(256, 5, 2);

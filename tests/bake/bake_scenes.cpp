@@ -62,6 +62,19 @@ QuadAtlas quadAtlas(const Scene& scene, float texelSize, int width, int padding)
   return atlas;
 }
 
+void buildCornerLampRoom(World& world) {
+  const uint32_t white = addMaterial(world.scene, glm::vec3(0.6f));
+  const uint32_t lamp = addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(50.0f));
+  addInwardBox(world.scene, {0, 0, 0}, {1, 1, 1}, white);
+  addQuad(world.scene, {0.05f, 0.95f, 0.05f}, {0.2f, 0.95f, 0.05f}, {0.2f, 0.95f, 0.2f},
+          {0.05f, 0.95f, 0.2f}, lamp);
+  // A floating horizontal board shading the far corner's floor (double-sided white).
+  const uint32_t board = addMaterial(world.scene, glm::vec3(0.6f), glm::vec3(0.0f), true);
+  addQuad(world.scene, {0.5f, 0.3f, 0.5f}, {0.5f, 0.3f, 0.95f}, {0.95f, 0.3f, 0.95f},
+          {0.95f, 0.3f, 0.5f}, board);
+  world.build();
+}
+
 LightmapBakeSettings testBakeSettings(int spp, uint32_t seed, int threads) {
   LightmapBakeSettings settings;
   settings.irradiance.maxSpp = spp;

@@ -34,6 +34,10 @@ struct QuadAtlas {
 // on whole texels, in an atlas `width` texels wide.
 QuadAtlas quadAtlas(const Scene& scene, float texelSize, int width = 64, int padding = 2);
 
+// A 1 m room lit by a small lamp in one corner of the ceiling, with a board casting shadow:
+// texels near the lamp are bright, the far corners under the board dim (≈ 50× apart).
+void buildCornerLampRoom(World& world);
+
 // A default bake with `threads`, fixed spp, no denoiser.
 LightmapBakeSettings testBakeSettings(int spp, uint32_t seed = 7, int threads = 0);
 

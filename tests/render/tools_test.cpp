@@ -669,9 +669,10 @@ TEST_F(ToolsTest, FindsTheBuildStepsBakeOfAContentScene) {
 }
 
 // bounce-bake's error.exr (the build step's Cornell bake): one relative error per texel with
-// samples, -1 elsewhere; its mean over the lit texels is bake.json's estimatedError.mean (the
-// same estimates, averaged by the baker before denoising: 2% covers texels whose E changed sign
-// of zero in the denoiser); --mode error draws it.
+// samples (the delivered map's, baker/bake/delivered_error.h), -1 elsewhere; its mean over the
+// lit texels is bake.json's estimatedError.mean (the same estimates, averaged by the baker; the
+// box has no texels of unknown error, which error.exr holds as 1 and the mean leaves out);
+// --mode error draws it.
 TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
   const fs::path built =
       fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
