@@ -15,6 +15,7 @@
 #ifdef BOUNCE_HAVE_MPI
 #include "bake_mpi.h"
 #endif
+#include "bake_folder/gather.h"
 #include "bake_progress_line.h"
 #include "bake_summary.h"
 #include "cli/shared_options.h"

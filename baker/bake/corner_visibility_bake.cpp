@@ -29,6 +29,10 @@ constexpr double kRingStep = 0.6180339887498949;
 // Corners at one place are one vertex when their normals are within 30° of the first's: the
 // facets of a curved surface tessellated flat are, a box's 90° edge is not.
 const float kWeldCosine = std::cos(glm::radians(30.0f));
+// Only corners of triangles no longer than this on any edge weld: over a small triangle's ring
+// V hardly changes, and a large one keeps its own corners, which can follow a penumbra that
+// the vertex's hat-weighted mean (about two triangles wide) would blur.
+constexpr float kWeldLongestEdge = 0.025f;  // m
 
 // b with CDF 3b² − 2b³ (Beta(2, 2), density 6b(1 − b)) at u ∈ [0, 1].
 float betaTwoTwo(float u) {
@@ -170,6 +174,13 @@ CornerVisibilityBake bakeCornerVisibility(const AreaLightSet& lights,
   const auto normalOf = [&](uint32_t corner) {
     return geometry.normals[geometry.triangles[triangleOf[corner / 3]][corner % 3]];
   };
+  const auto smallTriangle = [&](uint32_t corner) {
+    const glm::uvec3 tri = geometry.triangles[triangleOf[corner / 3]];
+    const glm::vec3 a = geometry.positions[tri.x], b = geometry.positions[tri.y],
+                    c = geometry.positions[tri.z];
+    const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    return longest <= kWeldLongestEdge;
+  };
   std::vector<uint32_t> cornersAt;  // corner numbers, vertex by vertex
   std::vector<uint32_t> firstAt;    // per vertex, its first entry in cornersAt
   cornersAt.reserve(keys.size());
@@ -179,13 +190,14 @@ CornerVisibilityBake bakeCornerVisibility(const AreaLightSet& lights,
     while (end < keys.size() && keys[end].instance == keys[begin].instance &&
            keys[end].position == keys[begin].position)
       ++end;
-    // The corners at one place, ascending: each joins the first weld whose first normal is
-    // within the angle, else starts one.
+    // The corners at one place, ascending: a small triangle's joins the first weld of small
+    // triangles whose first normal is within the angle, else starts one; a large one's is alone.
     welds.clear();
     for (std::size_t c = begin; c < end; ++c) {
       const glm::vec3 n = normalOf(keys[c].corner);
+      const bool small = smallTriangle(keys[c].corner);
       auto weld = std::find_if(welds.begin(), welds.end(), [&](const std::vector<uint32_t>& w) {
-        return glm::dot(normalOf(w.front()), n) >= kWeldCosine;
+        return small && smallTriangle(w.front()) && glm::dot(normalOf(w.front()), n) >= kWeldCosine;
       });
       if (weld == welds.end()) weld = welds.insert(welds.end(), std::vector<uint32_t>{});
       weld->push_back(keys[c].corner);

@@ -9,6 +9,7 @@
 #include "bake/tile_grid.h"
 #include "bake/tile_payload.h"
 #include "bake/tile_scheduler.h"
+#include "bake_folder/gather.h"
 #include "bake_folder/lightmap_layout.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"

@@ -16,13 +16,13 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/texel_irradiance.h"
 #include "bake/tile_scheduler.h"
-#include "bake_folder/gather.h"
 #include "image/image.h"
 
 namespace bounce {
 
 class RayKernel;
 class StagePlan;
+enum class Gather : uint8_t;  // bake_folder/gather.h
 struct LightmapLayout;
 struct Scene;
 struct WorldGeometry;
@@ -49,7 +49,7 @@ struct LightmapBakeSettings {
   LightmapTiles tiles;
   // Gather::Cache: a cache pass of `cacheSpp` whole paths per texel first, through the filters
   // above; then the texels' paths end at its map (irradiance_cache.h).
-  Gather gather = Gather::Paths;
+  Gather gather{};  // Gather::Paths
   int cacheSpp = 32;
 };
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "bake/texel_coverage.h"
+#include "bake_folder/gather.h"
 #include "bake_folder/light_visibility.h"
 #include "bake_folder/lightmap_layout.h"
 #include "bake_folder/vpl.h"

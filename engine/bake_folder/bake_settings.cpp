@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/bake_manifest.h"
+#include "bake_folder/gather.h"
 #include "bake_folder/json_fields.h"
 
 namespace bounce {

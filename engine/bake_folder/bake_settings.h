@@ -19,10 +19,11 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "bake_folder/gather.h"
 #include "bake_folder/light_choice.h"
 
 namespace bounce {
+
+enum class Gather : uint8_t;  // bake_folder/gather.h
 
 struct BakeSettings {
   float texelSize = 0.0f;    // m; 0: the density rule (baker/atlas/texel_density.h)
@@ -36,9 +37,9 @@ struct BakeSettings {
   LightChoice lightChoice = LightChoice::ByPlace;  // next-event estimation's pick
   int pointsPerTexel = 8;                          // candidate sample points per texel
   int vpls = 0;                                    // most VPLs; 0: none
-  float vplError = 0.0f;          // relative standard error of the total VPL flux to stop at
-  Gather gather = Gather::Paths;  // how texels gather indirect light
-  int cacheSpp = 0;               // samples per texel of the cache pass (Gather::Cache only)
+  float vplError = 0.0f;  // relative standard error of the total VPL flux to stop at
+  Gather gather{};        // how texels gather indirect light; Gather::Paths
+  int cacheSpp = 0;       // samples per texel of the cache pass (Gather::Cache only)
 };
 
 nlohmann::json bakeSettingsJson(const BakeSettings& settings);

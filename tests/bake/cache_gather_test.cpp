@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "bake_folder/gather.h"
 #include "bake_scenes.h"
 #include "trace/sampling.h"
 

@@ -161,18 +161,24 @@ TEST(CornerVisibility, EachCornerHoldsTheVisibleFractionOfTheTriangleNearIt) {
 //   V_v = Σ_T ∫_T b_v E_vis / Σ_T ∫_T b_v E.
 // A wall triangle standing on the fan's centre (normal 90° off) stays a vertex of its own.
 TEST(CornerVisibility, CornersAtOnePlaceHoldTheirRingsVisibleFraction) {
-  const Rectangle light{{-0.2, 1.0, -0.2}, {0.4, 0, 0}, {0, 0, 0.4}};
-  const Rectangle blocker{{-1.0, 0.5, -2.0}, {0, 0, 4.0}, {1.0, 0, 0}};
+  // The first test's light and blocker, and the fan, scaled by kScale = 3/100 (V is unchanged by a
+  // scale): only triangles no longer than 2.5 cm weld, and these are 2.2 cm at most.
+  constexpr double kScale = 0.03;
+  const Rectangle light{glm::dvec3(-0.2, 1.0, -0.2) * kScale, glm::dvec3(0.4, 0, 0) * kScale,
+                        glm::dvec3(0, 0, 0.4) * kScale};
+  const Rectangle blocker{glm::dvec3(-1.0, 0.5, -2.0) * kScale, glm::dvec3(0, 0, 4.0) * kScale,
+                          glm::dvec3(1.0, 0, 0) * kScale};
   Scene scene;
   addQuad(scene, light.corner, light.corner + light.u, light.corner + light.u + light.v,
           light.corner + light.v, addMaterial(scene, glm::vec3(0.0f), glm::vec3(1.0f)));
   const uint32_t grey = addMaterial(scene, glm::vec3(0.5f));
   addQuad(scene, blocker.corner, blocker.corner + blocker.u, blocker.corner + blocker.u + blocker.v,
           blocker.corner + blocker.v, grey);
-  // Centre o at x = 0.02 (the penumbra's middle); a wide triangle into the umbra, a middle one,
-  // a small one on the lit side. Each wound to face +y.
-  const glm::dvec3 o(0.02, 0, 0), a(-0.45, 0, -0.3), b(-0.1, 0, 0.35), c(0.2, 0, 0.3),
-      d(0.3, 0, 0.1);
+  // Centre o at x = 0.02·kScale (the penumbra's middle); a wide triangle into the umbra, a middle
+  // one, a small one on the lit side. Each wound to face +y.
+  const glm::dvec3 o = glm::dvec3(0.02, 0, 0) * kScale, a = glm::dvec3(-0.45, 0, -0.3) * kScale,
+                   b = glm::dvec3(-0.1, 0, 0.35) * kScale, c = glm::dvec3(0.2, 0, 0.3) * kScale,
+                   d = glm::dvec3(0.3, 0, 0.1) * kScale;
   const std::vector<std::array<glm::dvec3, 3>> fan{{o, a, b}, {o, b, c}, {o, c, d}};
   Mesh soup;
   for (const auto& t : fan)
@@ -182,8 +188,8 @@ TEST(CornerVisibility, CornersAtOnePlaceHoldTheirRingsVisibleFraction) {
       soup.normals.emplace_back(0.0f, 1.0f, 0.0f);
     }
   // The wall: through o, facing +x, its corner 0 at o.
-  for (const glm::vec3 p : {glm::vec3(o), glm::vec3(o) + glm::vec3(0, 0.2f, -0.1f),
-                            glm::vec3(o) + glm::vec3(0, 0.2f, 0.1f)}) {
+  for (const glm::vec3 p : {glm::vec3(o), glm::vec3(o + glm::dvec3(0, 0.2, -0.1) * kScale),
+                            glm::vec3(o + glm::dvec3(0, 0.2, 0.1) * kScale)}) {
     soup.indices.push_back(static_cast<uint32_t>(soup.positions.size()));
     soup.positions.push_back(p);
     soup.normals.emplace_back(1.0f, 0.0f, 0.0f);
@@ -240,8 +246,9 @@ TEST(CornerVisibility, CornersAtOnePlaceHoldTheirRingsVisibleFraction) {
   EXPECT_GT(spread, 0.1);
 }
 
-// Each corner draws its points and pairs from its own keys: any thread count, the same bytes.
-// A floor of 2 × 64² triangles under a panel and a blocker, so that the threads interleave.
+// Each vertex draws its points and pairs from its own keys: any thread count, the same bytes.
+// A 1 m floor of 2 × 64² triangles (1.6 cm cells: their corners weld into vertices) under a
+// panel and a blocker, so that the threads interleave.
 TEST(CornerVisibility, TheSameAtAnyThreadCount) {
   Scene scene;
   addQuad(scene, {-0.2f, 1.0f, -0.2f}, {0.2f, 1.0f, -0.2f}, {0.2f, 1.0f, 0.2f}, {-0.2f, 1.0f, 0.2f},
@@ -252,7 +259,7 @@ TEST(CornerVisibility, TheSameAtAnyThreadCount) {
   constexpr int kCells = 64;
   for (int j = 0; j <= kCells; ++j)
     for (int i = 0; i <= kCells; ++i) {
-      floor.positions.emplace_back(-1.0f + 2.0f * i / kCells, 0.0f, -1.0f + 2.0f * j / kCells);
+      floor.positions.emplace_back(-0.5f + 1.0f * i / kCells, 0.0f, -0.5f + 1.0f * j / kCells);
       floor.normals.emplace_back(0.0f, 1.0f, 0.0f);
     }
   for (int j = 0; j < kCells; ++j)
@@ -284,6 +291,7 @@ TEST(CornerVisibility, TheSameAtAnyThreadCount) {
   for (const TexelVisibility& c : a.visibility.corners)
     penumbra += c.light[0] == 0 && c.visible[0] > 0.0f && c.visible[0] < 1.0f ? 1 : 0;
   EXPECT_GT(penumbra, 1000) << "corners in the blocker's penumbra";
+  EXPECT_EQ(a.vertices, 65u * 65u) << "the floor's corners, welded";
   EXPECT_EQ(a.visibility, b.visibility);
 }
 

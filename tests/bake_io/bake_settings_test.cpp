@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_folder/bake_settings.h"
+#include "bake_folder/gather.h"
 #include "io/load_error.h"
 
 using namespace bounce;

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 
+#include "bake_folder/gather.h"
 #include "gl/context.h"
 #include "image/image_io.h"
 #include "indirect_accuracy.h"
