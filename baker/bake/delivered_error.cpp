@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "bake/error_summary.h"
 #include "bake/lightmap_filters.h"
 #include "trace/rng.h"
 #include "trace/sampling.h"
@@ -107,13 +108,10 @@ DeliveredError deliveredError(const Image& map, const Image& difference,
     lightSum += light;
   }
   if (errors.empty()) return out;
-  double sum = 0.0;
-  for (const float e : errors) sum += e;
-  out.mean = static_cast<float>(sum / static_cast<double>(errors.size()));
   out.luminanceWeighted = static_cast<float>(errorSum / lightSum);
-  const std::size_t k = std::min(errors.size() - 1, errors.size() * 95 / 100);
-  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
-  out.p95 = errors[k];
+  const ErrorSummary summary = summariseErrors(std::move(errors));
+  out.mean = summary.mean;
+  out.p95 = summary.p95;
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "bake/error_summary.h"
 #include "bake/irradiance_cache.h"
 #include "bake/lightmap_filters.h"
 #include "bake/texel_coverage.h"
@@ -173,14 +174,9 @@ std::vector<uint8_t> fillZerosAndSummarise(const TexelCoverage& coverage,
     if (valid[t] && !unresolved[t] && luminance(bake.irradiance.pixels[t]) > 0.0f)
       errors.push_back(bake.relativeError[t]);
   }
-  if (!errors.empty()) {
-    double sum = 0;
-    for (const float e : errors) sum += e;
-    bake.meanRelativeError = static_cast<float>(sum / static_cast<double>(errors.size()));
-    const std::size_t k = std::min(errors.size() - 1, errors.size() * 95 / 100);
-    std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
-    bake.p95RelativeError = errors[k];
-  }
+  const ErrorSummary summary = summariseErrors(std::move(errors));
+  bake.meanRelativeError = summary.mean;
+  bake.p95RelativeError = summary.p95;
   return valid;
 }
 

@@ -8,25 +8,12 @@
 #include <cstdio>
 #include <vector>
 
+#include "bake/error_summary.h"
 #include "bake_scenes.h"
 #include "trace/sampling.h"
 
 namespace bounce {
 namespace {
-
-struct Spread {
-  double mean = 0, p95 = 0;
-};
-
-Spread spreadOf(std::vector<double> values) {
-  Spread s;
-  for (const double v : values) s.mean += v;
-  s.mean /= static_cast<double>(values.size());
-  const std::size_t k = std::min(values.size() - 1, values.size() * 95 / 100);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  s.p95 = values[k];
-  return s;
-}
 
 // The corner lamp room at 6.25 cm texels (1.6k texels, every filter at work: the denoiser's
 // steps 1–8, dilation under the lamp, seams between the walls), bounce-bake's defaults (10%
@@ -54,15 +41,15 @@ TEST(DeliveredError, ReportedErrorIsTheDeliveredMapsAgainstAConvergedBake) {
       bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
   const LightmapBake reference =
       bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, converged);
-  std::vector<double> measured;
+  std::vector<float> measured;
   for (std::size_t t = 0; t < bake.covered.size(); ++t) {
     const double c = luminance(reference.irradiance.pixels[t]);
     // The texels the figures are over: samples of their own, lit, not filled from neighbours.
     if (bake.delivered.perTexel[t] < 0.0f || bake.zeroFilled[t] || !(c > 0.0)) continue;
-    measured.push_back(std::abs(luminance(bake.irradiance.pixels[t]) - c) / c);
+    measured.push_back(static_cast<float>(std::abs(luminance(bake.irradiance.pixels[t]) - c) / c));
   }
   ASSERT_GT(measured.size(), 1000u);
-  const Spread actual = spreadOf(measured);
+  const ErrorSummary actual = summariseErrors(measured);
   std::printf(
       "%zu texels: measured mean %.4f p95 %.4f; reported mean %.4f p95 %.4f (before the filters "
       "%.4f / %.4f); the converged bake's own %.4f / %.4f\n",

@@ -18,24 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/error_summary.h"
 #include "image/image_io.h"
 #include "image/luminance.h"
 
 namespace {
-
-struct Spread {
-  double mean = 0, p95 = 0;
-};
-
-Spread spreadOf(std::vector<float> values) {
-  Spread s;
-  for (const float v : values) s.mean += v;
-  s.mean /= static_cast<double>(values.size());
-  const std::size_t k = std::min(values.size() - 1, values.size() * 95 / 100);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  s.p95 = values[k];
-  return s;
-}
 
 nlohmann::json estimatedError(const std::filesystem::path& dir) {
   std::ifstream in(dir / "bake.json");
@@ -101,7 +88,8 @@ int main(int argc, char** argv) {
       convergedSum += c;
     }
     if (relative.empty()) throw std::runtime_error("no texel to compare");
-    const Spread measured = spreadOf(relative), estimated = spreadOf(reported);
+    const bounce::ErrorSummary measured = bounce::summariseErrors(relative),
+                               estimated = bounce::summariseErrors(reported);
     const double weighted = differenceSum / convergedSum;
     const nlohmann::json manifest = estimatedError(bakeDir), own = estimatedError(convergedDir);
     std::printf(
@@ -124,7 +112,8 @@ int main(int argc, char** argv) {
     std::printf("converged  its own bake.json mean %.4f p95 %.4f\n", own.at("mean").get<double>(),
                 own.at("p95").get<double>());
     if (outliers > 0 && !tame.empty()) {
-      const Spread m = spreadOf(tame), r = spreadOf(tameReported);
+      const bounce::ErrorSummary m = bounce::summariseErrors(tame),
+                                 r = bounce::summariseErrors(tameReported);
       std::printf(
           "without the %zu texels over 200%% (converged E %.3g W/m2 on average): measured "
           "mean %.4f p95 %.4f, error.exr mean %.4f p95 %.4f, ratio %.3f %.3f\n",
