@@ -12,8 +12,13 @@
 //   texels 0..2: world vertices (xyz, metres); texel 3: radiance (rgb), w = 1 if double-sided;
 // then one row per area light (engine/scene/area_lights.h: emitters cut by their shape),
 //   texel 0: (first triangle row, end row, 1 if its direct light is baked (Material::bakeDirect)
-//   else 0, 0); the static lights come first. A baked light is skipped once a bake is attached
-//   (uHasBake): its direct light is in the lightmap.
+//   else 0, its outline's corners k or 0 for none); texel 1: its unit front normal (xyz) and its
+//   outline's first corner (w); texel 2: its radiance (rgb), w = 1 if double-sided; the static
+//   lights come first. A baked light is skipped once a bake is attached (uHasBake): its direct light is in
+//   the lightmap.
+// then the outlines' corners (engine/scene/area_light_outline.h), 4 a row: a planar light with
+// an outline is evaluated as one polygon of k edges (the contour integral is additive, interior
+// edges cancel), else triangle by triangle.
 
 #include "cost.glsl"
 #include "light_grid.glsl"
@@ -75,6 +80,47 @@ vec3 emitterTriangleIrradiance(int i, vec3 p, vec3 n) {
   return radiance.rgb * clippedTriangleIrradiancePerRadiance(v0 - p, v1 - p, v2 - p, n);
 }
 
+// Where the polygon clipped to n·x ≥ 0 goes next: Sutherland–Hodgman against one plane, its
+// output corners walked on the fly; `last` and `first` the output so far (`count` of them).
+void emitClippedCorner(vec3 corner, vec3 n, inout vec3 last, inout vec3 first, inout int count,
+                       inout float sum) {
+  if (count == 0) first = corner;
+  else sum += edgeTerm(last, corner, n);
+  last = corner;
+  ++count;
+}
+
+// E/L of light `light`'s outline (corners `first` .. first + k − 1 after the light rows, counter-
+// clockwise about its front normal) at p: ½ |Σ γ_i n·û_i| over the outline clipped to the
+// receiver's upper hemisphere (a clipped polygon may run along the horizon and back: those edges
+// cancel). 0 when p is on its plane or behind a single-sided light.
+vec3 outlineIrradiance(int light, int k, vec3 p, vec3 n) {
+  int row = uEmitterCount + light;
+  vec4 plane = texelFetch(uEmitters, ivec2(1, row), 0);  // front normal, first corner
+  vec3 front = plane.xyz;
+  vec4 radiance = texelFetch(uEmitters, ivec2(2, row), 0);
+  int base = uEmitterCount + uAreaLightCount, first = int(plane.w);
+  vec3 a = texelFetch(uEmitters, ivec2((first + k - 1) & 3, base + ((first + k - 1) >> 2)), 0).xyz;
+  float height = dot(front, p - a);
+  if (abs(height) < 1e-5 || (height < 0.0 && radiance.w < 0.5)) return vec3(0.0);
+  a -= p;
+  float da = dot(n, a);
+  vec3 last = vec3(0.0), start = vec3(0.0);
+  int count = 0;
+  float sum = 0.0;
+  for (int i = first; i < first + k; ++i) {
+    vec3 b = texelFetch(uEmitters, ivec2(i & 3, base + (i >> 2)), 0).xyz - p;
+    float db = dot(n, b);
+    if ((da >= 0.0) != (db >= 0.0))
+      emitClippedCorner(horizonCrossing(a, b, da, db), n, last, start, count, sum);
+    if (db >= 0.0) emitClippedCorner(b, n, last, start, count, sum);
+    a = b;
+    da = db;
+  }
+  if (count > 2) sum += edgeTerm(last, start, n);
+  return radiance.rgb * (0.5 * abs(sum));
+}
+
 // Σ over the area lights of the fragment's cluster (light_grid.glsl) of V_l · E_l: E_l the exact unshadowed irradiance of light l's triangles,
 // V_l its visible fraction: baked per lightmap texel for static lights on a static surface
 // (baked_visibility.glsl; times the dynamic instances' own cube when the light has one), else
@@ -89,7 +135,10 @@ vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTe
     vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
     if (rows.z > 0.5 && uHasBake) continue;
     vec3 e = vec3(0.0);
-    for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
+    if (rows.w > 0.5)
+      e = outlineIrradiance(l, int(rows.w), p, n);
+    else
+      for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
     if (e == vec3(0.0)) continue;
     int slot = areaShadowSlot(int(rows.x));
     if (uHasBakedVisibility && l < uBakedLightCount) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "scene/area_light_outline.h"
 #include "scene/surface_rules.h"
 
 namespace bounce {
@@ -153,12 +154,27 @@ void GpuScene::uploadEmitters() {
     for (const glm::vec3& corner : {e.v0, e.v1, e.v2}) table.emplace_back(corner, 0.0f);
     table.emplace_back(e.radiance, e.doubleSided ? 1.0f : 0.0f);
   }
+  // Each light's outline where it has one (scene/area_light_outline.h), after the light rows,
+  // 4 corners a row; the light's row names its first corner and their count (0: its triangles).
+  std::vector<glm::vec4> corners;
   for (const AreaLight& light : lights.lights) {
+    const auto outline = areaLightOutline(lights, light);
+    const std::size_t outlineRows = (corners.size() + (outline ? outline->size() : 0) + 3) / 4;
+    const bool fits =
+        outline && lights.triangles.size() + lights.lights.size() + outlineRows <= rowLimit;
+    const EmitterTriangle& triangle = lights.triangles[light.first];
     table.emplace_back(static_cast<float>(light.first),
                        static_cast<float>(light.first + light.count),
-                       light.bakeDirect ? 1.0f : 0.0f, 0.0f);
-    for (int k = 0; k < 3; ++k) table.emplace_back(0.0f);
+                       light.bakeDirect ? 1.0f : 0.0f,
+                       fits ? static_cast<float>(outline->size()) : 0.0f);
+    table.emplace_back(light.normal, static_cast<float>(corners.size()));
+    table.emplace_back(triangle.radiance, triangle.doubleSided ? 1.0f : 0.0f);
+    table.emplace_back(0.0f);
+    if (fits)
+      for (const glm::vec3& corner : *outline) corners.emplace_back(corner, 0.0f);
   }
+  corners.resize((corners.size() + 3) / 4 * 4, glm::vec4(0.0f));
+  table.insert(table.end(), corners.begin(), corners.end());
   emitterCount_ = static_cast<int>(lights.triangles.size());
   areaLights_ = std::move(lights);
   ++emitterVersion_;

@@ -10,7 +10,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/area_light_outline.h"
 #include "support/form_factors.h"
+#include "support/polygon_form_factor.h"
 #include "test_scenes.h"
 
 namespace bounce::test {
@@ -134,6 +136,52 @@ TEST(AreaLight, EmitterPartlyBelowATiltedHorizonIsClippedAtTheReceiversPlane) {
       SCOPED_TRACE("turned by " + std::to_string(degrees) + " degrees");
       expectNear(image.at(x, y), kAlbedo * kEmission * static_cast<float>(F), x, y);
     }
+  }
+}
+
+// One light of three squares in an L on the wall, across the floor's horizon: the renderer draws
+// it as its outline (scene/area_light_outline.h), a concave hexagon whose clipped part falls into
+// pieces joined along the horizon. Each pixel must see the clipped L's form factor (Lambert's
+// contour formula, support/polygon_form_factor.h). Injected: the outline's closing edge left out
+// of the shader's sum, and the clip's crossing corner emitted after the corner above: both fail.
+TEST(AreaLight, AConcaveLightAcrossTheHorizonGivesItsClippedOutlinesFormFactor) {
+  const float wall = 1.0f, zs[] = {-0.4f, 0.0f, 0.4f}, ys[] = {-0.2f, 0.2f, 0.6f};
+  Mesh mesh;
+  mesh.name = "l_light";
+  for (const float y : ys)
+    for (const float z : zs) mesh.positions.emplace_back(wall, y, z);  // vertex 3j + i
+  mesh.normals.assign(mesh.positions.size(), glm::vec3(-1, 0, 0));
+  for (const auto& [i, j] : {std::pair{0, 0}, {1, 0}, {0, 1}}) {  // cells (z, y)
+    // Corners c, c + z, c + z + y, c + y: counter-clockwise about (0,0,1) × (0,1,0) = −x.
+    const uint32_t c = 3 * j + i, cz = c + 1, czy = c + 4, cy = c + 3;
+    mesh.indices.insert(mesh.indices.end(), {c, cz, czy, c, czy, cy});
+  }
+  Scene scene;
+  addFloor(scene, kAlbedo);
+  addMesh(scene, mesh, emitter());
+  const AreaLightSet lights = sceneAreaLights(scene);
+  ASSERT_EQ(lights.lights.size(), 1u);
+  const auto drawn = areaLightOutline(lights, lights.lights[0]);
+  ASSERT_TRUE(drawn);
+  ASSERT_EQ(drawn->size(), 6u);
+  const std::vector<glm::dvec3> outline = {{wall, -0.2, -0.4}, {wall, -0.2, 0.4},
+                                           {wall, 0.2, 0.4},   {wall, 0.2, 0.0},
+                                           {wall, 0.6, 0.0},   {wall, 0.6, -0.4}};
+  // Turned about an oblique axis (as the test above), so that no outline edge is parallel to the
+  // floor's normal (such an edge adds nothing to a horizontal receiver's sum, and an edge left
+  // out would go unseen); each pixel still sees the unturned scene's value.
+  const glm::mat4 turn =
+      glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::normalize(glm::vec3(1, 0.3f, 2)));
+  for (Instance& instance : scene.instances) instance.transform = turn;
+  const Camera camera = downCamera(2.0f);
+  Camera turned = camera;
+  turned.cameraToWorld = turn * camera.cameraToWorld;
+  const Image image = render(scene, turned, kSize, kSize);
+  const int pixels[][2] = {{32, 32}, {0, 0}, {63, 63}, {50, 20}, {10, 45}, {60, 32}, {5, 60}};
+  for (const auto& [x, y] : pixels) {
+    const glm::dvec3 p(floorPoint(camera, kSize, kSize, x, y)), up(0, 1, 0);
+    const double F = polygonFormFactor(clipPolygon(outline, p, up), p, up);
+    expectNear(image.at(x, y), kAlbedo * kEmission * static_cast<float>(F), x, y);
   }
 }
 
