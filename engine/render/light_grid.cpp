@@ -72,9 +72,10 @@ Box reachBox(const LightReach& reach) {
   return {reach.centre - glm::vec3(reach.radius), reach.centre + glm::vec3(reach.radius)};
 }
 
-// Appends (cluster, light) for every cluster `reach` (view space) may touch.
-void collect(const ClusterGrid& grid, const LightReach& reach, uint32_t light,
-             std::vector<glm::uvec2>& hits) {
+// Appends (cluster, light) for every cluster `reach` (view space) may touch; `boxes[c]` is
+// cluster c's grid.clusterBox.
+void collect(const ClusterGrid& grid, std::span<const Box> boxes, const LightReach& reach,
+             uint32_t light, std::vector<glm::uvec2>& hits) {
   if (reach.shape == LightReach::Shape::None) return;
   if (reach.shape == LightReach::Shape::Everywhere) {
     for (int c = 0; c < grid.count(); ++c) hits.emplace_back(c, light);
@@ -85,8 +86,8 @@ void collect(const ClusterGrid& grid, const LightReach& reach, uint32_t light,
   for (int s = range.s0; s <= range.s1; ++s)
     for (int y = range.y0; y <= range.y1; ++y)
       for (int x = range.x0; x <= range.x1; ++x)
-        if (reachTouches(reach, grid.clusterBox(x, y, s)))
-          hits.emplace_back(grid.index(x, y, s), light);
+        if (const int c = grid.index(x, y, s); reachTouches(reach, boxes[c]))
+          hits.emplace_back(c, light);
 }
 
 }  // namespace
@@ -123,11 +124,16 @@ LightReach toView(const LightReach& reach, const glm::mat4& view) {
 LightGridLists assignLights(const ClusterGrid& grid, std::span<const LightReach> punctual,
                             std::span<const LightReach> area) {
   const auto clusters = static_cast<std::size_t>(grid.count());
+  // Each cluster's box once (two slice depths each), not once per light that may reach it.
+  std::vector<Box> boxes(clusters);
+  for (int s = 0; s < grid.slices; ++s)
+    for (int y = 0; y < grid.tilesY; ++y)
+      for (int x = 0; x < grid.tilesX; ++x) boxes[grid.index(x, y, s)] = grid.clusterBox(x, y, s);
   std::vector<glm::uvec2> punctualHits, areaHits;  // (cluster, light)
   for (std::size_t i = 0; i < punctual.size(); ++i)
-    collect(grid, toView(punctual[i], grid.view), static_cast<uint32_t>(i), punctualHits);
+    collect(grid, boxes, toView(punctual[i], grid.view), static_cast<uint32_t>(i), punctualHits);
   for (std::size_t i = 0; i < area.size(); ++i)
-    collect(grid, toView(area[i], grid.view), static_cast<uint32_t>(i), areaHits);
+    collect(grid, boxes, toView(area[i], grid.view), static_cast<uint32_t>(i), areaHits);
 
   // Counting sort by cluster; lights were visited in ascending order, so each list ascends.
   std::vector<uint32_t> punctualCount(clusters, 0), areaCount(clusters, 0);
