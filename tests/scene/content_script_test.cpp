@@ -44,5 +44,9 @@ TEST(ContentScripts, PointOverPlaneIsReproducible) {
                     "point_over_plane/point_over_plane.gltf");
 }
 
+TEST(ContentScripts, AtriumIsReproducible) {
+  expectRegenerates("atrium/make_atrium.py", "atrium/atrium.gltf");
+}
+
 }  // namespace
 }  // namespace bounce
