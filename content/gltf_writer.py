@@ -36,6 +36,31 @@ def quad(a, b, c, d):
     return [[a, b, c], [a, c, d]]
 
 
+def subdivided_quad(a, b, c, d, n):
+    """Triangles of the quad a b c d (a parallelogram), cut into n x n (n = 1: the two)."""
+    if n == 1:
+        return [[a, b, c], [a, c, d]]
+
+    def at(i, j):
+        return [a[k] + (b[k] - a[k]) * i / n + (d[k] - a[k]) * j / n for k in range(3)]
+    triangles = []
+    for i in range(n):
+        for j in range(n):
+            p, q, r, s = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
+            triangles += [[p, q, r], [p, r, s]]
+    return triangles
+
+
+def take_subdivide(args):
+    """Removes `--subdivide N` from the argument list `args`; returns N (1 without it)."""
+    if "--subdivide" not in args:
+        return 1
+    k = args.index("--subdivide")
+    n = int(args[k + 1])
+    del args[k:k + 2]
+    return n
+
+
 def facing(triangles, outward):
     """The triangles wound so their normals point along `outward`."""
     return [t if dot(triangle_normal(t), outward) > 0 else [t[0], t[2], t[1]] for t in triangles]

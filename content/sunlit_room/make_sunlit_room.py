@@ -44,19 +44,8 @@ SUBDIVIDE = 1  # quads cut into SUBDIVIDE x SUBDIVIDE (--subdivide)
 
 
 def quad(a, b, c, d):
-    """Triangles of the quad a b c d (a parallelogram), cut into SUBDIVIDE x SUBDIVIDE."""
-    n = SUBDIVIDE
-    if n == 1:
-        return [[a, b, c], [a, c, d]]
-
-    def at(i, j):
-        return [a[k] + (b[k] - a[k]) * i / n + (d[k] - a[k]) * j / n for k in range(3)]
-    triangles = []
-    for i in range(n):
-        for j in range(n):
-            p, q, r, s = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
-            triangles += [[p, q, r], [p, r, s]]
-    return triangles
+    """Triangles of the quad a b c d, cut into SUBDIVIDE x SUBDIVIDE (--subdivide)."""
+    return gltf_writer.subdivided_quad(a, b, c, d, SUBDIVIDE)
 
 
 def box(lo, hi):
@@ -82,10 +71,7 @@ def rug_rows():
 def main():
     global SUBDIVIDE
     args = sys.argv[1:]
-    if "--subdivide" in args:
-        k = args.index("--subdivide")
-        SUBDIVIDE = int(args[k + 1])
-        del args[k:k + 2]
+    SUBDIVIDE = gltf_writer.take_subdivide(args)
     out = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                             "sunlit_room.gltf")
     gltf = GltfWriter("bounce content/sunlit_room/make_sunlit_room.py")
