@@ -198,6 +198,18 @@ class GltfWriter:
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
         return len(self.doc["nodes"]) - 1
 
+    def cameras(self, views, yfov_degrees, aspect, zfar):
+        """Perspective cameras, one node each: views = [(name, eye, target), ...] in metres."""
+        self.doc["cameras"] = [
+            {"name": name, "type": "perspective", "perspective": {
+                "yfov": math.radians(yfov_degrees), "aspectRatio": aspect, "znear": 0.01,
+                "zfar": zfar}}
+            for name, _, _ in views]
+        for index, (name, eye, target) in enumerate(views):
+            self.node({"name": name, "camera": index,
+                       "rotation": rotation_looking_along(normalize(sub(target, eye))),
+                       "translation": eye})
+
     def use(self, extension):
         used = self.doc.setdefault("extensionsUsed", [])
         if extension not in used:

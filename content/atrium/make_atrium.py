@@ -28,7 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import gltf_writer  # noqa: E402
-from gltf_writer import GltfWriter, normalize, rotation_looking_along, sub  # noqa: E402
+from gltf_writer import GltfWriter, normalize, rotation_looking_along  # noqa: E402
 
 COURT = 4.0        # courtyard half-width, m
 OUTER = 7.0        # inner face of the outer walls, m
@@ -176,15 +176,8 @@ def main():
     for index, (name, position) in enumerate(lanterns, start=1):
         gltf.node({"name": name, "translation": position,
                    "extensions": {"KHR_lights_punctual": {"light": index}}})
-    gltf.doc["cameras"] = [
-        {"name": name, "type": "perspective", "perspective": {
-            "yfov": math.radians(70.0), "aspectRatio": 16 / 9, "znear": 0.01, "zfar": 100.0}}
-        for name in ("courtyard", "gallery")]
-    for index, eye, target in ((0, [-6.3, 1.6, 6.3], [2.0, 2.8, -3.0]),
-                               (1, [6.1, 5.0, -6.2], [5.6, 4.3, 5.0])):
-        gltf.node({"name": gltf.doc["cameras"][index]["name"], "camera": index,
-                   "rotation": rotation_looking_along(normalize(sub(target, eye))),
-                   "translation": eye})
+    gltf.cameras([("courtyard", [-6.3, 1.6, 6.3], [2.0, 2.8, -3.0]),
+                  ("gallery", [6.1, 5.0, -6.2], [5.6, 4.3, 5.0])], 70.0, 16 / 9, 100.0)
     gltf.write(out)
 
 

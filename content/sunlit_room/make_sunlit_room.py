@@ -25,7 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import gltf_writer  # noqa: E402
-from gltf_writer import GltfWriter, normalize, rotation_looking_along, sub  # noqa: E402
+from gltf_writer import GltfWriter, normalize, rotation_looking_along  # noqa: E402
 
 HEIGHT = 2.6          # m, floor to ceiling
 ROOM_A = (0.0, 4.0)   # x extent of room A, m
@@ -131,15 +131,8 @@ def main():
          "intensity": SUN_W_PER_M2 * 683.0}]}}
     gltf.node({"name": "sun", "rotation": rotation_looking_along(SUN_DIRECTION),
                "extensions": {"KHR_lights_punctual": {"light": 0}}})
-    gltf.doc["cameras"] = [
-        {"name": name, "type": "perspective", "perspective": {
-            "yfov": math.radians(70.0), "aspectRatio": 1.5, "znear": 0.01, "zfar": 50.0}}
-        for name in ("room", "next_room")]
-    for index, eye, target in ((0, [0.35, 1.55, 0.35], [3.5, 0.7, 2.3]),
-                               (1, [5.75, 1.5, 2.75], [4.0, 0.5, 1.0])):
-        gltf.node({"name": gltf.doc["cameras"][index]["name"], "camera": index,
-                   "rotation": rotation_looking_along(normalize(sub(target, eye))),
-                   "translation": eye})
+    gltf.cameras([("room", [0.35, 1.55, 0.35], [3.5, 0.7, 2.3]),
+                  ("next_room", [5.75, 1.5, 2.75], [4.0, 0.5, 1.0])], 70.0, 1.5, 50.0)
     gltf.write(out)
 
 
