@@ -233,6 +233,16 @@ void fillVisibility(BakedVisibility& visibility, std::vector<uint8_t> filled,
   const int offsets[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
   for (const bool sameLabel : {true, false}) {
     if (sameLabel && !labels) continue;
+    if (!sameLabel && labels) {
+      TexelVisibility dark;
+      dark.light[0] = kOtherLights;
+      dark.visible[0] = 0.0f;
+      for (std::size_t t = 0; t < filled.size(); ++t)
+        if (!filled[t] && (*labels)[t] != 0) {
+          visibility.texels[t] = dark;
+          filled[t] = 1;
+        }
+    }
     for (;;) {
       std::vector<std::pair<std::size_t, std::size_t>> copies;  // (to, from)
       for (int y = 0; y < h; ++y)

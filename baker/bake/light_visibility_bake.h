@@ -108,7 +108,11 @@ BakedVisibility bakeLightVisibility(const AreaLightSet& lights, std::span<const 
 
 // Every texel with filled == 0 takes the record of a filled 4-neighbour (the first of left,
 // right, up, down; of the same chart label first when `labels` is given), ring by ring, until
-// none is left that touches a filled one.
+// none is left that touches a filled one. With `labels`, a chart texel its own chart cannot fill
+// (a chart without one texel that kept points: a strip inside a wall, seen only where two faces
+// meet at a multisampled edge) is dark to every light (one kOtherLights slot, V = 0), never
+// another chart's: a slot-less record reads V = 1, and a neighbour across a thin wall is the lit
+// side's. Only the padding (label 0) then takes a neighbouring chart's record.
 void fillVisibility(BakedVisibility& visibility, std::vector<uint8_t> filled,
                     const std::vector<uint32_t>* labels);
 

@@ -19,10 +19,10 @@ struct ShadowSettings {
   float filterRadius = 1.5f;
   // A static spot or point light whose visibility the bake holds on every static surface draws
   // a map only while a dynamic instance is in its reach; static surfaces then read the texels' V
-  // alone (docs/shadows.md). Off by default: a texel's V alone lets the light through at a thin
-  // wall's edge pixels (ThinWallLeak.NoLightmapLightAtTheDarkRoomsMultisampledEdgePixels: one
-  // pixel at 3% of the lit room's mean), where min(V_map, V) holds it at 0.
-  bool bakedPunctualMapsOnlyForDynamic = false;
+  // alone (docs/shadows.md). On by default since a chart without points (a strip inside a thin
+  // wall, drawn at a multisampled edge pixel) is baked dark to every light (fillVisibility), not
+  // lit from across the wall; false keeps a map for every shadowed light as before.
+  bool bakedPunctualMapsOnlyForDynamic = true;
 };
 
 // What a shadow pass drew in one frame: map views (a spot map, a cube face) and instances drawn

@@ -279,5 +279,31 @@ TEST(LightVisibility, UncoveredTexelsTakeANeighboursRecord) {
   EXPECT_FLOAT_EQ(v.texels[2].visible[0], 0.75f);
 }
 
+// A chart none of whose texels kept points (a strip of floor or wall inside a thin wall, drawn
+// only where two faces meet at a multisampled edge pixel) is dark to every light, not lit by
+// the chart across the wall; the padding between charts still takes a chart's record. Injected:
+// the unfilled chart left to the cross-chart fill: it takes chart 1's V = 1 (the thin-wall edge
+// pixel of ThinWallLeak.NoLightmapLightAtTheDarkRoomsMultisampledEdgePixels leaks then when the
+// spot and point maps are drawn for dynamic instances alone).
+TEST(LightVisibility, AChartWithoutPointsIsDarkToEveryLight) {
+  BakedVisibility v;
+  v.width = 5;
+  v.height = 1;
+  v.lightCount = 1;
+  v.punctualCount = 1;
+  v.texels.resize(5);
+  v.texels[0].light = {0, 1, kNoLight, kNoLight};  // lit by both lights
+  v.texels[0].visible = {1, 1, 1, 1};
+  const std::vector<uint32_t> labels{1, 0, 0, 2, 2};  // chart 1, padding, chart 2
+  fillVisibility(v, {1, 0, 0, 0, 0}, &labels);
+  for (const std::size_t t : {3u, 4u}) {
+    EXPECT_EQ(v.texels[t].light[0], kOtherLights) << "texel " << t;
+    EXPECT_FLOAT_EQ(v.texels[t].visible[0], 0.0f) << "texel " << t;
+    for (int s = 1; s < kVisibilitySlots; ++s) EXPECT_EQ(v.texels[t].light[s], kNoLight);
+  }
+  EXPECT_EQ(v.texels[1].light[0], 0u);            // padding next to chart 1: its record
+  EXPECT_EQ(v.texels[2].light[0], kOtherLights);  // padding next to chart 2: the dark one
+}
+
 }  // namespace
 }  // namespace bounce::test

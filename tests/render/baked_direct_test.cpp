@@ -289,7 +289,8 @@ TEST(BakedDirect, ADynamicBoxShadowsTheProbeLitMatAndTakesTheProbeLitTablesShado
   EXPECT_LE(disagree, pixels / 100);
 }
 
-// With ShadowSettings::bakedPunctualMapsOnlyForDynamic (off by default: thin walls, see there):
+// With ShadowSettings::bakedPunctualMapsOnlyForDynamic (the default since a chart without points
+// is baked dark: fillVisibility):
 // a static spot over a static table on a lightmapped floor: the bake names the spot, so with
 // nothing dynamic no map is drawn and no pixel takes a tap, and the table's shadow comes from the
 // floor's 2.5 cm texels alone: its hard edge blurred over a texel (5.1% off the tracer over the
