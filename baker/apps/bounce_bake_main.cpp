@@ -185,7 +185,8 @@ int main(int argc, char** argv) {
                  "end at its map after one reflection; docs/baker.md)")
       ->check(CLI::IsMember({"paths", "cache"}));
   app.add_option("--cache-spp", o.bake.cacheSpp,
-                 "samples per texel of the cache pass (--gather cache)")
+                 "samples per texel of the cache pass (--gather cache), half in each of its "
+                 "two half caches (rounded up)")
       ->check(CLI::Range(1, 1 << 20));
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));

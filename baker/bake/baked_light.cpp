@@ -27,16 +27,22 @@ Scene bakedDirectScene(const Scene& scene) {
 }
 
 BakedLight::BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-                       TraceSettings trace, const IndirectCache* cache, bool bakedDirect)
+                       TraceSettings trace, std::array<const IndirectCache*, 2> cache,
+                       bool bakedDirect)
     : directScene_(bakedDirectScene(scene)),
       anyBakedDirect_(bakedDirect && (!directScene_.lights.empty() || emits(directScene_))),
       indirect_(scene, geometry, kernel, withPaths(trace, PathSet::IndirectOnly)),
       bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {
-  indirect_.setCache(cache);
+  indirect_.setCache(cache[0]);
+  if (cache[1] != cache[0]) {
+    indirectB_ = std::make_unique<PathTracer>(scene, geometry, kernel,
+                                              withPaths(trace, PathSet::IndirectOnly));
+    indirectB_->setCache(cache[1]);
+  }
 }
 
-BakedLight::Sample BakedLight::sample(glm::vec3 position, glm::vec3 normal,
-                                      SobolSampler& sampler) const {
+BakedLight::Sample BakedLight::sample(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler,
+                                      int half) const {
   Sample s;
   if (anyBakedDirect_) {
     sampler.setDimension(kDimBakedDirect);
@@ -46,7 +52,8 @@ BakedLight::Sample BakedLight::sample(glm::vec3 position, glm::vec3 normal,
   }
   sampler.setDimension(kDimIndirect);
   bool bad = false;
-  s.irradiance += indirect_.irradiance(position, normal, sampler, &bad, &s.reachedSurface);
+  const PathTracer& indirect = half == 1 && indirectB_ ? *indirectB_ : indirect_;
+  s.irradiance += indirect.irradiance(position, normal, sampler, &bad, &s.reachedSurface);
   s.nonFinite += bad ? 1 : 0;
   return s;
 }

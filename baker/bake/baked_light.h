@@ -10,7 +10,9 @@
 // indirect path kDimIndirect on; dimension 0 is the caller's (which point, which normal).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
 
 #include <glm/glm.hpp>
 
@@ -34,11 +36,14 @@ Scene bakedDirectScene(const Scene& scene);
 class BakedLight {
  public:
   // `trace` gives the depth, seed and light choice (its paths are set here). scene, geometry and
-  // kernel must outlive it. `cache`, when given (and outliving it), ends the indirect paths at
-  // the cached indirect irradiance (trace/indirect_cache.h); `bakedDirect` false leaves out the
-  // baked-only lights' direct light (what the cache itself holds: the indirect part only).
+  // kernel must outlive it. `cache`, when given (and outliving it), ends the indirect paths of
+  // the samples of half h (delivered_error.h's split) at the cached indirect irradiance of
+  // cache[h] (trace/indirect_cache.h), so that the two half-sample maps carry independent cache
+  // errors (irradiance_cache.h); `bakedDirect` false leaves out the baked-only lights' direct
+  // light (what the cache itself holds: the indirect part only).
   BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
-             TraceSettings trace, const IndirectCache* cache = nullptr, bool bakedDirect = true);
+             TraceSettings trace, std::array<const IndirectCache*, 2> cache = {},
+             bool bakedDirect = true);
   BakedLight(const BakedLight&) = delete;
   BakedLight& operator=(const BakedLight&) = delete;
 
@@ -47,12 +52,15 @@ class BakedLight {
     uint32_t nonFinite = 0;       // estimates that were not finite, counted as black (0, 1 or 2)
     bool reachedSurface = false;  // the indirect path's first ray met a surface
   };
-  Sample sample(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler) const;
+  // `half` (0: A, 1: B) picks the cache the sample reads.
+  Sample sample(glm::vec3 position, glm::vec3 normal, SobolSampler& sampler, int half = 0) const;
 
  private:
   Scene directScene_;
   bool anyBakedDirect_;
   PathTracer indirect_, bakedDirect_;
+  // Half B's indirect tracer where its cache is not half A's (a tracer reads one cache).
+  std::unique_ptr<PathTracer> indirectB_;
 };
 
 }  // namespace bounce

@@ -13,14 +13,14 @@
 namespace bounce {
 
 IrradianceCache::IrradianceCache(const Scene& scene, const WorldGeometry& geometry,
-                                 const LightmapLayout& layout, Image irradiance,
+                                 const LightmapLayout& layout, std::array<Image, 2> halves,
                                  std::vector<uint8_t> readable)
-    : geometry_(geometry), irradiance_(std::move(irradiance)), readable_(std::move(readable)) {
+    : geometry_(geometry), irradiance_(std::move(halves)), readable_(std::move(readable)) {
   const std::size_t texels =
       static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height);
-  if (irradiance_.width != layout.width || irradiance_.height != layout.height ||
-      readable_.size() != texels)
-    throw std::invalid_argument("irradiance cache: the map is not the layout's size");
+  for (const Image& map : irradiance_)
+    if (map.width != layout.width || map.height != layout.height || readable_.size() != texels)
+      throw std::invalid_argument("irradiance cache: a half map is not the layout's size");
   if (scene.triangleCount() != geometry.triangleCount())
     throw std::invalid_argument("irradiance cache: world geometry does not match the scene");
   triangles_.assign(geometry.triangleCount(), TriangleUv{});
@@ -62,14 +62,15 @@ std::optional<std::size_t> IrradianceCache::texelAt(uint32_t triangle, glm::vec2
     return std::nullopt;
   const TriangleUv& t = triangles_[triangle];
   const glm::vec2 p = (1.0f - uv.x - uv.y) * t.corner[0] + uv.x * t.corner[1] + uv.y * t.corner[2];
-  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, irradiance_.width - 1);
-  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, irradiance_.height - 1);
-  return static_cast<std::size_t>(y) * static_cast<std::size_t>(irradiance_.width) +
+  const Image& map = irradiance_[0];
+  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, map.width - 1);
+  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, map.height - 1);
+  return static_cast<std::size_t>(y) * static_cast<std::size_t>(map.width) +
          static_cast<std::size_t>(x);
 }
 
-std::optional<glm::vec3> IrradianceCache::irradianceAt(const SurfacePoint& at,
-                                                       glm::vec3 from) const {
+std::optional<glm::vec3> IrradianceCache::irradianceAt(const SurfacePoint& at, glm::vec3 from,
+                                                       int h) const {
   const std::optional<std::size_t> texel = texelAt(at.triangle, at.barycentric);
   if (!texel || !readable_[*texel]) return std::nullopt;  // no region, or not a valid texel
   const glm::vec3 travelled = at.position - from;
@@ -77,7 +78,7 @@ std::optional<glm::vec3> IrradianceCache::irradianceAt(const SurfacePoint& at,
   if (glm::dot(travelled, geometry_.triangleCross(at.triangle)) >= 0.0f) return std::nullopt;
   const float close = kCloseTexels * triangles_[at.triangle].texelEdge;
   if (glm::dot(travelled, travelled) < close * close) return std::nullopt;
-  return irradiance_.pixels[*texel];
+  return irradiance_[h & 1].pixels[*texel];
 }
 
 }  // namespace bounce

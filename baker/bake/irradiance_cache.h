@@ -1,11 +1,14 @@
 // The lightmap's own indirect irradiance as a cache the final gather ends its paths at
 // (trace/indirect_cache.h; docs/baker.md, "Gather with a cache").
 //
-// Holds a whole-map E_cache (W/m², per linear-RGB channel, the layout's size: the IndirectOnly
-// irradiance of a short bake through the same fill, denoiser and dilation as the final map) and
-// a mask of the texels it may be read at. A hit y reached from the vertex x reads the texel
-// under y's atlas position (its triangle's corner UVs at its barycentrics, nearest texel) unless
-// one of the guards says the texel's value is not y's irradiance:
+// Holds two whole-map E_cache (W/m², per linear-RGB channel, the layout's size: the IndirectOnly
+// irradiance of two short bakes of seeds of their own, each dilated as the final map is, not
+// denoised) and a mask of the texels they may be read at. A final sample of half h
+// (delivered_error.h's split) reads half(h) only, so the final pass's two half-sample maps carry
+// independent cache errors and their difference D holds the cache's noise as well as the final
+// samples' (docs/baker.md, "Gather with a cache"). A hit y reached from the vertex x reads the
+// texel under y's atlas position (its triangle's corner UVs at its barycentrics, nearest texel)
+// unless one of the guards says the texel's value is not y's irradiance:
 //   close     |y − x| < kCloseTexels texel edges at y: at a corner or in a narrow slot the texel
 //             averages E over an area across which E changes fast (and its points were chosen
 //             away from the corner by the leak guard), so y's own E differs from the texel's;
@@ -17,6 +20,7 @@
 // Each guard sends the path on as without a cache. GL-free.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -35,15 +39,21 @@ struct WorldGeometry;
 // Texel edges at the hit under which the close guard refuses the cache (see above).
 inline constexpr float kCloseTexels = 2.0f;
 
-class IrradianceCache final : public IndirectCache {
+class IrradianceCache {
  public:
-  // `irradiance` and `readable` (per texel, 1 where the cache may be read) are layout.width ×
+  // Each of `halves` and `readable` (per texel, 1 where the cache may be read) is layout.width ×
   // layout.height; geometry = flatten(scene), whose instances the layout's regions number.
   // Throws std::invalid_argument when the sizes or the layout do not fit the scene.
   IrradianceCache(const Scene& scene, const WorldGeometry& geometry, const LightmapLayout& layout,
-                  Image irradiance, std::vector<uint8_t> readable);
+                  std::array<Image, 2> halves, std::vector<uint8_t> readable);
+  // half_ points into this object.
+  IrradianceCache(const IrradianceCache&) = delete;
+  IrradianceCache& operator=(const IrradianceCache&) = delete;
 
-  std::optional<glm::vec3> irradianceAt(const SurfacePoint& at, glm::vec3 from) const override;
+  // The cache the final samples of half h (0: A, 1: B) read.
+  const IndirectCache& half(int h) const { return half_[h & 1]; }
+  // E_cache of half h (W/m²) at `at`, the hit of a ray from `from`; nullopt where a guard refuses.
+  std::optional<glm::vec3> irradianceAt(const SurfacePoint& at, glm::vec3 from, int h) const;
 
   // The texel under world triangle `triangle` at barycentrics `uv` (Hit::u, Hit::v), or nullopt
   // where the triangle has no lightmap region.
@@ -54,8 +64,20 @@ class IrradianceCache final : public IndirectCache {
     glm::vec2 corner[3];     // atlas texel coordinates of the world triangle's corners
     float texelEdge = 0.0f;  // metres on the surface per texel edge; 0: no lightmap region
   };
+  class Half final : public IndirectCache {
+   public:
+    Half(const IrradianceCache& owner, int h) : owner_(owner), h_(h) {}
+    std::optional<glm::vec3> irradianceAt(const SurfacePoint& at, glm::vec3 from) const override {
+      return owner_.irradianceAt(at, from, h_);
+    }
+
+   private:
+    const IrradianceCache& owner_;
+    int h_;
+  };
   const WorldGeometry& geometry_;
-  Image irradiance_;
+  std::array<Image, 2> irradiance_;
+  std::array<Half, 2> half_{Half(*this, 0), Half(*this, 1)};
   std::vector<uint8_t> readable_;
   std::vector<TriangleUv> triangles_;  // per world triangle
 };

@@ -1,6 +1,7 @@
 #include "bake/lightmap_bake.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 #include "bake/error_summary.h"
@@ -24,8 +25,9 @@ namespace {
 
 // Candidate points use a pattern of their own, apart from the irradiance samples'.
 constexpr uint32_t kPointSeedSalt = 0x9e3779b9u;
-// So does the cache pass: its errors are independent of the final gather's samples.
-constexpr uint32_t kCacheSeedSalt = 0x85ebca6bu;
+// So does each half of the cache pass: their errors are independent of each other and of the
+// final gather's samples.
+constexpr uint32_t kCacheSeedSalt[2] = {0x85ebca6bu, 0xc2b2ae35u};
 
 // A stage of the plan, begun (and checked for a cancel) when the plan has it.
 std::unique_ptr<StageProgress> beginStage(const StagePlan* plan, const char* name, uint64_t total) {
@@ -82,7 +84,7 @@ void bakeIrradiance(TileScheduler& tiles, const Scene& scene, const WorldGeometr
     // Only a process with tiles to compute needs the cache (not a merge, nor a finished resume).
     if (settings.gather == Gather::Cache && (!work.tiles.empty() || work.next)) {
       cache = cacheIrradiance(scene, geometry, kernel, layout, coverage, settings, bake);
-      irradiance.cache = cache.get();
+      irradiance.cache = {&cache->half(0), &cache->half(1)};
     }
     irradiance.work = work;
     irradiance.tileDone = std::move(done);
@@ -219,11 +221,16 @@ void dilateMap(const std::vector<uint8_t>& valid, const std::vector<uint32_t>& l
   for (int ring = 0; ring < std::max(layout.padding, 2); ++ring) dilateOnce(image, filled);
 }
 
-// The cache pass (irradiance_cache.h): every covered texel's indirect irradiance (no baked-only
-// direct light) from settings.cacheSpp whole paths of a seed of its own, then the final map's
-// zero fill, denoiser and dilation. A whole-map stage every process that computes tiles runs
-// before them, deterministic like they are, so it is never journalled; readable: covered texels
-// the leak guard kept.
+// The cache pass (irradiance_cache.h): two half caches, each every covered texel's indirect
+// irradiance (no baked-only direct light) from half of settings.cacheSpp whole paths (rounded
+// up) of a seed of its own, then the final map's dilation. Not denoised: the denoiser's weights
+// follow the luminance, so a texel whose few skewed samples met a sunlit patch is pulled down to
+// its neighbours while one that missed it keeps its low value (docs/baker.md: the sunlit room's
+// indirect frame −1.78% with it); the raw cache's noise instead reaches the final map's half
+// difference, as each final half reads its own cache. With a fixed count and no target no
+// texel is an unresolved zero: the fill has nothing to do. A whole-map stage every process that
+// computes tiles runs before them, deterministic like they are, so it is never journalled;
+// readable: covered texels the leak guard kept.
 std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const WorldGeometry& geometry,
                                                  const RayKernel& kernel,
                                                  const LightmapLayout& layout,
@@ -231,38 +238,34 @@ std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const World
                                                  const LightmapBakeSettings& settings,
                                                  LightmapBake& bake) {
   Stopwatch clock;
-  LightmapBakeSettings pass = settings;
-  pass.irradiance.maxSpp = std::max(settings.cacheSpp, 1);
-  pass.irradiance.targetError = 0.0f;
-  pass.irradiance.seed = settings.irradiance.seed ^ kCacheSeedSalt;
-  pass.irradiance.bakedDirect = false;
-  pass.irradiance.cache = nullptr;
-  pass.irradiance.work = TileWork{};
-  pass.irradiance.tileDone = nullptr;
-  pass.irradiance.progress = nullptr;
-  TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, pass.irradiance);
-  LightmapBake map;
-  map.covered = bake.covered;
-  map.invalid = bake.invalid;
-  map.irradiance = std::move(gathered.irradiance);
-  map.samples = std::move(gathered.samples);
-  map.relativeError = std::move(gathered.relativeError);
-  // The final map's filters take the half difference along (delivered_error.h); the cache's own
-  // error is not reported, so it is only carried.
-  map.halfDifference = std::move(gathered.halfDifference);
-  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, map.covered);
-  const std::vector<uint8_t> valid = fillZerosAndSummarise(coverage, labels, pass, map);
-  if (settings.denoise) denoiseMap(coverage, labels, layout, map);
-  dilateMap(valid, labels, layout, map, map.irradiance);
+  IrradianceSettings pass = settings.irradiance;
+  pass.maxSpp = std::max((settings.cacheSpp + 1) / 2, 1);
+  pass.targetError = 0.0f;
+  pass.bakedDirect = false;
+  pass.cache = {};
+  pass.work = TileWork{};
+  pass.tileDone = nullptr;
+  pass.progress = nullptr;
+  const std::vector<uint32_t> labels = labelCharts(layout.width, layout.height, bake.covered);
+  std::vector<uint8_t> valid(bake.covered.size(), 0);
+  for (std::size_t t = 0; t < valid.size(); ++t) valid[t] = coverage.covered(t) ? 1 : 0;
+  std::array<Image, 2> halves;
+  bake.cacheSamples = bake.cacheRays = 0;
+  for (int h = 0; h < 2; ++h) {
+    pass.seed = settings.irradiance.seed ^ kCacheSeedSalt[h];
+    TexelIrradiance gathered = gatherIrradiance(scene, geometry, kernel, coverage, pass);
+    halves[h] = std::move(gathered.irradiance);
+    dilateMap(valid, labels, layout, bake, halves[h]);
+    // Its rays are not in bake.rays: a merge computes no cache, yet must report what one
+    // process does (bake.json's rays.traced: the leak guard's and the tiles' rays).
+    bake.cacheSamples += gathered.totalSamples;
+    bake.cacheRays += gathered.totalRays;
+  }
   std::vector<uint8_t> readable(valid.size(), 0);
   for (std::size_t t = 0; t < readable.size(); ++t)
-    readable[t] = valid[t] && !map.invalid[t] ? 1 : 0;
-  // Its rays are not in bake.rays: a merge computes no cache, yet must report what one process
-  // does (bake.json's rays.traced: the leak guard's and the tiles' rays).
-  bake.cacheSamples = gathered.totalSamples;
-  bake.cacheRays = gathered.totalRays;
+    readable[t] = valid[t] && !bake.invalid[t] ? 1 : 0;
   bake.cacheSeconds = clock.lap();
-  return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(map.irradiance),
+  return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(halves),
                                            std::move(readable));
 }
 

@@ -47,8 +47,9 @@ struct LightmapBakeSettings {
   bool stitch = true;
   bool dilate = true;
   LightmapTiles tiles;
-  // Gather::Cache: a cache pass of `cacheSpp` whole paths per texel first, through the filters
-  // above; then the texels' paths end at its map (irradiance_cache.h).
+  // Gather::Cache: a cache pass of `cacheSpp` whole paths per texel first, in two half caches
+  // of cacheSpp/2 (rounded up) each, dilated, not denoised; then the texels' paths end at the
+  // map of their sample's half (irradiance_cache.h).
   Gather gather{};  // Gather::Paths
   int cacheSpp = 32;
 };

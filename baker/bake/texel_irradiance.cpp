@@ -97,13 +97,15 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
         const uint32_t pick = std::min(
             points - 1, static_cast<uint32_t>(sampler.get1D() * static_cast<float>(points)));
         const TexelPoint& point = coverage.points[begin + pick];
+        // The sample's half picks the cache it reads.
+        const float half = splitSign(settings.seed, static_cast<uint32_t>(texel), n);
         const BakedLight::Sample sample =
-            light.sample(point.position, point.shadingNormal, sampler);
+            light.sample(point.position, point.shadingNormal, sampler, half > 0.0f ? 0 : 1);
         const glm::vec3 e = sample.irradiance;
         nonFinite[texel] += sample.nonFinite;
         reachedSurface += sample.reachedSurface ? 1 : 0;
         sum += glm::dvec3(e);
-        halves.add(e, splitSign(settings.seed, static_cast<uint32_t>(texel), n));
+        halves.add(e, half);
         const double y = luminance(e);
         const double delta = y - mean;
         mean += delta / static_cast<double>(n + 1);

@@ -15,6 +15,7 @@
 // on the tiles the work is cut into (tile_work.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -46,9 +47,9 @@ struct IrradianceSettings {
   StageProgress* progress = nullptr;
   // The tiles to compute (all texels by default); the others are left zero.
   TileWork work;
-  // Ends the indirect paths at this cache (trace/indirect_cache.h, irradiance_cache.h); null:
-  // whole paths. Must outlive the call.
-  const IndirectCache* cache = nullptr;
+  // Ends the indirect paths of the samples of half h (delivered_error.h's split) at cache[h]
+  // (trace/indirect_cache.h, irradiance_cache.h); null: whole paths. Must outlive the call.
+  std::array<const IndirectCache*, 2> cache{};
   // false: the indirect light only, without the baked-only lights' direct light (the cache pass).
   bool bakedDirect = true;
   // Called with each tile of `work` once its texels are in `out`, from the worker that finished
