@@ -3,6 +3,7 @@
 // world position is known exactly.
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,6 +34,23 @@ struct QuadAtlas {
 // v along p3 − p0) at `texelSize` metres per texel, `padding` texels apart, charts starting
 // on whole texels, in an atlas `width` texels wide.
 QuadAtlas quadAtlas(const Scene& scene, float texelSize, int width = 64, int padding = 2);
+
+// The closed furnace: a 1 m box of albedo ρ whose every face emits Le (W/(sr·m²)), seen from
+// inside. The radiance is Le/(1 − ρ) everywhere, so the irradiance from light that reflected at
+// least once (what the lightmap holds) is π·Le·ρ/(1 − ρ) at every point. Built in place (a built
+// World must not move).
+struct ClosedFurnace {
+  float rho, le;
+  World world;
+  ClosedFurnace(float albedo, float emitted) : rho(albedo), le(emitted) {
+    const uint32_t m = addMaterial(world.scene, glm::vec3(rho), glm::vec3(le));
+    addInwardBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f), m);
+    world.build();
+  }
+  double exactIndirectIrradiance() const {  // W/m²
+    return std::numbers::pi * le * rho / (1.0 - rho);
+  }
+};
 
 // A 1 m room lit by a small lamp in one corner of the ceiling, with a board casting shadow:
 // texels near the lamp are bright, the far corners under the board dim (≈ 50× apart).

@@ -42,11 +42,9 @@ TexelMean texelMean(const LightmapBake& bake, const std::vector<std::size_t>& te
 // plus the cache's error carried by ρ (at most ρ × the cache map's own standard error of the
 // same mean; its texels are independent of the final pass's samples: another seed).
 TEST(CacheGather, ClosedFurnaceGivesTheExactIrradiance) {
-  const float rho = 0.5f, le = 1.0f;
-  test::World world;
-  const uint32_t m = test::addMaterial(world.scene, glm::vec3(rho), glm::vec3(le));
-  test::addInwardBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f), m);
-  world.build();
+  const test::ClosedFurnace furnace(0.5f, 1.0f);
+  const test::World& world = furnace.world;
+  const double rho = furnace.rho;
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   const LightmapBake cached =
       bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, cacheSettings(64, 32));
@@ -57,7 +55,7 @@ TEST(CacheGather, ClosedFurnaceGivesTheExactIrradiance) {
     if (cached.covered[t]) texels.push_back(t);
   ASSERT_EQ(texels.size(), 6u * 64u);
   EXPECT_EQ(cached.cacheSamples, 32u * texels.size());
-  const double exact = kPi * le * rho / (1.0 - rho);
+  const double exact = furnace.exactIndirectIrradiance();
   const TexelMean final = texelMean(cached, texels);
   const double cacheError = rho * texelMean(cacheAlike, texels).standardError;
   const double tolerance = 5.0 * std::hypot(final.standardError, cacheError);
@@ -91,13 +89,10 @@ TEST(CacheGather, ClosedFurnaceGivesTheExactIrradiance) {
 // map's cache error is one draw shared by the texels that read the same cache texels. Injected,
 // the halves reading one shared cache: 0.39, 0.50, 0.44, 0.54 (fails).
 TEST(CacheGather, ReportedErrorHoldsTheCachesNoise) {
-  const float rho = 0.5f, le = 1.0f;
-  test::World world;
-  const uint32_t m = test::addMaterial(world.scene, glm::vec3(rho), glm::vec3(le));
-  test::addInwardBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f), m);
-  world.build();
+  const test::ClosedFurnace furnace(0.5f, 1.0f);
+  const test::World& world = furnace.world;
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.25f, 40);
-  const double exact = kPi * le * rho / (1.0 - rho);
+  const double exact = furnace.exactIndirectIrradiance();
   double reported2 = 0.0, measured2 = 0.0;
   for (uint32_t seed = 10; seed < 16; ++seed) {
     LightmapBakeSettings settings = cacheSettings(512, 2);

@@ -10,19 +10,14 @@
 namespace bounce {
 namespace {
 
-// Closed box of albedo ρ whose every face emits Le (W/(sr·m²)): the radiance is
-// L = Le/(1 − ρ) everywhere, so the irradiance from light that reflected at least once (what
-// the lightmap holds by default) is E = π(L − Le) = π·Le·ρ/(1 − ρ) at every point.
+// The closed furnace (bake_scenes.h): E = π(L − Le) = π·Le·ρ/(1 − ρ) at every point.
 TEST(BakePhysics, FurnaceIndirectIrradianceIsExact) {
-  const float rho = 0.5f, le = 1.0f;
-  test::World world;
-  const uint32_t m = test::addMaterial(world.scene, glm::vec3(rho), glm::vec3(le));
-  test::addInwardBox(world.scene, glm::vec3(0.0f), glm::vec3(1.0f), m);
-  world.build();
+  const test::ClosedFurnace furnace(0.5f, 1.0f);
+  const test::World& world = furnace.world;
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
   const LightmapBake bake = bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout,
                                          test::testBakeSettings(64));
-  const double exact = kPi * le * rho / (1.0 - rho);
+  const double exact = furnace.exactIndirectIrradiance();
   double sum = 0, variance = 0;
   int n = 0, outliers = 0;
   for (std::size_t t = 0; t < bake.covered.size(); ++t) {
