@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -204,8 +205,11 @@ std::vector<FlatGroup> mergeSmallCharts(const WorldMesh& mesh, std::vector<FlatG
   for (std::size_t c = 0; c < n; ++c) order[c] = static_cast<uint32_t>(c);
   std::stable_sort(order.begin(), order.end(),
                    [&](uint32_t a, uint32_t b) { return pass.area(a) < pass.area(b); });
-  const std::size_t window =
-      static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  // As many choices as threads can make at once (the arena's, within a global_control's bound
+  // such as bounce-bake's --threads): one thread makes one choice at a time, wasting none.
+  const std::size_t window = std::max<std::size_t>(
+      1, std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
+                  tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
   std::vector<MergePass::Choice> choice(n);
   std::vector<uint8_t> known(n, 0);
   for (std::size_t next = 0; next < n;) {
