@@ -161,9 +161,9 @@ std::optional<Placement> placeCharts(std::vector<Chart>& charts,
   std::vector<glm::ivec2> rects;
   for (const glm::ivec2 c : cells) rects.push_back(c + padding);
   const std::optional<Packing> byRect = packRectangles(rects, maxSize);
-  // Each chart's masks turned by 0°, 90°, 180° and 270°.
+  // Each chart's masks turned by 0°, 90°, 180° and 270° (the charts in parallel).
   std::vector<std::vector<ChartMask>> turns(charts.size());
-  for (std::size_t c = 0; c < charts.size(); ++c) {
+  tbb::parallel_for(std::size_t{0}, charts.size(), [&](std::size_t c) {
     std::vector<glm::vec2> corners = charts[c].cornerUv;
     glm::ivec2 size = cells[c];
     for (int k = 0; k < 4; ++k) {
@@ -171,7 +171,7 @@ std::optional<Placement> placeCharts(std::vector<Chart>& charts,
       corners = turnedCorners(corners, size);
       size = {size.y, size.x};
     }
-  }
+  });
   const std::optional<MaskPacking> byMask = packMasks(turns, padding, maxSize);
   const auto area = [](int w, int h) { return static_cast<int64_t>(w) * h; };
   if (byMask &&
@@ -261,13 +261,19 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   std::vector<Uv1Check> uv1;
   if (settings.minLightmapFill > 0.0) {
     generateMissingCharts(scene, statics, instanceTexel, settings, uv1);
+    // Each instance's fill on its own (in parallel); a mesh's own uv1 counts as full.
+    std::vector<double> fill(statics.size(), 1.0);
+    tbb::parallel_for(std::size_t{0}, statics.size(), [&](std::size_t k) {
+      if (uv1[k].usable) return;
+      const double areaTexels =
+          statics[k].weightedArea / (static_cast<double>(texelSize) * texelSize);
+      fill[k] =
+          lightmapFill(statics[k].charts, instanceTexel(statics[k]), areaTexels, settings.padding);
+    });
     std::size_t i = 0;
     std::erase_if(statics, [&](StaticInstance& s) {
-      if (uv1[i++].usable) return false;
-      const float texel = instanceTexel(s);
-      const double areaTexels = s.weightedArea / (static_cast<double>(texelSize) * texelSize);
-      if (lightmapFill(s.charts, texel, areaTexels, settings.padding) >= settings.minLightmapFill)
-        return false;
+      const std::size_t k = i++;
+      if (uv1[k].usable || fill[k] >= settings.minLightmapFill) return false;
       atlas.vplLitInstances.push_back(s.instance);
       sparse.push_back(scene.instances[s.instance].name);
       return true;

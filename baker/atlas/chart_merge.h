@@ -40,6 +40,8 @@ struct MergeLimits {
 // larger than the two charts' together (the padding shrinks). The union is one conformal map with
 // no flipped or overlapping triangle (chart_join.h where the two share several runs of edges).
 // `contacts` index `groups`; charts with an empty flattening take no part. Order is kept.
+// The pass is serial by definition; it runs as windows of choices made in parallel and carried
+// out in order, each the serial pass's own (chart_merge.cpp): the same charts at any thread count.
 std::vector<FlatGroup> mergeSmallCharts(const WorldMesh& mesh, std::vector<FlatGroup> groups,
                                         const std::vector<ChartContact>& contacts,
                                         const MergeLimits& limits);

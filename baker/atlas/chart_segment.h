@@ -6,7 +6,9 @@
 // seed plane, which the flattening needs). Then the fragments growth leaves between charts join
 // a larger neighbour while the normals of both stay within `mergeHalfAngle` of one axis. No chart
 // grows, merges or reports a contact across a cut edge (WorldMesh::cutEdges, where a wall
-// crosses the surface: scene/crossing_cuts.h).
+// crosses the surface: scene/crossing_cuts.h). So the components of faces joined across uncut
+// edges are segmented apart, in parallel, and their charts numbered as one pass over all faces
+// numbers them (by seed, in the order of decreasing area): the same charts at any thread count.
 #pragma once
 
 #include <cstdint>

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include <tbb/parallel_for.h>
+
 #include "bake/texel_coverage.h"
 #include "trace/sampling.h"
 
@@ -42,9 +44,9 @@ std::vector<uint32_t> labelCharts(int width, int height, const std::vector<uint8
 std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
                        const std::vector<uint32_t>* labels) {
   const int w = image.width, h = image.height;
-  std::vector<std::size_t> newly;
-  std::vector<glm::vec3> values;
-  for (int y = 0; y < h; ++y) {
+  // Each row's new texels found in parallel from the image as it was, then all written.
+  std::vector<std::vector<std::pair<std::size_t, glm::vec3>>> newly(static_cast<std::size_t>(h));
+  tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = image.index(x, y);
       if (filled[i]) continue;
@@ -61,17 +63,18 @@ std::size_t dilateOnce(Image& image, std::vector<uint8_t>& filled,
           ++count;
         }
       }
-      if (count > 0) {
-        newly.push_back(i);
-        values.push_back(sum / static_cast<float>(count));
-      }
+      if (count > 0)
+        newly[static_cast<std::size_t>(y)].emplace_back(i, sum / static_cast<float>(count));
     }
-  }
-  for (std::size_t k = 0; k < newly.size(); ++k) {
-    image.pixels[newly[k]] = values[k];
-    filled[newly[k]] = 1;
-  }
-  return newly.size();
+  });
+  std::size_t added = 0;
+  for (const auto& row : newly)
+    for (const auto& [i, value] : row) {
+      image.pixels[i] = value;
+      filled[i] = 1;
+      ++added;
+    }
+  return added;
 }
 
 std::size_t fillUnresolvedZeros(Image& image, const std::vector<uint8_t>& unresolved,
@@ -281,7 +284,8 @@ void denoise(Image& image, const DenoiseGuide& guide, Image* alongside) {
     const float sigmaPosition = static_cast<float>(step) * guide.texelSize;
     const float invTwoSigma2 =
         sigmaPosition > 0.0f ? 1.0f / (2 * sigmaPosition * sigmaPosition) : 0;
-    for (int y = 0; y < h; ++y) {
+    // Rows in parallel: each texel reads the last pass's values and writes only its own.
+    tbb::parallel_for(0, h, [&](int y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = image.index(x, y);
         if (guide.label[i] == 0) continue;
@@ -323,7 +327,7 @@ void denoise(Image& image, const DenoiseGuide& guide, Image* alongside) {
           nextVariance[i] = weight2Variance / (weightSum * weightSum);
         }
       }
-    }
+    });
     image = next;
     if (alongside) *alongside = nextAlongside;
     variance = nextVariance;

@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "scene/surface_rules.h"
 
 namespace bounce {
@@ -243,59 +245,83 @@ void turnTriangles(Mesh& mesh, const std::vector<uint8_t>& flip) {
       mesh.normals[v] = -mesh.normals[v];
 }
 
+// Which side of `shell` (of a mesh placed at the instances whose inverse transforms are
+// `toObject`) the sources light.
+struct LitSides {
+  bool inside = false, outside = false;
+};
+LitSides litSides(const Mesh& mesh, const Shell& shell, const std::vector<glm::dmat4>& toObject,
+                  const std::vector<Source>& sources) {
+  LitSides lit;
+  for (const glm::dmat4& objectOf : toObject)
+    for (const Source& source : sources) {
+      if (lit.inside && lit.outside) return lit;  // lit on both sides: decided
+      if (source.atInfinity) {
+        lit.outside = true;
+        continue;
+      }
+      const glm::dvec3 p(objectOf * glm::dvec4(source.position, 1.0));
+      if (glm::any(glm::lessThan(p, glm::dvec3(shell.lo))) ||
+          glm::any(glm::greaterThan(p, glm::dvec3(shell.hi)))) {
+        lit.outside = true;
+        continue;
+      }
+      const double w = std::abs(windingNumber(mesh, shell, p));
+      if (w > 0.25) lit.inside = true;
+      if (w < 0.75) lit.outside = true;
+    }
+  return lit;
+}
+
+// Mesh m's shells turned to their lit side; each mesh on its own, its shells in parallel (each
+// writes only its own triangles' flips).
+ShellOrientation orientMeshShells(Scene& scene, uint32_t m, const std::vector<Source>& sources) {
+  ShellOrientation result;
+  Mesh& mesh = scene.meshes[m];
+  if (materialOf(scene, mesh.material).isEmissive()) return result;  // its own light counts
+  std::vector<glm::dmat4> toObject;
+  for (const Instance& instance : scene.instances)
+    if (instance.mesh == m) toObject.push_back(glm::inverse(glm::dmat4(instance.transform)));
+  if (toObject.empty()) return result;
+  const std::vector<Shell> shells = closedShells(mesh);
+  result.closedShells = shells.size();
+  std::vector<uint8_t> flip(mesh.triangleCount(), 0);
+  std::vector<uint8_t> turned(shells.size(), 0);
+  tbb::parallel_for(std::size_t{0}, shells.size(), [&](std::size_t s) {
+    const Shell& shell = shells[s];
+    // Flat (two sheets back to back, no inside): nothing to decide.
+    const glm::dvec3 extent = glm::dvec3(shell.hi) - glm::dvec3(shell.lo);
+    if (!(std::abs(shell.volume) > 1e-9 * std::pow(glm::dot(extent, extent), 1.5))) return;
+    const LitSides lit = litSides(mesh, shell, toObject, sources);
+    if (lit.inside == lit.outside) return;  // lit on both sides, or on neither: as written
+    // Face the lit side: out when the sources are outside. The consistent orientation faces
+    // out when its signed volume is positive; each triangle's file winding may differ from it.
+    const bool reverseAll = lit.outside ? shell.volume < 0.0 : shell.volume > 0.0;
+    for (std::size_t k = 0; k < shell.triangles.size(); ++k) {
+      const bool reverse = (shell.reversed[k] != 0) != reverseAll;
+      flip[shell.triangles[k]] = reverse ? 1 : 0;
+      turned[s] = turned[s] || reverse;
+    }
+  });
+  result.turned = static_cast<std::size_t>(std::count(turned.begin(), turned.end(), 1));
+  if (result.turned > 0) turnTriangles(mesh, flip);
+  return result;
+}
+
 }  // namespace
 
 ShellOrientation orientClosedShells(Scene& scene) {
   ShellOrientation result;
   const std::vector<Source> sources = lightSources(scene);
   if (sources.empty()) return result;
-  for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-    Mesh& mesh = scene.meshes[m];
-    if (materialOf(scene, mesh.material).isEmissive()) continue;  // its own light counts
-    std::vector<glm::dmat4> toObject;
-    for (const Instance& instance : scene.instances)
-      if (instance.mesh == m) toObject.push_back(glm::inverse(glm::dmat4(instance.transform)));
-    if (toObject.empty()) continue;
-    const std::vector<Shell> shells = closedShells(mesh);
-    result.closedShells += shells.size();
-    std::vector<uint8_t> flip(mesh.triangleCount(), 0);
-    bool any = false;
-    for (const Shell& shell : shells) {
-      // Flat (two sheets back to back, no inside): nothing to decide.
-      const glm::dvec3 extent = glm::dvec3(shell.hi) - glm::dvec3(shell.lo);
-      if (!(std::abs(shell.volume) > 1e-9 * std::pow(glm::dot(extent, extent), 1.5))) continue;
-      bool inside = false, outside = false;
-      for (const glm::dmat4& objectOf : toObject)
-        for (const Source& source : sources) {
-          if (inside && outside) break;  // lit on both sides: decided
-          if (source.atInfinity) {
-            outside = true;
-            continue;
-          }
-          const glm::dvec3 p(objectOf * glm::dvec4(source.position, 1.0));
-          if (glm::any(glm::lessThan(p, glm::dvec3(shell.lo))) ||
-              glm::any(glm::greaterThan(p, glm::dvec3(shell.hi)))) {
-            outside = true;
-            continue;
-          }
-          const double w = std::abs(windingNumber(mesh, shell, p));
-          if (w > 0.25) inside = true;
-          if (w < 0.75) outside = true;
-        }
-      if (inside == outside) continue;  // lit on both sides, or on neither: as written
-      // Face the lit side: out when the sources are outside. The consistent orientation faces
-      // out when its signed volume is positive; each triangle's file winding may differ from it.
-      const bool reverseAll = outside ? shell.volume < 0.0 : shell.volume > 0.0;
-      bool turned = false;
-      for (std::size_t k = 0; k < shell.triangles.size(); ++k) {
-        const bool reverse = (shell.reversed[k] != 0) != reverseAll;
-        flip[shell.triangles[k]] = reverse ? 1 : 0;
-        turned = turned || reverse;
-      }
-      result.turned += turned ? 1 : 0;
-      any = any || turned;
-    }
-    if (any) turnTriangles(mesh, flip);
+  // Each mesh on its own (in parallel): it reads the scene and writes only itself.
+  std::vector<ShellOrientation> perMesh(scene.meshes.size());
+  tbb::parallel_for(std::size_t{0}, scene.meshes.size(), [&](std::size_t m) {
+    perMesh[m] = orientMeshShells(scene, static_cast<uint32_t>(m), sources);
+  });
+  for (const ShellOrientation& mesh : perMesh) {
+    result.closedShells += mesh.closedShells;
+    result.turned += mesh.turned;
   }
   return result;
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace bounce {
 namespace {
@@ -43,14 +44,16 @@ WorldTriangle worldTriangle(const Scene& scene, uint32_t i, uint32_t t) {
 // Static triangles in a bounding-box tree (median splits, small leaves): the receiving
 // triangles ask which triangles' boxes overlap theirs. A tree, not a grid: real scenes hold
 // dense clusters (a detailed object of 100k sub-millimetre triangles) next to room-sized quads.
+// The two halves of a node are built in parallel: its nodes are laid out in depth-first order
+// (the left child next, the right one after the left's subtree), so the tree, and the order in
+// which near() finds triangles, do not depend on the threads.
 class TriangleTree {
  public:
   explicit TriangleTree(std::vector<WorldTriangle> triangles) : triangles_(std::move(triangles)) {
     order_.reserve(triangles_.size());
     for (uint32_t i = 0; i < triangles_.size(); ++i) order_.push_back(i);
     if (order_.empty()) return;
-    nodes_.reserve(order_.size());  // at most 2⌈n/4⌉ − 1 nodes with leaves of 3 or 4
-    nodes_.resize(1);
+    nodes_.resize(nodeCount(static_cast<uint32_t>(order_.size())));
     build(0, 0, static_cast<uint32_t>(order_.size()));
   }
   const std::vector<WorldTriangle>& triangles() const { return triangles_; }
@@ -61,7 +64,8 @@ class TriangleTree {
     const glm::dvec3 a = lo - kOnPlane, b = hi + kOnPlane;
     std::vector<uint32_t> stack{0};
     while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
+      const uint32_t index = stack.back();
+      const Node& node = nodes_[index];
       stack.pop_back();
       if (glm::any(glm::lessThan(node.hi, a)) || glm::any(glm::greaterThan(node.lo, b))) continue;
       if (node.count > 0) {
@@ -71,8 +75,8 @@ class TriangleTree {
             found.push_back(order_[k]);
         }
       } else {
+        stack.push_back(index + 1);
         stack.push_back(node.first);
-        stack.push_back(node.first + 1);
       }
     }
     return found;
@@ -81,10 +85,17 @@ class TriangleTree {
  private:
   struct Node {
     glm::dvec3 lo{0.0}, hi{0.0};
-    uint32_t first = 0;  // leaf: into order_; inner: the left child (the right one follows)
+    uint32_t first = 0;  // leaf: into order_; inner: the right child (the left one follows it)
     uint32_t count = 0;  // triangles in a leaf, 0 for an inner node
   };
-  // Fills node `index` with triangles order_[from, to); children go to the end, side by side.
+  static constexpr uint32_t kLeafSize = 4;
+  // Below this many triangles a node's halves are built on the calling thread.
+  static constexpr uint32_t kParallelSize = 4096;
+  // Nodes of the tree over n triangles: leaves of at most kLeafSize, halves split at n / 2.
+  static uint32_t nodeCount(uint32_t n) {
+    return n <= kLeafSize ? 1 : 1 + nodeCount(n / 2) + nodeCount(n - n / 2);
+  }
+  // Fills node `index` with triangles order_[from, to), its subtree at the indices after it.
   void build(uint32_t index, uint32_t from, uint32_t to) {
     glm::dvec3 lo(1e300), hi(-1e300), clo(1e300), chi(-1e300);
     for (uint32_t k = from; k < to; ++k) {
@@ -94,7 +105,7 @@ class TriangleTree {
       clo = glm::min(clo, c), chi = glm::max(chi, c);
     }
     nodes_[index].lo = lo, nodes_[index].hi = hi;
-    if (to - from <= 4) {
+    if (to - from <= kLeafSize) {
       nodes_[index].first = from, nodes_[index].count = to - from;
       return;
     }
@@ -108,11 +119,15 @@ class TriangleTree {
                        return triangles_[p].lo[axis] + triangles_[p].hi[axis] <
                               triangles_[q].lo[axis] + triangles_[q].hi[axis];
                      });
-    const auto left = static_cast<uint32_t>(nodes_.size());
-    nodes_.resize(nodes_.size() + 2);
-    nodes_[index].first = left;
-    build(left, from, middle);
-    build(left + 1, middle, to);
+    const uint32_t right = index + 1 + nodeCount(middle - from);
+    nodes_[index].first = right;
+    if (to - from < kParallelSize) {
+      build(index + 1, from, middle);
+      build(right, middle, to);
+      return;
+    }
+    tbb::parallel_invoke([&] { build(index + 1, from, middle); },
+                         [&] { build(right, middle, to); });
   }
   std::vector<WorldTriangle> triangles_;
   std::vector<uint32_t> order_;
@@ -392,17 +407,23 @@ std::vector<Bary> withCrossingEnds(const WorldTriangle& t, const std::vector<Bar
 
 CrossingCuts cutAtCrossings(Scene& scene) {
   CrossingCuts result;
-  std::vector<WorldTriangle> all;
-  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    if (scene.instances[i].mobility != Mobility::Static) continue;
+  // Every static instance's triangles with an area, in instance order (each instance's in
+  // parallel).
+  std::vector<std::vector<WorldTriangle>> ofInstance(scene.instances.size());
+  tbb::parallel_for(uint32_t{0}, static_cast<uint32_t>(scene.instances.size()), [&](uint32_t i) {
+    if (scene.instances[i].mobility != Mobility::Static) return;
     const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
     for (uint32_t t = 0; t < mesh.triangleCount(); ++t) {
       WorldTriangle w = worldTriangle(scene, i, t);
       if (w.n != glm::dvec3(0.0) &&
           std::isfinite(w.lo.x + w.lo.y + w.lo.z + w.hi.x + w.hi.y + w.hi.z))
-        all.push_back(w);
+        ofInstance[i].push_back(w);
     }
-  }
+  });
+  std::vector<WorldTriangle> all;
+  for (std::vector<WorldTriangle>& triangles : ofInstance)
+    all.insert(all.end(), triangles.begin(), triangles.end());
+  ofInstance.clear();
   if (all.empty()) return result;
   const TriangleTree tree(all);
   std::vector<uint32_t> users(scene.meshes.size(), 0);

@@ -17,6 +17,8 @@
 #include <string>
 #include <string_view>
 
+#include <tbb/parallel_for.h>
+
 #include "io/load_error.h"
 #include "io/regular_file.h"
 #include "scene/file_name_case.h"
@@ -66,68 +68,112 @@ std::string readText(const std::filesystem::path& path) {
   return std::string(bytes.begin(), bytes.end());
 }
 
+using NumberKeywords = std::map<std::string_view, std::pair<int, int>>;
+
+// Why `line` is refused (empty when it is not): a control byte, or a statement of `keywords`
+// with the wrong count of numbers or one that is not finite or beyond maxAbs.
+std::string lineProblem(std::string_view line, const NumberKeywords& keywords, double maxAbs) {
+  for (const char c : line) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u == 0 || (u < 0x20 && c != '\t' && c != '\r'))
+      return "binary data (control byte " + std::to_string(u) + "); not a text file";
+  }
+  std::vector<std::string_view> tokens;
+  const std::string_view statement = line.substr(0, line.find('#'));  // a comment ends it
+  for (std::size_t i = 0; i < statement.size();) {
+    while (i < statement.size() &&
+           (statement[i] == ' ' || statement[i] == '\t' || statement[i] == '\r'))
+      ++i;
+    std::size_t j = i;
+    while (j < statement.size() && statement[j] != ' ' && statement[j] != '\t' &&
+           statement[j] != '\r')
+      ++j;
+    if (j > i) tokens.push_back(statement.substr(i, j - i));
+    i = j;
+  }
+  if (tokens.empty()) return {};
+  const auto it = keywords.find(tokens[0]);
+  if (it == keywords.end()) return {};
+  const auto [least, most] = it->second;
+  const int count = static_cast<int>(tokens.size()) - 1;
+  const std::string keyword(tokens[0]);
+  if (count < least || count > most) {
+    std::string reason = "'";  // appended, not a + b: g++ 12 warns wrongly on the sum
+    reason.append(keyword).append("' takes ").append(std::to_string(least));
+    if (least != most) reason.append("-").append(std::to_string(most));
+    return reason.append(" numbers, the line has ").append(std::to_string(count));
+  }
+  for (std::size_t t = 1; t < tokens.size(); ++t) {
+    double v = 0.0;
+    const char* first = tokens[t].data();
+    const char* last = first + tokens[t].size();
+    if (*first == '+') ++first;
+    const auto [ptr, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || ptr != last || !std::isfinite(v) || std::abs(v) > maxAbs) {
+      std::string reason = "'";
+      reason.append(tokens[t]).append("' in '").append(keyword).append("' is not a finite number");
+      if (std::isfinite(maxAbs))
+        reason.append(" within ±1e6 m, bounce's coordinate limit (docs/input_limits.md)");
+      return reason;
+    }
+  }
+  return {};
+}
+
+// The lines that begin in text[from, to) (to = text.size() + 1 takes the empty line after a
+// last line break too): how many, and the first refused one (its index among them) and why.
+struct LinesChecked {
+  std::size_t lines = 0;
+  std::size_t refused = 0;  // index of the first refused line, when `reason` is not empty
+  std::string reason;
+};
+LinesChecked checkLines(const std::string& text, std::size_t from, std::size_t to,
+                        const NumberKeywords& keywords, double maxAbs) {
+  LinesChecked checked;
+  for (std::size_t begin = from; begin < to; ++checked.lines) {
+    std::size_t end = text.find_first_of("\r\n", begin);
+    if (end == std::string::npos) end = text.size();
+    checked.reason =
+        lineProblem(std::string_view(text.data() + begin, end - begin), keywords, maxAbs);
+    if (!checked.reason.empty()) {
+      checked.refused = checked.lines;
+      return checked;
+    }
+    begin = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+  }
+  return checked;
+}
+
+// Bytes of text one task checks.
+constexpr std::size_t kCheckedPart = std::size_t{1} << 20;
+
 // tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999", "abc") as 0 and a
 // missing component as 0: OBJ and MTL statements with numbers are checked here first, so such
 // a value is a LoadError naming the line. Binary data (a NUL or other control byte) is refused.
 // `keywords` maps a statement to its least and most number of numeric arguments. Lines end as
 // tinyobjloader ends them: at "\n", "\r\n" or a lone "\r" (a statement after a lone "\r"
-// is one it reads, so it is one checked here).
+// is one it reads, so it is one checked here). The text is checked in parts of about
+// kCheckedPart bytes in parallel, each beginning after a "\n" (where a line begins); the first
+// refused line of the first part with one is the file's first, numbered by the lines before it.
 void checkNumbers(const std::filesystem::path& path, const std::string& text,
-                  const std::map<std::string_view, std::pair<int, int>>& keywords, double maxAbs) {
-  std::size_t lineNo = 0, begin = 0;
-  while (begin <= text.size()) {
-    std::size_t end = text.find_first_of("\r\n", begin);
-    if (end == std::string::npos) end = text.size();
-    ++lineNo;
-    const std::string_view line(text.data() + begin, end - begin);
-    const std::string where = "line " + std::to_string(lineNo);
-    for (const char c : line) {
-      const auto u = static_cast<unsigned char>(c);
-      if (u == 0 || (u < 0x20 && c != '\t' && c != '\r'))
-        throw LoadError(path, where + ": binary data (control byte " + std::to_string(u) +
-                                  "); not a text file");
-    }
-    std::vector<std::string_view> tokens;
-    const std::string_view statement = line.substr(0, line.find('#'));  // a comment ends it
-    for (std::size_t i = 0; i < statement.size();) {
-      while (i < statement.size() &&
-             (statement[i] == ' ' || statement[i] == '\t' || statement[i] == '\r'))
-        ++i;
-      std::size_t j = i;
-      while (j < statement.size() && statement[j] != ' ' && statement[j] != '\t' &&
-             statement[j] != '\r')
-        ++j;
-      if (j > i) tokens.push_back(statement.substr(i, j - i));
-      i = j;
-    }
-    if (!tokens.empty()) {
-      if (const auto it = keywords.find(tokens[0]); it != keywords.end()) {
-        const auto [least, most] = it->second;
-        const int count = static_cast<int>(tokens.size()) - 1;
-        if (count < least || count > most) {
-          throw LoadError(path, where + ": '" + std::string(tokens[0]) + "' takes " +
-                                    std::to_string(least) +
-                                    (least == most ? "" : "-" + std::to_string(most)) +
-                                    " numbers, the line has " + std::to_string(count));
-        }
-        for (std::size_t t = 1; t < tokens.size(); ++t) {
-          double v = 0.0;
-          const char* first = tokens[t].data();
-          const char* last = first + tokens[t].size();
-          if (*first == '+') ++first;
-          const auto [ptr, ec] = std::from_chars(first, last, v);
-          if (ec != std::errc() || ptr != last || !std::isfinite(v) || std::abs(v) > maxAbs) {
-            throw LoadError(
-                path, where + ": '" + std::string(tokens[t]) + "' in '" + std::string(tokens[0]) +
-                          "' is not a finite number" +
-                          (std::isfinite(maxAbs) ? " within ±1e6 m, bounce's coordinate "
-                                                   "limit (docs/input_limits.md)"
-                                                 : ""));
-          }
-        }
-      }
-    }
-    begin = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+                  const NumberKeywords& keywords, double maxAbs) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t at = kCheckedPart; at < text.size(); at = starts.back() + kCheckedPart) {
+    const std::size_t lineBreak = text.find('\n', at);
+    if (lineBreak == std::string::npos) break;
+    starts.push_back(lineBreak + 1);
+  }
+  std::vector<LinesChecked> parts(starts.size());
+  tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t p) {
+    const std::size_t to = p + 1 < starts.size() ? starts[p + 1] : text.size() + 1;
+    parts[p] = checkLines(text, starts[p], to, keywords, maxAbs);
+  });
+  std::size_t linesBefore = 0;
+  for (const LinesChecked& part : parts) {
+    if (!part.reason.empty())
+      throw LoadError(
+          path, "line " + std::to_string(linesBefore + part.refused + 1) + ": " + part.reason);
+    linesBefore += part.lines;
   }
 }
 

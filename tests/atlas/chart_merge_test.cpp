@@ -8,6 +8,9 @@
 #include <set>
 #include <string>
 
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "atlas/atlas.h"
@@ -128,6 +131,45 @@ TEST(AtlasMerge, TubesPleatsAndPlanksBecomeOneChartBoxesKeepTheirFaces) {
     EXPECT_GE(charts.lowestDensity, 0.5) << names[i];
     EXPECT_LE(charts.highestDensity, 2.0) << names[i];
   }
+}
+
+// The merge pass is serial by definition (smallest chart first, each choice made on the charts as
+// the earlier merges left them); it runs as windows of choices made in parallel and carried out in
+// order (chart_merge.cpp). One instance whose small charts merge into one another in chains, so
+// that choices in one window go stale: 200 pleats 1 cm wide folded by 50° (each narrow, each
+// joining its neighbour) and a sphere of radius 15 cm in 16 × 32 facets at 5 cm texels (tiny
+// charts). In a one-thread arena the window is one chart, the serial pass itself; in an
+// eight-thread arena eight: the same charts, bit for bit.
+TEST(AtlasMerge, WindowsOfParallelChoicesGiveTheSerialPassesCharts) {
+  Scene scene;
+  const uint32_t pleats = addPleatedMesh(scene, 200, 0.01f);
+  const uint32_t sphere = addSphereMesh(scene, 16, 32);
+  Mesh both = scene.meshes[pleats];
+  const Mesh& ball = scene.meshes[sphere];
+  const auto first = static_cast<uint32_t>(both.positions.size());
+  for (const glm::vec3& p : ball.positions)
+    both.positions.push_back(p * 0.15f + glm::vec3(0, 2, 0));
+  for (const uint32_t v : ball.indices) both.indices.push_back(first + v);
+  scene.meshes.clear();
+  addInstance(scene, addMesh(scene, std::move(both)), glm::mat4(1.0f));
+  AtlasSettings settings;
+  settings.texelSize = kTexel;
+  settings.minLightmapFill = 0.0;  // keep the lightmap whatever its fill
+  // Eight threads allowed whatever the machine's cores, so the window is eight in that arena.
+  const tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 8);
+  const auto layOut = [&](int threads) {
+    Atlas atlas;
+    tbb::task_arena(threads).execute([&] { atlas = buildAtlas(scene, settings); });
+    return atlas;
+  };
+  const Atlas serial = layOut(1), windowed = layOut(8);
+  EXPECT_EQ(regionProblem(scene, serial), "");
+  std::printf("%d charts\n", serial.layout.chartCount);
+  ASSERT_EQ(serial.layout.instances.size(), 1u);
+  ASSERT_EQ(windowed.layout.instances.size(), 1u);
+  EXPECT_EQ(serial.layout.chartCount, windowed.layout.chartCount);
+  EXPECT_TRUE(serial.triangleChart[0] == windowed.triangleChart[0]);
+  EXPECT_TRUE(serial.layout.instances[0].cornerUv == windowed.layout.instances[0].cornerUv);
 }
 
 }  // namespace bounce::test

@@ -2,6 +2,7 @@
 // and nothing else changes.
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/closed_shells.h"
@@ -76,6 +77,34 @@ TEST(ClosedShells, InsideOutBoxLitFromOutsideIsTurnedOutwards) {
   EXPECT_EQ(result.closedShells, 1u);
   EXPECT_EQ(result.turned, 1u);
   EXPECT_EQ(facing(scene.meshes[0], {0.0f, 0.45f, 0.0f}), 1);
+}
+
+// Meshes are judged each on its own (in parallel) and their shells too: 8 meshes of 4 boxes
+// each, every other box inside out, a light above them all; oriented in a 4-thread arena, each
+// mesh's inside-out boxes, and only those, are turned.
+TEST(ClosedShells, EveryShellOfManyMeshesIsJudgedOnItsOwn) {
+  std::vector<Mesh> meshes(8);
+  const auto centre = [](int m, int b) { return glm::vec3(m, 0.5f, b); };
+  for (int m = 0; m < 8; ++m)
+    for (int b = 0; b < 4; ++b)
+      addBox(meshes[m], centre(m, b) - 0.2f, centre(m, b) + 0.2f, b % 2 == 0);
+  Scene scene = sceneWith(std::move(meshes));
+  scene.lights.push_back(pointAt({3.5f, 5.0f, 1.5f}));
+  ShellOrientation result;
+  tbb::task_arena(4).execute([&] { result = orientClosedShells(scene); });
+  EXPECT_EQ(result.closedShells, 32u);
+  EXPECT_EQ(result.turned, 16u);
+  for (int m = 0; m < 8; ++m)
+    for (int b = 0; b < 4; ++b) {
+      Mesh box;  // the box's own 12 triangles, as the mesh holds them now
+      const Mesh& mesh = scene.meshes[m];
+      for (int k = 0; k < 36; ++k) {
+        box.indices.push_back(static_cast<uint32_t>(box.positions.size()));
+        box.positions.push_back(mesh.positions[mesh.indices[36 * b + k]]);
+        box.normals.push_back(mesh.normals[mesh.indices[36 * b + k]]);
+      }
+      EXPECT_EQ(facing(box, centre(m, b)), 1) << "mesh " << m << ", box " << b;
+    }
 }
 
 TEST(ClosedShells, BoxWoundHalfInwardsIsWoundOutwardsWhole) {

@@ -229,6 +229,36 @@ TEST(InputValidation, ObjNumbersThatAreNotFinite) {
   }
 }
 
+// The number check runs over parts of about 1 MiB in parallel (obj_load.cpp), each from a line
+// after a "\n": a refused line is still named by its number in the whole file. 3 MiB of vertices
+// whose lines end in "\n", "\r\n" and a lone "\r" in turn (each a line break to tinyobjloader);
+// a bad number in the second MiB and another in the third: the first is named, then, alone, the
+// second, and without either the file loads.
+TEST(InputValidation, ObjNumberCheckNamesTheLineInALargeFile) {
+  TempDir dir;
+  const char* endings[] = {"\n", "\r\n", "\r"};
+  const std::size_t lines = 200000;  // about 16 bytes each
+  const std::size_t first = 90000, second = 170000;
+  const auto write = [&](bool withFirst, bool withSecond) {
+    std::string text;
+    for (std::size_t k = 0; k < lines; ++k) {
+      text += (withFirst && k == first)     ? "v nan 0.25 0.5"
+              : (withSecond && k == second) ? "v 0.125 0.25 inf"
+                                            : "v 0.125 0.25 0.5";
+      text += endings[k % 3];
+    }
+    text += "f 1 2 3\n";
+    ASSERT_GT(text.size(), std::size_t{3} << 20);
+    test::writeText(dir / "big.obj", text);
+  };
+  write(true, true);
+  expectLoadError(dir / "big.obj", "line " + std::to_string(first + 1) + ": 'nan' in 'v'");
+  write(false, true);
+  expectLoadError(dir / "big.obj", "line " + std::to_string(second + 1) + ": 'inf' in 'v'");
+  write(false, false);
+  EXPECT_NO_THROW(loadScene(dir / "big.obj"));
+}
+
 TEST(InputValidation, RandomBytesNamedObj) {
   // 64 KiB of random bytes rendered a black image with exit status 0.
   TempDir dir;
