@@ -163,10 +163,9 @@ void GpuScene::uploadEmitters() {
     const bool fits =
         outline && lights.triangles.size() + lights.lights.size() + outlineRows <= rowLimit;
     const EmitterTriangle& triangle = lights.triangles[light.first];
-    table.emplace_back(static_cast<float>(light.first),
-                       static_cast<float>(light.first + light.count),
-                       light.bakeDirect ? 1.0f : 0.0f,
-                       fits ? static_cast<float>(outline->size()) : 0.0f);
+    table.emplace_back(
+        static_cast<float>(light.first), static_cast<float>(light.first + light.count),
+        light.bakeDirect ? 1.0f : 0.0f, fits ? static_cast<float>(outline->size()) : 0.0f);
     table.emplace_back(light.normal, static_cast<float>(corners.size()));
     table.emplace_back(triangle.radiance, triangle.doubleSided ? 1.0f : 0.0f);
     table.emplace_back(0.0f);
