@@ -1,7 +1,10 @@
 #include "bake_scenes.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace bounce::test {
 
@@ -82,6 +85,13 @@ LightmapBakeSettings testBakeSettings(int spp, uint32_t seed, int threads) {
   settings.irradiance.threads = threads;
   settings.leak.threads = threads;
   return settings;
+}
+
+void expectSameLightmap(const LightmapBake& a, const LightmapBake& b) {
+  ASSERT_EQ(a.irradiance.pixels.size(), b.irradiance.pixels.size());
+  EXPECT_EQ(0, std::memcmp(a.irradiance.pixels.data(), b.irradiance.pixels.data(),
+                           a.irradiance.pixels.size() * sizeof(glm::vec3)));
+  EXPECT_EQ(a.samples, b.samples);
 }
 
 }  // namespace bounce::test

@@ -52,6 +52,10 @@ struct ClosedFurnace {
   }
 };
 
+// Two bakes of one map are the same bytes: the irradiance bit for bit and the same samples per
+// texel (the determinism tests: thread counts, tile sizes).
+void expectSameLightmap(const LightmapBake& a, const LightmapBake& b);
+
 // A 1 m room lit by a small lamp in one corner of the ceiling, with a board casting shadow:
 // texels near the lamp are bright, the far corners under the board dim (≈ 50× apart).
 void buildCornerLampRoom(World& world);
