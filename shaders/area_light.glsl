@@ -126,25 +126,42 @@ vec3 outlineIrradiance(int light, int k, vec3 p, vec3 n) {
 // (baked_visibility.glsl; times the dynamic instances' own cube when the light has one), else
 // from its shadow map when it has one (shadow_area.glsl), else 1
 // (ng: the receiver's geometric normal; baked: the bake's texels around its lightmap UV).
-vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked) {
+// `fromTexels`: the static lights' V_l · E_l is read from the lightmap's texels instead
+// (lightmap.glsl, render/area_direct_texels.h), so such a light is evaluated here only when a
+// dynamic caster shadows it, as the correction V_l · E_l · (s − 1), s its cube's visible
+// fraction: a static pixel pays for what moves, not for the static lights.
+vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked,
+                    bool fromTexels) {
   vec3 irradiance = vec3(0.0);
   int count = lights.all ? uAreaLightCount : lights.areaCount;
-  for (int k = 0; k < count; ++k) {
-    gCostLights += 1;
+  // Lists ascend and the static lights have the first indices: walked from the end, the first
+  // static light in the texels ends the walk when no dynamic caster needs a correction, so the
+  // loop runs over the dynamic lights only (a shader runs a loop until every lane has left it).
+  bool staticInTexels = fromTexels && uHasBakedVisibility && !uAreaDynamicShadows;
+  for (int k = count - 1; k >= 0; --k) {
     int l = areaLightIndex(lights, k);  // its own row: baked visibility and shadows by index
+    if (staticInTexels && l < uBakedLightCount) break;
     vec4 rows = texelFetch(uEmitters, ivec2(0, uEmitterCount + l), 0);
     if (rows.z > 0.5 && uHasBake) continue;
+    bool visibilityBaked = uHasBakedVisibility && l < uBakedLightCount;
+    bool inTexels = fromTexels && visibilityBaked;
+    int slot = areaShadowSlot(int(rows.x));
+    bool dynamicShadow = uAreaDynamicShadows && slot >= 0;
+    if (inTexels && !dynamicShadow) continue;  // all of it is in the texels
+    gCostLights += 1;
     vec3 e = vec3(0.0);
     if (rows.w > 0.5)
       e = outlineIrradiance(l, int(rows.w), p, n);
     else
       for (int i = int(rows.x); i < int(rows.y); ++i) e += emitterTriangleIrradiance(i, p, n);
     if (e == vec3(0.0)) continue;
-    int slot = areaShadowSlot(int(rows.x));
-    if (uHasBakedVisibility && l < uBakedLightCount) {
+    if (visibilityBaked) {
       // The static occluders are baked; the dynamic ones come from their own cubes.
       e *= bakedVisibility(baked, l, true);
-      if (uAreaDynamicShadows && slot >= 0) e *= areaVisibility(slot, p, ng, true);
+      if (dynamicShadow) {
+        float s = areaVisibility(slot, p, ng, true);
+        e *= inTexels ? s - 1.0 : s;
+      }
     } else if (slot >= 0) {
       e *= areaVisibility(slot, p, ng, false);
     }

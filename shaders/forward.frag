@@ -95,8 +95,12 @@ void main() {
     if (uHasBakedVisibility)
       baked = uHasCornerVisibility ? cornerVisibilityTexels(vTriangle, vCornerWeights)
                                    : bakedVisibilityTexels(lightmapUv, uLightmapSize);
+    // A lightmapped front face reads the static area lights' direct light from the texels (a
+    // back face of a double-sided surface is not the side they were computed for).
+    bool areaTexels = uAreaDirectFromTexels && gl_FrontFacing;
     direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked) +
-             areaIrradiance(lights, vWorldPosition, n, ng, baked);
+             areaIrradiance(lights, vWorldPosition, n, ng, baked, areaTexels);
+    if (areaTexels) direct += areaDirectFromTexels(lightmapUv, n);
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);

@@ -180,7 +180,7 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 
 void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
-  p.lightmap.attach(bake, p.scene);
+  p.lightmap.attach(bake, p.scene, settings_.areaDirectTexels);
   p.probes.attach(bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{},
                   p.scene.instances().size(), p.lightmap.hasBakedVisibility());
   std::vector<uint8_t> cornerVisibility(p.scene.instances().size(), 0);

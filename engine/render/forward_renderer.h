@@ -69,6 +69,10 @@ struct RendererSettings {
   // false: the static instances without a lightmap region take the VPLs' light even when the
   // bake has irradiance probes for them, as before the probes (bounce-render --no-probes).
   bool probes = true;
+  // true: with a bake that holds the static area lights' visibility, their direct light on the
+  // lightmapped surfaces is computed once per lightmap texel (area_direct_texels.h) and read
+  // there; false: evaluated per pixel (bounce-render --live-area-lights).
+  bool areaDirectTexels = true;
 };
 
 class ForwardRenderer {

@@ -51,6 +51,8 @@ class GpuScene {
   void setLightmapUv(std::size_t index, std::span<const glm::vec2> cornerUv);
 
   std::span<const GpuInstance> instances() const { return instances_; }
+  // The scene it was made from (static instances stand at its transforms).
+  const Scene& source() const { return scene_; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   // World bounds of every instance (metres); empty for an empty scene.
   Box bounds() const;

@@ -30,6 +30,10 @@ struct TextureUnit {
   // sampler2DArray: the area-light cubes of the dynamic instances alone, for static receivers
   // whose static shadows are baked (area_shadow_maps.h).
   static constexpr int kAreaDynamicShadow0 = 17;
+  // sampler2D: the static area lights' direct irradiance per lightmap texel (lightmap.glsl,
+  // area_direct_texels.h). On a driver without it LightmapPass leaves it out: those lights are
+  // evaluated per pixel, as without a bake.
+  static constexpr int kAreaDirect = 18;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

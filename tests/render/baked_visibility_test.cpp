@@ -1,7 +1,13 @@
 // The renderer's baked visibility of static area lights (shaders/baked_visibility.glsl) against
 // closed forms, on synthetic bakes: a floor texel's V multiplies the light's exact polygon
 // irradiance; a light the texel does not name reads its "every other light" slot, else 1; the
-// atlas is read the right way up; dynamic instances never read it.
+// atlas is read the right way up; dynamic instances never read it. Each case is drawn both ways
+// a lightmapped pixel can get the light: evaluated per pixel (--live-area-lights) and read from
+// the texels' irradiance vectors (render/area_direct_texels.h). The texels interpolate E
+// bilinearly: a panel at height d = 0.6 m gives E ≈ E₀ (1 + r²/d²)⁻², whose relative curvature
+// is at most 4/d² ≈ 11 m⁻² along each axis, so over texels of h = 1/32 m the interpolation is
+// off by at most 2 · h²/8 · 11 ≈ 2.7e-3 of E; the texel path's tolerance is 3e-3, the live
+// one's 1e-3.
 #include <gtest/gtest.h>
 
 #include "lightmap_scenes.h"
@@ -50,11 +56,18 @@ Bake visibilityBake(const Scene& scene, Record record) {
   return bake;
 }
 
-Image renderDirect(const Scene& scene, const Bake* bake) {
+constexpr bool kBothPaths[] = {false, true};  // areaDirectTexels
+
+float tolerance(bool texels) {
+  return texels ? 3e-3f : 1e-3f;
+}
+
+Image renderDirect(const Scene& scene, const Bake* bake, bool texels = false) {
   testContext();
   RendererSettings settings;
   settings.mode = RenderMode::Direct;
   settings.shadows.enabled = false;
+  settings.areaDirectTexels = texels;
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, bake);
   return renderer.renderImage(downCamera(1.0f), kSize, kSize);
 }
@@ -83,20 +96,22 @@ TEST(BakedVisibility, ATexelsVisibleFractionScalesTheLightsExactIrradiance) {
   } cases[] = {{"named, V = 0.25", named(0, 0.25f), 0.25f},
                {"every other light, V = 0.5", named(kOtherLights, 0.5f), 0.5f},
                {"not named, no other slot: V = 1", named(kNoLight, 0.0f), 1.0f}};
-  for (const auto& c : cases) {
-    const Bake bake = visibilityBake(scene, [&](int, int) { return c.record; });
-    const Image baked = renderDirect(scene, &bake);
-    int checked = 0;
-    for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) {
-        if (!floorPixel(x, y)) continue;
-        const glm::vec3 a = baked.at(x, y), b = open.at(x, y);
-        ASSERT_GT(b.r, 0.0f);
-        EXPECT_NEAR(a.r / b.r, c.expected, 1e-3f) << c.what << " at " << x << "," << y;
-        ++checked;
-      }
-    EXPECT_GT(checked, 100);
-  }
+  for (const bool texels : kBothPaths)
+    for (const auto& c : cases) {
+      const Bake bake = visibilityBake(scene, [&](int, int) { return c.record; });
+      const Image baked = renderDirect(scene, &bake, texels);
+      int checked = 0;
+      for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+          if (!floorPixel(x, y)) continue;
+          const glm::vec3 a = baked.at(x, y), b = open.at(x, y);
+          ASSERT_GT(b.r, 0.0f);
+          EXPECT_NEAR(a.r / b.r, c.expected, tolerance(texels))
+              << c.what << (texels ? " (texels)" : " (live)") << " at " << x << "," << y;
+          ++checked;
+        }
+      EXPECT_GT(checked, 100);
+    }
 }
 
 // Two panels side by side over the floor (area lights 0 and 1 in scene/area_lights.h's order:
@@ -152,22 +167,25 @@ TEST(BakedVisibility, EachLightReadsItsOwnVisibilityOfTwo) {
 
   const Image only0 = renderDirect(panels(true, false), nullptr);
   const Image only1 = renderDirect(panels(false, true), nullptr);
-  const Image baked = renderDirect(scene, &bake);
-  int checked = 0, bothLit = 0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const float fx = (x + 0.5f) / kSize - 0.5f, fy = (y + 0.5f) / kSize - 0.5f;
-      if (std::max(std::abs(fx), std::abs(fy)) > 0.4f) continue;  // the frame's border
-      const glm::vec3 e0 = only0.at(x, y), e1 = only1.at(x, y);
-      const glm::vec3 expected = 0.2f * e0 + 0.7f * e1;
-      for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(baked.at(x, y)[c], expected[c], 1e-3f * expected[c] + 1e-7f)
-            << "pixel " << x << "," << y << " channel " << c;
-      ++checked;
-      bothLit += e0.g > 0.0f && e1.g > 0.0f;
-    }
-  EXPECT_GT(checked, 300);
-  EXPECT_GT(bothLit, 300);
+  for (const bool texels : kBothPaths) {
+    const Image baked = renderDirect(scene, &bake, texels);
+    int checked = 0, bothLit = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const float fx = (x + 0.5f) / kSize - 0.5f, fy = (y + 0.5f) / kSize - 0.5f;
+        if (std::max(std::abs(fx), std::abs(fy)) > 0.4f) continue;  // the frame's border
+        const glm::vec3 e0 = only0.at(x, y), e1 = only1.at(x, y);
+        const glm::vec3 expected = 0.2f * e0 + 0.7f * e1;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(baked.at(x, y)[c], expected[c], tolerance(texels) * expected[c] + 1e-7f)
+              << "pixel " << x << "," << y << " channel " << c
+              << (texels ? " (texels)" : " (live)");
+        ++checked;
+        bothLit += e0.g > 0.0f && e1.g > 0.0f;
+      }
+    EXPECT_GT(checked, 300);
+    EXPECT_GT(bothLit, 300);
+  }
 }
 
 // Texels with x < kSize/2 (the floor's x < 0) hold V = 0, the rest V = 1: the left of the frame
@@ -177,19 +195,21 @@ TEST(BakedVisibility, TheAtlasIsReadWhereTheFloorIs) {
   const Image open = renderDirect(scene, nullptr);
   const Bake bake =
       visibilityBake(scene, [](int x, int) { return named(0, x < kSize / 2 ? 0.0f : 1.0f); });
-  const Image baked = renderDirect(scene, &bake);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      if (!floorPixel(x, y)) continue;
-      const float fx = (x + 0.5f) / kSize - 0.5f;
-      const float ratio = baked.at(x, y).g / open.at(x, y).g;
-      // The camera sees ±0.42 m across 32 pixels (1.3 cm each); texels are 3.1 cm.
-      if (fx < -0.04f) {
-        EXPECT_NEAR(ratio, 0.0f, 1e-3f) << x << "," << y;
-      } else if (fx > 0.04f) {
-        EXPECT_NEAR(ratio, 1.0f, 1e-3f) << x << "," << y;
+  for (const bool texels : kBothPaths) {
+    const Image baked = renderDirect(scene, &bake, texels);
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (!floorPixel(x, y)) continue;
+        const float fx = (x + 0.5f) / kSize - 0.5f;
+        const float ratio = baked.at(x, y).g / open.at(x, y).g;
+        // The camera sees ±0.42 m across 32 pixels (1.3 cm each); texels are 3.1 cm.
+        if (fx < -0.04f) {
+          EXPECT_NEAR(ratio, 0.0f, tolerance(texels)) << x << "," << y;
+        } else if (fx > 0.04f) {
+          EXPECT_NEAR(ratio, 1.0f, tolerance(texels)) << x << "," << y;
+        }
       }
-    }
+  }
 }
 
 // An emitter whose material is marked bakeDirect is drawn live without a bake and skipped with
@@ -199,16 +219,85 @@ TEST(BakedVisibility, ABakedDirectEmitterIsNotDrawnLiveOnceABakeIsAttached) {
   scene.materials[scene.meshes[1].material].bakeDirect = true;
   const Image live = renderDirect(scene, nullptr);
   const Bake bake = visibilityBake(scene, [](int, int) { return named(0, 1.0f); });
-  const Image baked = renderDirect(scene, &bake);
+  for (const bool texels : kBothPaths) {
+    const Image baked = renderDirect(scene, &bake, texels);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (!floorPixel(x, y)) continue;
+        EXPECT_GT(live.at(x, y).r, 0.0f);
+        EXPECT_EQ(baked.at(x, y), glm::vec3(0.0f)) << x << "," << y;
+        ++checked;
+      }
+    EXPECT_GT(checked, 100);
+  }
+}
+
+// Smooth normals that turn 60° across the floor (±30° about z at x = ±½), under a panel 1.5 m
+// up (above the camera), read through 12.5 cm texels with V = 1: the texel path must follow each
+// pixel's normal. Against the live frame: bilinear interpolation of the position is off by at
+// most 2 · h²/8 · 4/d² ≈ 0.7 % (as above, d = 1.5 m, h = 1/8 m) and n·F_c is exact at any normal
+// whose horizon keeps the whole panel (all here); a normal off the texel's by half a texel's
+// turn (0.065 rad) changes E by up to tan 30° · 0.065 ≈ 3.8 %. Tolerance 1 %. Injected: texels
+// holding E(n_t) along n_t (a scalar lightmap of the direct light): fails.
+TEST(BakedVisibility, TexelsFollowTheShadingNormalWithinATexel) {
+  Scene scene = floorUnderPanel();
+  Mesh& floor = scene.meshes[0];
+  for (std::size_t i = 0; i < floor.positions.size(); ++i) {
+    const float angle = floor.positions[i].x * glm::radians(60.0f);  // ±30° at x = ±½
+    floor.normals[i] = glm::vec3(std::sin(angle), std::cos(angle), 0.0f);
+  }
+  Mesh& panel = scene.meshes[1];
+  for (glm::vec3& p : panel.positions) p.y = 1.5f;
+  constexpr int kTexels = 8;
+  Bake bake;
+  bake.layout.width = bake.layout.height = kTexels;
+  bake.layout.texelSize = 1.0f / kTexels;
+  bake.layout.instances = {unitFloorRegion(scene)};
+  bake.irradiance = Image(kTexels, kTexels);
+  bake.manifest = minimalManifest(scene);
+  BakedVisibility v;
+  v.width = v.height = kTexels;
+  v.lightCount = 1;
+  v.texels.assign(kTexels * kTexels, named(0, 1.0f));
+  bake.visibility = v;
+  const Image live = renderDirect(scene, &bake, false);
+  const Image texels = renderDirect(scene, &bake, true);
   int checked = 0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      if (!floorPixel(x, y)) continue;
-      EXPECT_GT(live.at(x, y).r, 0.0f);
-      EXPECT_EQ(baked.at(x, y), glm::vec3(0.0f)) << x << "," << y;
+      const float fx = (x + 0.5f) / kSize - 0.5f, fy = (y + 0.5f) / kSize - 0.5f;
+      if (std::max(std::abs(fx), std::abs(fy)) > 0.4f) continue;  // the frame's border
+      const glm::vec3 a = texels.at(x, y), b = live.at(x, y);
+      ASSERT_GT(b.b, 0.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(a[c], b[c], 0.01f * b[c]) << "pixel " << x << "," << y << " channel " << c;
       ++checked;
     }
-  EXPECT_GT(checked, 100);
+  EXPECT_GT(checked, 500);
+}
+
+// The cost view's light count on the lightmapped floor: the panel evaluated per pixel when live,
+// never when its light comes from the texels (what a static surface of a baked scene pays).
+TEST(BakedVisibility, ALightmappedPixelEvaluatesNoStaticAreaLightWithTexels) {
+  const Scene scene = floorUnderPanel();
+  const Bake bake = visibilityBake(scene, [](int, int) { return named(0, 1.0f); });
+  testContext();
+  for (const bool texels : kBothPaths) {
+    RendererSettings settings;
+    settings.mode = RenderMode::Cost;
+    settings.areaDirectTexels = texels;
+    ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+    const Image counts = renderer.renderImage(downCamera(1.0f), kSize, kSize);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (!floorPixel(x, y)) continue;
+        EXPECT_EQ(counts.at(x, y).r, texels ? 0.0f : 1.0f) << x << "," << y;
+        ++checked;
+      }
+    EXPECT_GT(checked, 100);
+  }
 }
 
 // The area cubes are drawn only when something reads them: not when every instance has baked

@@ -1,0 +1,99 @@
+// GL-free: the static area lights' irradiance vectors per lightmap texel
+// (render/area_direct_texels.h) on a floor whose region fills the middle of a 32² atlas, under an
+// off-centre panel of unequal RGB radiance, every texel's visibility V = 0.4 for it. A covered
+// texel holds V·F_c with n·F_c the exact irradiance (Lambert's formula written apart,
+// support/polygon_form_factor.h) at the floor point its centre maps to; a texel within one texel
+// of the region holds the same at the region's nearest point (what a bilinear tap reads); one
+// further out holds nothing.
+#include "render/area_direct_texels.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "scene/area_lights.h"
+#include "support/polygon_form_factor.h"
+#include "test_scenes.h"
+
+namespace bounce::test {
+namespace {
+
+constexpr int kSize = 32;
+constexpr float kV = 0.4f;
+
+Scene floorUnderOffCentrePanel() {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.6f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+  Material panel;
+  panel.name = "panel";
+  panel.emission = glm::vec3(3.0f, 2.0f, 1.0f);
+  addQuad(scene, {0.1f, 0.5f, -0.4f}, {0.3f, 0, 0}, {0, 0, 0.2f}, panel);  // faces −y
+  return scene;
+}
+
+// The floor's point (x, 0, z) at atlas texel coordinates s (texels): u = ¼ + ½(x + ½), likewise
+// v with z, so the floor covers texels [8, 24) both ways.
+glm::vec3 floorPoint(glm::vec2 s) {
+  const glm::vec2 uv = s / static_cast<float>(kSize);
+  return {(uv.x - 0.25f) / 0.5f - 0.5f, 0.0f, (uv.y - 0.25f) / 0.5f - 0.5f};
+}
+
+glm::vec3 exactIrradiance(const Scene& scene, glm::vec3 p) {
+  const Mesh& panel = scene.meshes[1];
+  std::vector<glm::dvec3> polygon;
+  for (const glm::vec3& v : panel.positions) polygon.emplace_back(v);
+  const double f = std::abs(polygonFormFactor(polygon, glm::dvec3(p), glm::dvec3(0, 1, 0)));
+  return scene.materials[1].emission * static_cast<float>(std::numbers::pi * f);
+}
+
+TEST(AreaDirectTexels, EachTexelHoldsVTimesTheExactIrradianceVectorOfItsNearestPoint) {
+  const Scene scene = floorUnderOffCentrePanel();
+  LightmapLayout layout;
+  layout.width = layout.height = kSize;
+  InstanceLightmapUv region{0, {}};
+  const Mesh& floor = scene.meshes[0];
+  for (uint32_t index : floor.indices)
+    region.cornerUv.push_back(
+        0.25f + 0.5f * glm::vec2(floor.positions[index].x + 0.5f, floor.positions[index].z + 0.5f));
+  layout.instances = {region};
+  BakedVisibility visibility;
+  visibility.width = visibility.height = kSize;
+  visibility.lightCount = 1;
+  TexelVisibility record;
+  record.light[0] = 0;
+  record.visible[0] = kV;
+  visibility.texels.assign(kSize * kSize, record);
+  const AreaLightSet lights = sceneAreaLights(scene);
+  ASSERT_EQ(lights.lights.size(), 1u);
+
+  const std::vector<glm::vec3> f = areaDirectTexels(scene, layout, visibility, lights, 1);
+  ASSERT_EQ(f.size(), 3u * kSize * kSize);
+  int covered = 0, ring = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t t = static_cast<std::size_t>(y * kSize + x);
+      // n = +y: E_c = F_c.y.
+      const glm::vec3 e(f[t].y, f[kSize * kSize + t].y, f[2 * kSize * kSize + t].y);
+      const glm::vec2 centre(x + 0.5f, y + 0.5f);
+      const glm::vec2 nearest = glm::clamp(centre, glm::vec2(8.0f), glm::vec2(24.0f));
+      const glm::vec2 off = glm::abs(centre - nearest);
+      if (std::max(off.x, off.y) >= 1.0f) {
+        EXPECT_EQ(e, glm::vec3(0.0f)) << "texel " << x << "," << y << " is beyond every tap";
+        continue;
+      }
+      const glm::vec3 expected = kV * exactIrradiance(scene, floorPoint(nearest));
+      ASSERT_GT(expected.b, 0.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(e[c], expected[c], 1e-4f * expected[c]) << "texel " << x << "," << y;
+      covered += off == glm::vec2(0.0f);
+      ring += off != glm::vec2(0.0f);
+    }
+  EXPECT_EQ(covered, 16 * 16);
+  EXPECT_EQ(ring, 18 * 18 - 16 * 16);
+}
+
+}  // namespace
+}  // namespace bounce::test
