@@ -36,21 +36,7 @@ uniform sampler2D uLightmap;         // E, W/m², RGB32F, bilinear, clamped at t
 uniform sampler2D uLightmapCharts;   // chart colour per texel, nearest (black: uncovered); in
                                      // the error mode the error's false colour per texel
 uniform vec2 uLightmapSize;          // atlas width, height in texels
-// The static area lights' direct light per texel as irradiance vectors F_r, F_g, F_b (W/m²,
-// layers 0..2, RGB32F, bilinear like the lightmap; render/area_direct_texels.h) and whether
-// this draw reads it instead of evaluating those lights (a lightmapped instance, the bake has
-// their visibility).
-uniform sampler2DArray uAreaDirect;
-uniform bool uAreaDirectFromTexels;
 uniform bool uVplReceiver;           // this draw: a dynamic instance lit by the VPLs
-
-// E_c = max(n·F_c, 0) (W/m²) of the static area lights at atlas UV `atlasUv` on unit normal n.
-vec3 areaDirectFromTexels(vec2 atlasUv, vec3 n) {
-  return max(vec3(dot(n, texture(uAreaDirect, vec3(atlasUv, 0.0)).xyz),
-                  dot(n, texture(uAreaDirect, vec3(atlasUv, 1.0)).xyz),
-                  dot(n, texture(uAreaDirect, vec3(atlasUv, 2.0)).xyz)),
-             vec3(0.0));
-}
 
 // Whether the mode needs the live direct light at all.
 bool modeUsesDirectLight() {

@@ -34,6 +34,18 @@ struct TexelVisibility {
   bool operator==(const TexelVisibility&) const = default;
 };
 
+// V of static light `light` (its index above) at one texel as the forward shader reads it
+// (shaders/baked_visibility.glsl, texelVisibility with the shared slot): its own slot's V, else
+// the "every other light" slot's, else 1.
+inline float visibleFraction(const TexelVisibility& texel, uint16_t light) {
+  float other = 1.0f;
+  for (std::size_t s = 0; s < static_cast<std::size_t>(kVisibilitySlots); ++s) {
+    if (texel.light[s] == light) return texel.visible[s];
+    if (texel.light[s] == kOtherLights) other = texel.visible[s];
+  }
+  return other;
+}
+
 struct BakedVisibility {
   int width = 0, height = 0;            // the lightmap's
   uint32_t lightCount = 0;              // the scene's static area lights (scene/area_lights.h)

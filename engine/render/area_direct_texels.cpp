@@ -103,17 +103,6 @@ std::vector<TexelSurface> texelSurfaces(const Scene& scene, const LightmapLayout
 
 }  // namespace
 
-float texelLightVisibility(const TexelVisibility& texel, uint16_t light) {
-  float other = 1.0f;
-  for (int s = 0; s < kVisibilitySlots; ++s) {
-    if (texel.light[static_cast<std::size_t>(s)] == light)
-      return texel.visible[static_cast<std::size_t>(s)];
-    if (texel.light[static_cast<std::size_t>(s)] == kOtherLights)
-      other = texel.visible[static_cast<std::size_t>(s)];
-  }
-  return other;
-}
-
 std::vector<glm::vec3> areaDirectTexels(const Scene& scene, const LightmapLayout& layout,
                                         const BakedVisibility& visibility,
                                         const AreaLightSet& lights, std::size_t lightCount) {
@@ -128,7 +117,7 @@ std::vector<glm::vec3> areaDirectTexels(const Scene& scene, const LightmapLayout
     if (!std::isfinite(surface.distance) || surface.normal == glm::vec3(0.0f)) return;
     for (std::size_t l = 0; l < count; ++l) {
       if (lights.lights[l].bakeDirect) continue;  // in the lightmap already
-      const float v = texelLightVisibility(visibility.texels[t], static_cast<uint16_t>(l));
+      const float v = visibleFraction(visibility.texels[t], static_cast<uint16_t>(l));
       if (!(v > 0.0f)) continue;
       const std::array<glm::vec3, 3> f =
           areaLightIrradianceVectors(lights, l, surface.position, surface.normal);

@@ -41,8 +41,4 @@ std::vector<glm::vec3> areaDirectTexels(const Scene& scene, const LightmapLayout
                                         const BakedVisibility& visibility,
                                         const AreaLightSet& lights, std::size_t lightCount);
 
-// V of light `light` at one texel as the forward shader reads it (shaders/baked_visibility.glsl,
-// texelVisibility with the shared slot).
-float texelLightVisibility(const TexelVisibility& texel, uint16_t light);
-
 }  // namespace bounce

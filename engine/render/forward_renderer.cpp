@@ -12,6 +12,7 @@
 #include "gl/draw_state.h"
 #include "gl/gpu_pass_timers.h"
 #include "gl/render_target.h"
+#include "render/area_direct_corners.h"
 #include "render/area_shadow_budget.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
@@ -183,6 +184,11 @@ void ForwardRenderer::setBake(const Bake& bake) {
   p.lightmap.attach(bake, p.scene, settings_.areaDirectTexels);
   p.probes.attach(bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{},
                   p.scene.instances().size(), p.lightmap.hasBakedVisibility());
+  // The static area lights' direct light at the probe-lit corners, as the texels hold it.
+  if (p.lightmap.hasAreaDirectTexels() && bake.probes && settings_.probes)
+    p.probes.attachAreaDirect(
+        areaDirectCorners(p.scene.source(), *bake.probes, p.scene.areaLights(),
+                          static_cast<std::size_t>(p.lightmap.bakedLightCount())));
   std::vector<uint8_t> cornerVisibility(p.scene.instances().size(), 0);
   for (std::size_t i = 0; i < cornerVisibility.size(); ++i)
     cornerVisibility[i] = p.probes.cornerVisibility(i) ? 1 : 0;

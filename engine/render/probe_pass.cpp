@@ -1,6 +1,7 @@
 #include "render/probe_pass.h"
 
 #include "bake_folder/irradiance_probes.h"
+#include "gl/texture.h"
 #include "render/shader_constants.h"
 #include "render/texture_units.h"
 
@@ -56,6 +57,15 @@ void ProbePass::attach(const IrradianceProbes& probes, std::size_t instances, bo
                       static_cast<int>(g.cornerCount)});
   }
   probeCount_ = probes.probes.size();
+  areaDirect_.reset();
+}
+
+void ProbePass::attachAreaDirect(std::span<const glm::vec4> corners) {
+  areaDirect_.reset();
+  if (!visibility_ || corners.empty() || corners.size() > gl::TextureBuffer::maxTexels() ||
+      gl::Texture2D::maxFragmentUnits() <= TextureUnit::kCornerAreaDirect)
+    return;
+  areaDirect_.emplace(corners);
 }
 
 void ProbePass::bind(gl::Program& program) const {
@@ -63,10 +73,17 @@ void ProbePass::bind(gl::Program& program) const {
   buffer_->bind(TextureUnit::kProbes);
   program.set("uCornerVisibility", TextureUnit::kCornerVisibility);
   corners_->bind(TextureUnit::kCornerVisibility);
+  if (areaDirect_) {
+    program.set("uCornerAreaDirect", TextureUnit::kCornerAreaDirect);
+    areaDirect_->bind(TextureUnit::kCornerAreaDirect);
+  } else {
+    program.set("uCornerAreaDirect", TextureUnit::kProbes);  // never read; a samplerBuffer unit
+  }
 }
 
 void ProbePass::setInstance(gl::Program& program, std::size_t index) const {
   program.set("uHasCornerVisibility", 0);
+  program.set("uHasCornerAreaDirect", cornerVisibility(index) && areaDirect_ ? 1 : 0);
   if (!probeLit(index)) {
     program.set("uHasProbes", 0);
     return;

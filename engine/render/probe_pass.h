@@ -13,10 +13,16 @@
 // indices, −1 empty, −2 every other light), (their V). A draw of such an instance reads it in
 // place of the lightmap's visibility table (shaders/baked_visibility.glsl), so its direct light
 // needs no shadow map of a static light for the static occluders.
+//
+// With attachAreaDirect, a third buffer holds the static area lights' irradiance vectors per
+// corner (area_direct_corners.h), 3 texels per corner (F_r, F_g, F_b in xyz, w = 1 where the
+// triangle reads them): those triangles read their direct light there instead of evaluating the
+// lights per pixel.
 #pragma once
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -49,6 +55,11 @@ class ProbePass {
            grids_[static_cast<std::size_t>(gridOf_[index])].cornerCount > 0;
   }
   std::size_t probeCount() const { return probeCount_; }
+  // Uploads the static area lights' F_r, F_g, F_b per corner of the attached probes' visibility
+  // (area_direct_corners.h, 3 per corner, w = 1 where read); an empty span, or corner visibility
+  // off, drops them.
+  void attachAreaDirect(std::span<const glm::vec4> corners);
+  bool hasAreaDirect() const { return areaDirect_.has_value(); }
 
   // Per frame: the buffer.
   void bind(gl::Program& program) const;
@@ -58,6 +69,7 @@ class ProbePass {
  private:
   std::optional<gl::TextureBuffer> buffer_;
   std::optional<gl::TextureBuffer> corners_;
+  std::optional<gl::TextureBuffer> areaDirect_;
   bool visibility_ = false;
   // What a draw reads of its instance's grid (ProbeGrid of bake_folder/irradiance_probes.h).
   struct Grid {

@@ -34,6 +34,9 @@ struct TextureUnit {
   // area_direct_texels.h). On a driver without it LightmapPass leaves it out: those lights are
   // evaluated per pixel, as without a bake.
   static constexpr int kAreaDirect = 18;
+  // samplerBuffer: the same per triangle corner of the probe-lit instances (probes.glsl,
+  // area_direct_corners.h); without it those instances evaluate the lights per pixel.
+  static constexpr int kCornerAreaDirect = 19;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

@@ -244,11 +244,26 @@ TEST(BakedDirect, ProbeLitInstancesReadTheirCornersAndNoShadowMapIsDrawn) {
   float taps = 0.0f;
   for (const glm::vec3& c : counts.pixels) taps = std::max(taps, c.b);
   EXPECT_EQ(taps, 0.0f) << "the most shadow-map taps a pixel took";
+  // The mat's 6 cm triangles, 1.2 m under the panel, read its light from their corners
+  // (render/area_direct_corners.h): no light is evaluated at their pixels.
+  const uint32_t mat = 2, table = 3;
+  {
+    const WorldGeometry geometry = flatten(scene);
+    const auto kernel = makeRayKernel(geometry, RayBackend::Embree);
+    const PixelSurfaces surfaces = findPixelSurfaces(geometry, *kernel, camera, kWidth, kHeight);
+    int matPixels = 0, evaluating = 0;
+    for (std::size_t i = 0; i < counts.pixels.size(); ++i) {
+      if (!surfaces.interior[i] || geometry.triangleInstance[surfaces.triangle[i]] != mat) continue;
+      ++matPixels;
+      evaluating += counts.pixels[i].r > 0.0f;
+    }
+    EXPECT_GT(matPixels, 100);
+    EXPECT_EQ(evaluating, 0) << "of " << matPixels << " mat pixels evaluated a light";
+  }
 
   const Reference reference =
       traceReference(scene, camera, kWidth, kHeight, 1024, PathSet::DirectOnly);
   const Image rendered = renderDirect(scene, &bake, camera);
-  const uint32_t mat = 2, table = 3;
   const auto [disagree, pixels] =
       disagreeingPixels(scene, camera, rendered, reference, {mat, table});
   const auto [onTable, tablePixels] =
