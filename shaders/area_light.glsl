@@ -127,7 +127,7 @@ vec3 outlineIrradiance(int light, int k, vec3 p, vec3 n) {
 // from its shadow map when it has one (shadow_area.glsl), else 1
 // (ng: the receiver's geometric normal; baked: the bake's texels around its lightmap UV).
 // `fromTexels`: the static lights' V_l · E_l is read from the lightmap's texels instead
-// (lightmap.glsl, render/area_direct_texels.h), so such a light is evaluated here only when a
+// (lightmap.glsl, render/static_direct_texels.h), so such a light is evaluated here only when a
 // dynamic caster shadows it, as the correction V_l · E_l · (s − 1), s its cube's visible
 // fraction: a static pixel pays for what moves, not for the static lights.
 vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked,

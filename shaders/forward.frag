@@ -18,7 +18,7 @@
 #include "probes.glsl"
 #include "lightmap.glsl"
 #include "area_light.glsl"
-#include "area_direct.glsl"
+#include "static_direct.glsl"
 #include "vpl.glsl"
 #include "vpl_shadows.glsl"
 #include "view_modes.glsl"
@@ -96,13 +96,13 @@ void main() {
     if (uHasBakedVisibility)
       baked = uHasCornerVisibility ? cornerVisibilityTexels(vTriangle, vCornerWeights)
                                    : bakedVisibilityTexels(lightmapUv, uLightmapSize);
-    // A static front face reads the static area lights' direct light where it was computed
-    // once, from texels or corners (area_direct.glsl; a back face of a double-sided surface is
+    // A static front face reads the static lights' direct light where it was computed
+    // once, from texels or corners (static_direct.glsl; a back face of a double-sided surface is
     // not the side it was computed for).
-    bool areaPrecomputed = areaDirectPrecomputed(vTriangle) && gl_FrontFacing;
-    direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked) +
-             areaIrradiance(lights, vWorldPosition, n, ng, baked, areaPrecomputed);
-    if (areaPrecomputed) direct += areaDirect(lightmapUv, vTriangle, vCornerWeights, n);
+    bool staticPrecomputed = staticDirectPrecomputed(vTriangle) && gl_FrontFacing;
+    direct = punctualIrradiance(lights, vWorldPosition, n, ng, baked, staticPrecomputed) +
+             areaIrradiance(lights, vWorldPosition, n, ng, baked, staticPrecomputed);
+    if (staticPrecomputed) direct += staticDirect(lightmapUv, vTriangle, vCornerWeights, n);
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
   if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);

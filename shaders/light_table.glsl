@@ -16,6 +16,9 @@ struct PunctualLight {
   vec3 power;        // intensity W/sr (point, spot) or irradiance W/m² (directional)
   int bakedIndex;    // its index in the bake's visibility (baked_visibility.glsl), −1: none
   vec2 cosCone;      // spot: cos(inner), cos(outer)
+  // Its direct light on static surfaces is in the texels and corners (static_direct.glsl):
+  // render/punctual_lights.h, PunctualLights::precomputed.
+  bool precomputed;
 };
 
 PunctualLight punctualLight(int i) {
@@ -23,7 +26,8 @@ PunctualLight punctualLight(int i) {
   vec4 t1 = texelFetch(uLightTable, 4 * i + 1);
   vec4 t2 = texelFetch(uLightTable, 4 * i + 2);
   vec4 t3 = texelFetch(uLightTable, 4 * i + 3);
-  return PunctualLight(int(t0.w), t0.xyz, t1.xyz, int(t1.w), t2.rgb, int(t2.w), t3.xy);
+  return PunctualLight(int(t0.w), t0.xyz, t1.xyz, int(t1.w), t2.rgb, int(t2.w), t3.xy,
+                       t3.z > 0.5);
 }
 
 // A range (first, count) stored in the cut section at `texel` (relative to the section).

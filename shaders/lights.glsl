@@ -43,27 +43,41 @@ float punctualVisibility(PunctualLight light, vec3 p, vec3 ng, BakedVisibilityTe
   return v;
 }
 
-vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked) {
+// `fromTexels`: the precomputed lights' direct light is read from the texels or corners
+// (static_direct.glsl), V·E with V their baked visibility (shared slot); such a light is
+// evaluated here only while it has a shadow map (a dynamic caster in its reach), as the
+// correction E·(V − V_baked). The lists put the precomputed lights without a map first
+// (PunctualLights::listOrder), so walked from the end the first one ends the walk: the loop runs
+// over the other lights only (a shader runs a loop until every lane has left it).
+vec3 punctualIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTexels baked,
+                        bool fromTexels) {
   vec3 irradiance = vec3(0.0);
   int count = lights.all ? uPunctualCount : lights.punctualCount;
-  for (int k = 0; k < count; ++k) {
-    gCostLights += 1;
+  for (int k = count - 1; k >= 0; --k) {
     PunctualLight light = punctualLight(punctualLightIndex(lights, k));
-    if (light.power == vec3(0.0)) continue;
-    if (light.type == LIGHT_DIRECTIONAL) {
-      float cosTheta = max(dot(n, -light.direction), 0.0);
-      if (cosTheta > 0.0)
-        irradiance += light.power * cosTheta * punctualVisibility(light, p, ng, baked);
-      continue;
+    bool inTexels = fromTexels && light.precomputed && uHasBakedVisibility;
+    if (inTexels && light.shadowSlot < 0) {
+      if (lights.all) continue;  // every light in index order: no ordering to stop on
+      break;
     }
-    vec3 toLight = light.position - p;
-    float r2 = dot(toLight, toLight);
-    vec3 l = toLight * inversesqrt(r2);
-    vec3 intensity = light.power;
-    if (light.type == LIGHT_SPOT) intensity *= spotFalloff(light.cosCone, dot(-l, light.direction));
-    float cosTheta = max(dot(n, l), 0.0);
-    if (cosTheta > 0.0 && intensity != vec3(0.0))
-      irradiance += intensity * cosTheta / r2 * punctualVisibility(light, p, ng, baked);
+    gCostLights += 1;
+    if (light.power == vec3(0.0)) continue;
+    vec3 e;
+    if (light.type == LIGHT_DIRECTIONAL) {
+      e = light.power * max(dot(n, -light.direction), 0.0);
+    } else {
+      vec3 toLight = light.position - p;
+      float r2 = dot(toLight, toLight);
+      vec3 l = toLight * inversesqrt(r2);
+      vec3 intensity = light.power;
+      if (light.type == LIGHT_SPOT)
+        intensity *= spotFalloff(light.cosCone, dot(-l, light.direction));
+      e = intensity * max(dot(n, l), 0.0) / r2;
+    }
+    if (e == vec3(0.0)) continue;
+    float v = punctualVisibility(light, p, ng, baked);
+    if (inTexels) v -= bakedVisibility(baked, light.bakedIndex, true);
+    irradiance += e * v;
   }
   return irradiance;
 }

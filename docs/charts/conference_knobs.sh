@@ -37,4 +37,5 @@ run shadow_filter poisson_r3 --shadow-filter-radius 3
 run shadows none --no-shadows
 run light_culling off --no-light-culling
 run probes vpls --no-probes
+run area_lights live --live-static-lights
 run mode lightmap_only --mode lightmap

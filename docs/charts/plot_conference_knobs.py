@@ -18,10 +18,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = {"msaa": "o", "shadow_resolution": "s", "shadow_filter": "^", "shadows": "v",
-           "light_culling": "D", "probes": "P"}
+           "light_culling": "D", "probes": "P", "area_lights": "X"}
 LABELS = {"msaa": "samples per pixel (--msaa)", "shadow_resolution": "spot map texels",
           "shadow_filter": "shadow filter", "shadows": "no shadows",
-          "light_culling": "no light culling", "probes": "VPLs for the probe-lit"}
+          "light_culling": "no light culling", "probes": "VPLs for the probe-lit",
+          "area_lights": "static area lights per pixel (--live-static-lights)"}
 
 
 def main():

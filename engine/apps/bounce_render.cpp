@@ -43,7 +43,7 @@ struct Options {
   std::size_t vplGroups = bounce::kMaxVplGroups;
   bool noVplCulling = false;
   bool noProbes = false;
-  bool liveAreaLights = false;
+  bool liveStaticLights = false;
   bool noVplShadows = false;
   bool noLightCulling = false;
   float shadowFilterRadius = 1.5f;
@@ -64,7 +64,7 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.vpls.groups = options.vplGroups;
   settings.vpls.culling = !options.noVplCulling;
   settings.probes = !options.noProbes;
-  settings.areaDirectTexels = !options.liveAreaLights;
+  settings.precomputedStaticDirect = !options.liveStaticLights;
   settings.vpls.shadows.enabled = !options.noVplShadows;
   // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
   settings.lightCulling.enabled = !options.noLightCulling;
@@ -371,9 +371,9 @@ void addVplOptions(CLI::App& app, Options& options) {
   app.add_flag("--no-probes", options.noProbes,
                "light the static instances without a lightmap region from the VPLs, as before "
                "the bake's irradiance probes (for comparison)");
-  app.add_flag("--live-area-lights", options.liveAreaLights,
-               "evaluate the static area lights at every lightmapped pixel, as before their "
-               "direct light was computed per lightmap texel at load (for comparison)");
+  app.add_flag("--live-static-lights", options.liveStaticLights,
+               "evaluate the static lights at every static pixel, as before their direct light "
+               "was computed per lightmap texel and probe-lit corner at load (for comparison)");
   app.add_flag("--no-vpl-culling", options.noVplCulling,
                "evaluate every VPL at every pixel (no per-cell lightcuts)");
   app.add_flag("--no-light-culling", options.noLightCulling,

@@ -1,5 +1,5 @@
 // A 2D array of RGB32F images of one size, sampled bilinearly per layer (sampler2DArray): one
-// texture unit for several maps of the same atlas (render/area_direct_texels.h: one layer per
+// texture unit for several maps of the same atlas (render/static_direct_texels.h: one layer per
 // colour channel).
 #pragma once
 

@@ -12,7 +12,6 @@
 #include "gl/draw_state.h"
 #include "gl/gpu_pass_timers.h"
 #include "gl/render_target.h"
-#include "render/area_direct_corners.h"
 #include "render/area_shadow_budget.h"
 #include "render/forward_pass.h"
 #include "render/frustum.h"
@@ -23,6 +22,8 @@
 #include "render/probe_pass.h"
 #include "render/punctual_lights.h"
 #include "render/shadow_pass.h"
+#include "render/static_direct_corners.h"
+#include "render/static_direct_texels.h"
 #include "render/view.h"
 #include "render/vpl_pass.h"
 #include "vpl_runtime/vpl_occlusion.h"
@@ -41,6 +42,14 @@ struct ForwardRenderer::Passes {
   VplPass vpls;
   ForwardPass forward;
   gl::GpuPassTimers timers;
+  // What the static lights' texels and corners are computed from (kept for setLight: a light
+  // edited away from its baked state leaves them, which are then computed again).
+  struct StaticDirectSource {
+    LightmapLayout layout;
+    BakedVisibility visibility;
+    IrradianceProbes probes;
+  };
+  std::optional<StaticDirectSource> staticDirectSource;
 
   Passes(const Scene& source, const std::filesystem::path& shaderDir,
          const RendererSettings& settings, std::vector<std::string>& warnings)
@@ -181,14 +190,9 @@ void ForwardRenderer::setLightmapUv(std::size_t index, std::span<const glm::vec2
 
 void ForwardRenderer::setBake(const Bake& bake) {
   Passes& p = *passes_;
-  p.lightmap.attach(bake, p.scene, settings_.areaDirectTexels);
+  p.lightmap.attach(bake, p.scene);
   p.probes.attach(bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{},
                   p.scene.instances().size(), p.lightmap.hasBakedVisibility());
-  // The static area lights' direct light at the probe-lit corners, as the texels hold it.
-  if (p.lightmap.hasAreaDirectTexels() && bake.probes && settings_.probes)
-    p.probes.attachAreaDirect(
-        areaDirectCorners(p.scene.source(), *bake.probes, p.scene.areaLights(),
-                          static_cast<std::size_t>(p.lightmap.bakedLightCount())));
   std::vector<uint8_t> cornerVisibility(p.scene.instances().size(), 0);
   for (std::size_t i = 0; i < cornerVisibility.size(); ++i)
     cornerVisibility[i] = p.probes.cornerVisibility(i) ? 1 : 0;
@@ -214,6 +218,12 @@ void ForwardRenderer::setBake(const Bake& bake) {
         "too few fragment texture units");
   p.lights.setBakedDirectInLightmap(true);
   p.lights.setBakedVisibility(p.lightmap.bakedLightCount(), p.lightmap.bakedPunctualCount());
+  p.staticDirectSource.reset();
+  if (bake.visibility)
+    p.staticDirectSource = Passes::StaticDirectSource{
+        bake.layout, *bake.visibility,
+        bake.probes && settings_.probes ? *bake.probes : IrradianceProbes{}};
+  updateStaticDirect();
   std::size_t bakedWithoutMap = 0;
   for (std::size_t i = 0; i < p.lights.size(); ++i)
     if (p.lights.bakedIndex(i) >= 0 &&
@@ -289,7 +299,34 @@ void ForwardRenderer::setLight(std::size_t index, const Light& light) {
     throw std::invalid_argument("light '" + old.name + "': its type and bake mode cannot change");
   p.lights.setLight(index, light);
   p.shadows.setLight(index, light);
+  // Edited away from (or back to) its baked state: the texels and corners leave (take) it.
+  if (p.lights.precomputed(index) !=
+      (settings_.precomputedStaticDirect && p.lights.asBaked(index) && p.staticDirectSource &&
+       p.lightmap.canReadStaticDirect()))
+    updateStaticDirect();
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
+}
+
+void ForwardRenderer::updateStaticDirect() {
+  Passes& p = *passes_;
+  const bool on =
+      settings_.precomputedStaticDirect && p.staticDirectSource && p.lightmap.canReadStaticDirect();
+  std::vector<uint8_t> precomputed(p.lights.size(), 0);
+  for (std::size_t i = 0; i < precomputed.size(); ++i)
+    precomputed[i] = on && p.lights.asBaked(i) ? 1 : 0;
+  p.lights.setPrecomputed(precomputed);
+  if (!on) {
+    p.lightmap.setStaticDirect({});
+    p.probes.attachStaticDirect({});
+    return;
+  }
+  const Passes::StaticDirectSource& source = *p.staticDirectSource;
+  const PrecomputedLights lights{&p.scene.areaLights(),
+                                 static_cast<std::size_t>(p.lightmap.bakedLightCount()),
+                                 p.lights.all(), precomputed};
+  p.lightmap.setStaticDirect(
+      staticDirectTexels(p.scene.source(), source.layout, source.visibility, lights));
+  p.probes.attachStaticDirect(staticDirectCorners(p.scene.source(), source.probes, lights));
 }
 
 bool ForwardRenderer::hasVpls() const {
@@ -373,7 +410,8 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
   }
   const Clock::time_point cullingStart = Clock::now();
   p.culling.update(camera, target.width(), target.height(), p.scene.bounds(), p.lights,
-                   p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable);
+                   p.scene.areaLights(), p.scene.emitterVersion(), p.lightTable,
+                   p.lights.listOrder(p.shadows.lightSlots()));
   profile_.addCpu("light culling", millisecondsSince(cullingStart));
   p.lightTable.update();
   {

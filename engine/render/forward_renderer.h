@@ -69,10 +69,11 @@ struct RendererSettings {
   // false: the static instances without a lightmap region take the VPLs' light even when the
   // bake has irradiance probes for them, as before the probes (bounce-render --no-probes).
   bool probes = true;
-  // true: with a bake that holds the static area lights' visibility, their direct light on the
-  // lightmapped surfaces is computed once per lightmap texel (area_direct_texels.h) and read
-  // there; false: evaluated per pixel (bounce-render --live-area-lights).
-  bool areaDirectTexels = true;
+  // true: with a bake that holds the static lights' visibility, their direct light on static
+  // surfaces is computed once, per lightmap texel and per probe-lit corner
+  // (static_direct_texels.h, static_direct_corners.h), and read there; false: evaluated per pixel
+  // (bounce-render --live-static-lights).
+  bool precomputedStaticDirect = true;
 };
 
 class ForwardRenderer {
@@ -199,6 +200,11 @@ class ForwardRenderer {
   void retraceVpls();
   // Per frame: one re-trace or occlusion update when dynamic instances moved since the last.
   void followDynamicMoves();
+  // Decides which static lights' direct light on static surfaces is computed once (every static
+  // area light the bake's visibility names, and the punctual lights as the bake saw them), then
+  // computes and uploads their texels and corners (static_direct_texels.h,
+  // static_direct_corners.h); none with RendererSettings::precomputedStaticDirect off.
+  void updateStaticDirect();
 
   RendererSettings settings_;
   // Draws vpls_ (or the re-traced set) at vplClampDistance_ into the VPL pass.

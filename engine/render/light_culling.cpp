@@ -28,7 +28,7 @@ void LightCulling::setSettings(const LightCullingSettings& settings) {
 
 void LightCulling::update(const Camera& camera, int width, int height, const Box& sceneBox,
                           const PunctualLights& punctual, const AreaLightSet& area, int areaVersion,
-                          LightTable& table) {
+                          LightTable& table, std::span<const uint32_t> punctualOrder) {
   if (!settings_.enabled) {
     table.setClusters({}, {});
     stats_ = {};
@@ -50,12 +50,14 @@ void LightCulling::update(const Camera& camera, int width, int height, const Box
                glm::ivec2(width, height),
                sceneBox,
                {},
-               {}};
+               {},
+               {punctualOrder.begin(), punctualOrder.end()}};
   const bool still =
       builtFor_ && builtFor_->cameraToWorld == key.cameraToWorld && builtFor_->lens == key.lens &&
       builtFor_->size == key.size && builtFor_->sceneBox.lower == sceneBox.lower &&
       builtFor_->sceneBox.upper == sceneBox.upper &&
-      sameReaches(builtFor_->punctual, punctualReach_) && sameReaches(builtFor_->area, areaReach_);
+      sameReaches(builtFor_->punctual, punctualReach_) &&
+      sameReaches(builtFor_->area, areaReach_) && builtFor_->punctualOrder == key.punctualOrder;
   // A still view: the light table keeps the lists it holds.
   if (still) return;
   key.punctual = punctualReach_;
@@ -64,7 +66,7 @@ void LightCulling::update(const Camera& camera, int width, int height, const Box
   ++gridBuilds_;
   const glm::vec2 depths = viewDepthRange(camera, sceneBox);
   grid_ = makeClusterGrid(camera, width, height, depths.x, depths.y, settings_.grid);
-  LightGridLists lists = assignLights(grid_, punctualReach_, areaReach_);
+  LightGridLists lists = assignLights(grid_, punctualReach_, areaReach_, builtFor_->punctualOrder);
   stats_ = {grid_.count(), lists.punctualEntries, lists.areaEntries, lists.maxPunctual,
             lists.maxArea};
   table.setClusters(std::move(lists.headers), std::move(lists.entries));

@@ -36,10 +36,11 @@ class LightCulling {
   const LightCullingSettings& settings() const { return settings_; }
 
   // Builds the lists of the frame `camera` sees at width × height over `sceneBox` (world) and
-  // hands them to `table` (nothing when off). `areaVersion` changes whenever `area` does.
+  // hands them to `table` (nothing when off). `areaVersion` changes whenever `area` does. The
+  // punctual lights are listed in `punctualOrder` (PunctualLights::listOrder; empty: ascending).
   void update(const Camera& camera, int width, int height, const Box& sceneBox,
               const PunctualLights& punctual, const AreaLightSet& area, int areaVersion,
-              LightTable& table);
+              LightTable& table, std::span<const uint32_t> punctualOrder = {});
   // Sets the grid's uniforms of shaders/light_grid.glsl (uLightGridEnabled false when off).
   void bind(gl::Program& program) const;
 
@@ -65,6 +66,7 @@ class LightCulling {
     glm::ivec2 size{0};
     Box sceneBox;
     std::vector<LightReach> punctual, area;
+    std::vector<uint32_t> punctualOrder;
   };
   std::optional<BuiltFor> builtFor_;
   uint64_t gridBuilds_ = 0;

@@ -122,7 +122,8 @@ LightReach toView(const LightReach& reach, const glm::mat4& view) {
 }
 
 LightGridLists assignLights(const ClusterGrid& grid, std::span<const LightReach> punctual,
-                            std::span<const LightReach> area) {
+                            std::span<const LightReach> area,
+                            std::span<const uint32_t> punctualOrder) {
   const auto clusters = static_cast<std::size_t>(grid.count());
   // Each cluster's box once (two slice depths each), not once per light that may reach it.
   std::vector<Box> boxes(clusters);
@@ -130,12 +131,14 @@ LightGridLists assignLights(const ClusterGrid& grid, std::span<const LightReach>
     for (int y = 0; y < grid.tilesY; ++y)
       for (int x = 0; x < grid.tilesX; ++x) boxes[grid.index(x, y, s)] = grid.clusterBox(x, y, s);
   std::vector<glm::uvec2> punctualHits, areaHits;  // (cluster, light)
-  for (std::size_t i = 0; i < punctual.size(); ++i)
-    collect(grid, boxes, toView(punctual[i], grid.view), static_cast<uint32_t>(i), punctualHits);
+  for (std::size_t k = 0; k < punctual.size(); ++k) {
+    const uint32_t i = k < punctualOrder.size() ? punctualOrder[k] : static_cast<uint32_t>(k);
+    collect(grid, boxes, toView(punctual[i], grid.view), i, punctualHits);
+  }
   for (std::size_t i = 0; i < area.size(); ++i)
     collect(grid, boxes, toView(area[i], grid.view), static_cast<uint32_t>(i), areaHits);
 
-  // Counting sort by cluster; lights were visited in ascending order, so each list ascends.
+  // Counting sort by cluster (stable): each list follows the order the lights were visited in.
   std::vector<uint32_t> punctualCount(clusters, 0), areaCount(clusters, 0);
   for (const glm::uvec2& h : punctualHits) ++punctualCount[h.x];
   for (const glm::uvec2& h : areaHits) ++areaCount[h.x];

@@ -56,6 +56,7 @@ bool reachTouches(const LightReach& reachInView, const Box& cluster);
 LightReach toView(const LightReach& reach, const glm::mat4& view);
 
 LightGridLists assignLights(const ClusterGrid& grid, std::span<const LightReach> punctual,
-                            std::span<const LightReach> area);
+                            std::span<const LightReach> area,
+                            std::span<const uint32_t> punctualOrder = {});
 
 }  // namespace bounce

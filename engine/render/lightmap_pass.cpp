@@ -3,7 +3,6 @@
 #include "bake_folder/bake_folder.h"
 #include "bake_folder/lightmap_charts.h"
 #include "bake_folder/texel_error.h"
-#include "render/area_direct_texels.h"
 #include "render/shader_constants.h"
 #include "render/texture_units.h"
 
@@ -49,7 +48,7 @@ LightmapPass::LightmapPass() {
   charts_.emplace(1, 1, std::span(&kBlack, 1), gl::Filter::Nearest, gl::Wrap::ClampToEdge);
 }
 
-void LightmapPass::attach(const Bake& bake, GpuScene& scene, bool areaDirectTexels) {
+void LightmapPass::attach(const Bake& bake, GpuScene& scene) {
   const LightmapLayout& layout = bake.layout;
   // Image rows are top first and texture row t = 0 is the first row uploaded, so atlas
   // v = 0 (the top row, lightmap_layout.h) samples row 0: no flip.
@@ -84,18 +83,18 @@ void LightmapPass::attach(const Bake& bake, GpuScene& scene, bool areaDirectTexe
     scene.setLightmapUv(region.instance, region.cornerUv);
     lightmapped_[region.instance] = 1;
   }
-  areaDirect_.reset();
-  if (areaDirectTexels) attachAreaDirect(bake, scene);
+  staticDirect_.reset();
   attached_ = true;
 }
 
-void LightmapPass::attachAreaDirect(const Bake& bake, const GpuScene& scene) {
-  if (!visibility_ || bakedLights_ == 0) return;  // no static area light is shadowed by the bake
-  if (gl::Texture2D::maxFragmentUnits() <= TextureUnit::kAreaDirect) return;
-  const std::vector<glm::vec3> direct =
-      areaDirectTexels(scene.source(), bake.layout, *bake.visibility, scene.areaLights(),
-                       static_cast<std::size_t>(bakedLights_));
-  areaDirect_.emplace(bake.layout.width, bake.layout.height, 3, direct);
+bool LightmapPass::canReadStaticDirect() const {
+  return visibility_.has_value() && gl::Texture2D::maxFragmentUnits() > TextureUnit::kStaticDirect;
+}
+
+void LightmapPass::setStaticDirect(std::span<const glm::vec3> texels) {
+  staticDirect_.reset();
+  if (texels.empty() || !canReadStaticDirect()) return;
+  staticDirect_.emplace(static_cast<int>(size_.x), static_cast<int>(size_.y), 3, texels);
 }
 
 void LightmapPass::attachVisibility(const Bake& bake) {
@@ -184,12 +183,12 @@ void LightmapPass::bind(gl::Program& program, RenderMode mode) const {
   } else {
     program.set("uBakedVisibility", TextureUnit::kLightmap);  // never read; a sampler2D unit
   }
-  if (areaDirect_) {
-    program.set("uAreaDirect", TextureUnit::kAreaDirect);
-    areaDirect_->bind(TextureUnit::kAreaDirect);
+  if (staticDirect_) {
+    program.set("uStaticDirect", TextureUnit::kStaticDirect);
+    staticDirect_->bind(TextureUnit::kStaticDirect);
   } else {
     // Never read: a unit of its type (the area lights' cubes are sampler2DArray too).
-    program.set("uAreaDirect", TextureUnit::kAreaShadow0);
+    program.set("uStaticDirect", TextureUnit::kAreaShadow0);
   }
 }
 
@@ -197,7 +196,7 @@ void LightmapPass::setInstance(gl::Program& program, std::size_t index) const {
   const bool lightmapped = index < lightmapped_.size() && lightmapped_[index];
   program.set("uHasLightmap", lightmapped ? 1 : 0);
   program.set("uHasBakedVisibility", lightmapped && visibility_ ? 1 : 0);
-  program.set("uAreaDirectFromTexels", lightmapped && areaDirect_ ? 1 : 0);
+  program.set("uStaticDirectFromTexels", lightmapped && staticDirect_ ? 1 : 0);
 }
 
 }  // namespace bounce

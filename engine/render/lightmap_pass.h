@@ -8,6 +8,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,16 @@ class LightmapPass {
   LightmapPass();
 
   // Uploads `bake` (already checked against the scene by readBake) and sets the lightmap UVs
-  // of its regions' instances in `scene`. Dynamic instances never get a region. With
-  // `areaDirectTexels` and the bake's visibility, also computes and uploads the static area
-  // lights' direct light per texel (area_direct_texels.h), which lightmapped draws read instead
-  // of evaluating those lights.
-  void attach(const Bake& bake, GpuScene& scene, bool areaDirectTexels = true);
-  // Whether lightmapped draws read the static area lights' direct light from texels.
-  bool hasAreaDirectTexels() const { return areaDirect_.has_value(); }
+  // of its regions' instances in `scene`. Dynamic instances never get a region.
+  void attach(const Bake& bake, GpuScene& scene);
+  // Whether the static lights' direct light can be read from texels: the bake has visibility
+  // and the driver unit kStaticDirect.
+  bool canReadStaticDirect() const;
+  // Uploads the static lights' irradiance vectors per texel (static_direct_texels.h: 3 layers of
+  // the atlas's size), which lightmapped draws read instead of evaluating those lights; empty:
+  // none (every light per pixel).
+  void setStaticDirect(std::span<const glm::vec3> texels);
+  bool hasStaticDirectTexels() const { return staticDirect_.has_value(); }
   bool attached() const { return attached_; }
   bool hasErrorMap() const { return errorColours_.has_value(); }
   // Whether static surfaces read the static area lights' visibility from the bake; when the
@@ -70,7 +74,6 @@ class LightmapPass {
 
  private:
   void attachVisibility(const Bake& bake);
-  void attachAreaDirect(const Bake& bake, const GpuScene& scene);
   // Instance `index` reads the visibility: from the table (a region) or per corner.
   bool readsVisibility(std::size_t index) const;
 
@@ -80,8 +83,8 @@ class LightmapPass {
       errorColours_;  // bake_folder/texel_error.h per texel, with error.exr
   std::optional<gl::Texture2D> validityColours_;  // the same, sampled / filled / padding
   std::optional<gl::Texture2D> visibility_;  // bake_folder/light_visibility.h as 2·W × H RGBA32F
-  // area_direct_texels.h: F_r, F_g, F_b as 3 layers of W × H RGB32F, W/m²
-  std::optional<gl::TextureArray2D> areaDirect_;
+  // static_direct_texels.h: F_r, F_g, F_b as 3 layers of W × H RGB32F, W/m²
+  std::optional<gl::TextureArray2D> staticDirect_;
   int bakedLights_ = 0;            // static area lights the visibility names
   std::size_t bakedPunctual_ = 0;  // punctual lights it names after them
   glm::vec2 size_{1.0f};

@@ -57,15 +57,15 @@ void ProbePass::attach(const IrradianceProbes& probes, std::size_t instances, bo
                       static_cast<int>(g.cornerCount)});
   }
   probeCount_ = probes.probes.size();
-  areaDirect_.reset();
+  staticDirect_.reset();
 }
 
-void ProbePass::attachAreaDirect(std::span<const glm::vec4> corners) {
-  areaDirect_.reset();
+void ProbePass::attachStaticDirect(std::span<const glm::vec4> corners) {
+  staticDirect_.reset();
   if (!visibility_ || corners.empty() || corners.size() > gl::TextureBuffer::maxTexels() ||
-      gl::Texture2D::maxFragmentUnits() <= TextureUnit::kCornerAreaDirect)
+      gl::Texture2D::maxFragmentUnits() <= TextureUnit::kCornerStaticDirect)
     return;
-  areaDirect_.emplace(corners);
+  staticDirect_.emplace(corners);
 }
 
 void ProbePass::bind(gl::Program& program) const {
@@ -73,17 +73,17 @@ void ProbePass::bind(gl::Program& program) const {
   buffer_->bind(TextureUnit::kProbes);
   program.set("uCornerVisibility", TextureUnit::kCornerVisibility);
   corners_->bind(TextureUnit::kCornerVisibility);
-  if (areaDirect_) {
-    program.set("uCornerAreaDirect", TextureUnit::kCornerAreaDirect);
-    areaDirect_->bind(TextureUnit::kCornerAreaDirect);
+  if (staticDirect_) {
+    program.set("uCornerStaticDirect", TextureUnit::kCornerStaticDirect);
+    staticDirect_->bind(TextureUnit::kCornerStaticDirect);
   } else {
-    program.set("uCornerAreaDirect", TextureUnit::kProbes);  // never read; a samplerBuffer unit
+    program.set("uCornerStaticDirect", TextureUnit::kProbes);  // never read; a samplerBuffer unit
   }
 }
 
 void ProbePass::setInstance(gl::Program& program, std::size_t index) const {
   program.set("uHasCornerVisibility", 0);
-  program.set("uHasCornerAreaDirect", cornerVisibility(index) && areaDirect_ ? 1 : 0);
+  program.set("uHasCornerStaticDirect", cornerVisibility(index) && staticDirect_ ? 1 : 0);
   if (!probeLit(index)) {
     program.set("uHasProbes", 0);
     return;

@@ -14,8 +14,8 @@
 // place of the lightmap's visibility table (shaders/baked_visibility.glsl), so its direct light
 // needs no shadow map of a static light for the static occluders.
 //
-// With attachAreaDirect, a third buffer holds the static area lights' irradiance vectors per
-// corner (area_direct_corners.h), 3 texels per corner (F_r, F_g, F_b in xyz, w = 1 where the
+// With attachStaticDirect, a third buffer holds the static lights' irradiance vectors per
+// corner (static_direct_corners.h), 3 texels per corner (F_r, F_g, F_b in xyz, w = 1 where the
 // triangle reads them): those triangles read their direct light there instead of evaluating the
 // lights per pixel.
 #pragma once
@@ -55,11 +55,11 @@ class ProbePass {
            grids_[static_cast<std::size_t>(gridOf_[index])].cornerCount > 0;
   }
   std::size_t probeCount() const { return probeCount_; }
-  // Uploads the static area lights' F_r, F_g, F_b per corner of the attached probes' visibility
-  // (area_direct_corners.h, 3 per corner, w = 1 where read); an empty span, or corner visibility
+  // Uploads the static lights' F_r, F_g, F_b per corner of the attached probes' visibility
+  // (static_direct_corners.h, 3 per corner, w = 1 where read); an empty span, or corner visibility
   // off, drops them.
-  void attachAreaDirect(std::span<const glm::vec4> corners);
-  bool hasAreaDirect() const { return areaDirect_.has_value(); }
+  void attachStaticDirect(std::span<const glm::vec4> corners);
+  bool hasStaticDirect() const { return staticDirect_.has_value(); }
 
   // Per frame: the buffer.
   void bind(gl::Program& program) const;
@@ -69,7 +69,7 @@ class ProbePass {
  private:
   std::optional<gl::TextureBuffer> buffer_;
   std::optional<gl::TextureBuffer> corners_;
-  std::optional<gl::TextureBuffer> areaDirect_;
+  std::optional<gl::TextureBuffer> staticDirect_;
   bool visibility_ = false;
   // What a draw reads of its instance's grid (ProbeGrid of bake_folder/irradiance_probes.h).
   struct Grid {

@@ -35,6 +35,26 @@ int PunctualLights::bakedIndex(std::size_t i) const {
   return bakedFirst_ + static_cast<int>(i);
 }
 
+bool PunctualLights::asBaked(std::size_t i) const {
+  if (bakedIndex(i) < 0) return false;
+  const Light& now = lights_[i];
+  const Light& then = baked_[i];
+  return now.intensity == then.intensity && now.irradiance == then.irradiance;
+}
+
+std::vector<uint32_t> PunctualLights::listOrder(std::span<const int> shadowSlots) const {
+  std::vector<uint32_t> order;
+  order.reserve(lights_.size());
+  const auto first = [&](std::size_t i) {
+    return precomputed(i) && !(i < shadowSlots.size() && shadowSlots[i] >= 0);
+  };
+  for (std::size_t i = 0; i < lights_.size(); ++i)
+    if (first(i)) order.push_back(static_cast<uint32_t>(i));
+  for (std::size_t i = 0; i < lights_.size(); ++i)
+    if (!first(i)) order.push_back(static_cast<uint32_t>(i));
+  return order;
+}
+
 glm::vec3 PunctualLights::drawnPower(std::size_t i) const {
   const Light& light = lights_[i];
   if (bakedDirectInLightmap_ && light.bakeDirect) return glm::vec3(0.0f);
@@ -52,7 +72,8 @@ std::vector<glm::vec4> PunctualLights::texels(std::span<const int> shadowSlots) 
     out.emplace_back(glm::normalize(light.direction), static_cast<float>(slot));
     out.emplace_back(power, static_cast<float>(bakedIndex(i)));
     // The same cosines bounce::spotFalloff computes, so the shader's falloff matches it.
-    out.emplace_back(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle), 0.0f, 0.0f);
+    out.emplace_back(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle),
+                     precomputed(i) ? 1.0f : 0.0f, 0.0f);
   }
   return out;
 }

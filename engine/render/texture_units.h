@@ -30,13 +30,13 @@ struct TextureUnit {
   // sampler2DArray: the area-light cubes of the dynamic instances alone, for static receivers
   // whose static shadows are baked (area_shadow_maps.h).
   static constexpr int kAreaDynamicShadow0 = 17;
-  // sampler2D: the static area lights' direct irradiance per lightmap texel (lightmap.glsl,
-  // area_direct_texels.h). On a driver without it LightmapPass leaves it out: those lights are
-  // evaluated per pixel, as without a bake.
-  static constexpr int kAreaDirect = 18;
+  // sampler2DArray: the static lights' irradiance vectors per lightmap texel (static_direct.glsl,
+  // static_direct_texels.h). On a driver without it those lights are evaluated per pixel, as
+  // without a bake.
+  static constexpr int kStaticDirect = 18;
   // samplerBuffer: the same per triangle corner of the probe-lit instances (probes.glsl,
-  // area_direct_corners.h); without it those instances evaluate the lights per pixel.
-  static constexpr int kCornerAreaDirect = 19;
+  // static_direct_corners.h); without it those instances evaluate the lights per pixel.
+  static constexpr int kCornerStaticDirect = 19;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

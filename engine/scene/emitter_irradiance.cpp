@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/light_falloff.h"
+
 namespace bounce {
 namespace {
 
@@ -62,6 +64,28 @@ std::array<glm::vec3, 3> areaLightIrradianceVectors(const AreaLightSet& set, std
     for (int c = 0; c < 3; ++c)
       f[static_cast<std::size_t>(c)] += set.triangles[t].radiance[c] * phi;
   }
+  return f;
+}
+
+std::array<glm::vec3, 3> punctualIrradianceVectors(const Light& light, glm::vec3 p, glm::vec3 n) {
+  std::array<glm::vec3, 3> f{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+  glm::vec3 l;
+  float w = 1.0f;
+  glm::vec3 power = light.intensity;
+  if (light.type == LightType::Directional) {
+    l = -glm::normalize(light.direction);
+    power = light.irradiance;
+  } else {
+    const glm::vec3 toLight = light.position - p;
+    const float r2 = glm::dot(toLight, toLight);
+    if (!(r2 > 0.0f)) return f;
+    l = toLight / std::sqrt(r2);
+    w = 1.0f / r2;
+    if (light.type == LightType::Spot)
+      w *= spotFalloff(light, glm::dot(-l, glm::normalize(light.direction)));
+  }
+  if (!(glm::dot(n, l) > 0.0f) || !(w > 0.0f)) return f;
+  for (int c = 0; c < 3; ++c) f[static_cast<std::size_t>(c)] = power[c] * w * l;
   return f;
 }
 

@@ -33,4 +33,9 @@ glm::vec3 areaLightIrradiance(const AreaLightSet& set, std::size_t light, glm::v
 std::array<glm::vec3, 3> areaLightIrradianceVectors(const AreaLightSet& set, std::size_t light,
                                                     glm::vec3 p, glm::vec3 n);
 
+// The same for a punctual light (shaders/lights.glsl's E without its visibility): F_c = P_c·w·l,
+// l the unit direction to the light, w = spotFalloff/r² (point: falloff 1) or 1 (directional,
+// P = E⊥), P the intensity (W/sr) or irradiance (W/m²); 0 when the light is below n's horizon.
+std::array<glm::vec3, 3> punctualIrradianceVectors(const Light& light, glm::vec3 p, glm::vec3 n);
+
 }  // namespace bounce

@@ -7,6 +7,7 @@
 // hand; a tiny smoke run is registered with CTest.
 //
 //   bench_frame_cost SCENE[=BAKE_DIR|=none]... [--width W] [--height H] [--frames N] [--msaa S]
+//                    [--live-static-lights]
 //
 // BAKE_DIR: the scene's bake; none: no bake (full is then the direct frame and the lightmap
 // frame is not drawn); nothing: SCENE.bake beside the scene or the build step's bake.
@@ -35,6 +36,7 @@ namespace {
 struct Options {
   std::vector<std::string> scenes;
   int width = 480, height = 270, frames = 10, msaa = 1;
+  bool liveStaticLights = false;  // RendererSettings::precomputedStaticDirect off
 };
 
 struct FrameTimes {
@@ -95,6 +97,7 @@ void benchScene(const std::string& argument, const Options& options) {
   const bounce::Camera camera = bounce::pickCamera(scene, "", aspect, nullptr);
   bounce::RendererSettings settings;
   settings.mode = bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct;
+  settings.precomputedStaticDirect = !options.liveStaticLights;
   bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
                                    bake ? &*bake : nullptr);
   const FrameTimes full = measure(renderer, camera, settings.mode, options);
@@ -136,6 +139,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames, "frames measured per mode")
       ->check(CLI::Range(1, 10000));
   app.add_option("--msaa", options.msaa, "samples per pixel (default 1)")->check(CLI::Range(1, 64));
+  app.add_flag("--live-static-lights", options.liveStaticLights,
+               "evaluate the static area lights per pixel on static surfaces (not from the "
+               "texels and corners computed at load), as bounce-render --live-static-lights");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto context = bounce::gl::createOffscreenContext(std::nullopt, nullptr);

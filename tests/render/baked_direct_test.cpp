@@ -245,7 +245,7 @@ TEST(BakedDirect, ProbeLitInstancesReadTheirCornersAndNoShadowMapIsDrawn) {
   for (const glm::vec3& c : counts.pixels) taps = std::max(taps, c.b);
   EXPECT_EQ(taps, 0.0f) << "the most shadow-map taps a pixel took";
   // The mat's 6 cm triangles, 1.2 m under the panel, read its light from their corners
-  // (render/area_direct_corners.h): no light is evaluated at their pixels.
+  // (render/static_direct_corners.h): no light is evaluated at their pixels.
   const uint32_t mat = 2, table = 3;
   {
     const WorldGeometry geometry = flatten(scene);

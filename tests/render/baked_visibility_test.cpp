@@ -2,8 +2,8 @@
 // closed forms, on synthetic bakes: a floor texel's V multiplies the light's exact polygon
 // irradiance; a light the texel does not name reads its "every other light" slot, else 1; the
 // atlas is read the right way up; dynamic instances never read it. Each case is drawn both ways
-// a lightmapped pixel can get the light: evaluated per pixel (--live-area-lights) and read from
-// the texels' irradiance vectors (render/area_direct_texels.h). The texels interpolate E
+// a lightmapped pixel can get the light: evaluated per pixel (--live-static-lights) and read from
+// the texels' irradiance vectors (render/static_direct_texels.h). The texels interpolate E
 // bilinearly: a panel at height d = 0.6 m gives E ≈ E₀ (1 + r²/d²)⁻², whose relative curvature
 // is at most 4/d² ≈ 11 m⁻² along each axis, so over texels of h = 1/32 m the interpolation is
 // off by at most 2 · h²/8 · 11 ≈ 2.7e-3 of E; the texel path's tolerance is 3e-3, the live
@@ -56,7 +56,7 @@ Bake visibilityBake(const Scene& scene, Record record) {
   return bake;
 }
 
-constexpr bool kBothPaths[] = {false, true};  // areaDirectTexels
+constexpr bool kBothPaths[] = {false, true};  // staticDirectTexels
 
 float tolerance(bool texels) {
   return texels ? 3e-3f : 1e-3f;
@@ -67,7 +67,7 @@ Image renderDirect(const Scene& scene, const Bake* bake, bool texels = false) {
   RendererSettings settings;
   settings.mode = RenderMode::Direct;
   settings.shadows.enabled = false;
-  settings.areaDirectTexels = texels;
+  settings.precomputedStaticDirect = texels;
   ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, bake);
   return renderer.renderImage(downCamera(1.0f), kSize, kSize);
 }
@@ -286,7 +286,7 @@ TEST(BakedVisibility, ALightmappedPixelEvaluatesNoStaticAreaLightWithTexels) {
   for (const bool texels : kBothPaths) {
     RendererSettings settings;
     settings.mode = RenderMode::Cost;
-    settings.areaDirectTexels = texels;
+    settings.precomputedStaticDirect = texels;
     ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
     const Image counts = renderer.renderImage(downCamera(1.0f), kSize, kSize);
     int checked = 0;

@@ -1,10 +1,10 @@
 // GL-free: the static area lights' irradiance vectors per triangle corner of a probe-lit instance
-// (render/area_direct_corners.h), under an off-centre panel of unequal RGB radiance, every
+// (render/static_direct_corners.h), under an off-centre panel of unequal RGB radiance, every
 // corner's visibility V = 0.4 for it. A small triangle (edge 0.1 m, 0.5 m from the panel) with
 // a different tilted normal at each corner is read from its corners: each holds V·F_c with n·F_c
 // the exact irradiance (Lambert's formula written apart, support/polygon_form_factor.h) at that
 // corner's vertex and normal. A triangle of 1 m edges as near is left per pixel: w = 0, F = 0.
-#include "render/area_direct_corners.h"
+#include "render/static_direct_corners.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ glm::vec3 exactIrradiance(const Scene& scene, glm::vec3 p, glm::vec3 n) {
   return scene.materials[0].emission * static_cast<float>(std::numbers::pi * f);
 }
 
-TEST(AreaDirectCorners, SmallTrianglesHoldVTimesEachCornersExactVectorLargeOnesAreLeftPerPixel) {
+TEST(StaticDirectCorners, SmallTrianglesHoldVTimesEachCornersExactVectorLargeOnesAreLeftPerPixel) {
   Scene scene;
   Material panel;
   panel.name = "panel";
@@ -70,7 +70,8 @@ TEST(AreaDirectCorners, SmallTrianglesHoldVTimesEachCornersExactVectorLargeOnesA
   const AreaLightSet lights = sceneAreaLights(scene);
   ASSERT_EQ(lights.lights.size(), 1u);
 
-  const std::vector<glm::vec4> f = areaDirectCorners(scene, probes, lights, 1);
+  const std::vector<glm::vec4> f =
+      staticDirectCorners(scene, probes, PrecomputedLights{&lights, 1, {}, {}});
   ASSERT_EQ(f.size(), 18u);
   for (std::size_t k = 0; k < 3; ++k) {
     const glm::vec3 n = object.normals[k];

@@ -1,4 +1,4 @@
-#include "render/area_direct_corners.h"
+#include "render/static_direct_corners.h"
 
 #include <algorithm>
 #include <array>
@@ -14,31 +14,39 @@ namespace bounce {
 
 namespace {
 
-// Distance (m) from `p` to the nearest of the first `count` lights' bounding spheres (0 inside).
-float distanceToLights(const AreaLightSet& lights, std::size_t count, glm::vec3 p) {
+// Distance (m) from `p` to the nearest of `lights`: an area light's bounding sphere (0 inside),
+// a point or spot light's position; a directional light has no near field.
+float distanceToLights(const PrecomputedLights& lights, glm::vec3 p) {
   float nearest = std::numeric_limits<float>::infinity();
-  for (std::size_t l = 0; l < count; ++l) {
-    const AreaLight& light = lights.lights[l];
-    if (light.bakeDirect) continue;
-    nearest = std::min(nearest, std::max(glm::length(p - light.centre) - light.radius, 0.0f));
+  if (lights.area) {
+    const AreaLightSet& area = *lights.area;
+    const std::size_t count = std::min({lights.areaCount, area.staticCount(), area.lights.size()});
+    for (std::size_t l = 0; l < count; ++l) {
+      const AreaLight& light = area.lights[l];
+      if (light.bakeDirect) continue;
+      nearest = std::min(nearest, std::max(glm::length(p - light.centre) - light.radius, 0.0f));
+    }
   }
+  for (std::size_t i = 0; i < lights.punctual.size(); ++i)
+    if (i < lights.precomputed.size() && lights.precomputed[i] &&
+        lights.punctual[i].type != LightType::Directional)
+      nearest = std::min(nearest, glm::length(p - lights.punctual[i].position));
   return nearest;
 }
 
 }  // namespace
 
-std::vector<glm::vec4> areaDirectCorners(const Scene& scene, const IrradianceProbes& probes,
-                                         const AreaLightSet& lights, std::size_t lightCount) {
+std::vector<glm::vec4> staticDirectCorners(const Scene& scene, const IrradianceProbes& probes,
+                                           const PrecomputedLights& lights) {
   const std::vector<TexelVisibility>& corners = probes.visibility.corners;
   std::vector<glm::vec4> direct(3 * corners.size(), glm::vec4(0.0f));
-  const std::size_t count = std::min({lightCount, lights.staticCount(), lights.lights.size()});
   for (const ProbeGrid& grid : probes.grids) {
     if (grid.cornerCount == 0) continue;
     const Instance& instance = scene.instances.at(grid.instance);
     const Mesh& mesh = scene.meshes.at(instance.mesh);
     if (grid.cornerCount != mesh.indices.size() ||
         static_cast<std::size_t>(grid.firstCorner) + grid.cornerCount > corners.size())
-      throw std::invalid_argument("areaDirectCorners: instance " + instance.name +
+      throw std::invalid_argument("staticDirectCorners: instance " + instance.name +
                                   "'s corners do not match its mesh");
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.transform)));
     tbb::parallel_for(std::size_t{0}, std::size_t{grid.cornerCount / 3}, [&](std::size_t t) {
@@ -53,17 +61,11 @@ std::vector<glm::vec4> areaDirectCorners(const Scene& scene, const IrradiancePro
       const float edge =
           std::max({glm::length(x[1] - x[0]), glm::length(x[2] - x[1]), glm::length(x[0] - x[2])});
       const glm::vec3 centre = (x[0] + x[1] + x[2]) / 3.0f;
-      if (!(edge <= kMaxEdgeOverDistance * distanceToLights(lights, count, centre))) return;
+      if (!(edge <= kMaxEdgeOverDistance * distanceToLights(lights, centre))) return;
       for (std::size_t k = 0; k < 3; ++k) {
         const std::size_t corner = grid.firstCorner + 3 * t + k;
         glm::vec3 f[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-        for (std::size_t l = 0; l < count; ++l) {
-          if (lights.lights[l].bakeDirect) continue;  // in the probes already
-          const float visible = visibleFraction(corners[corner], static_cast<uint16_t>(l));
-          if (!(visible > 0.0f)) continue;
-          const std::array<glm::vec3, 3> fl = areaLightIrradianceVectors(lights, l, x[k], n[k]);
-          for (std::size_t c = 0; c < 3; ++c) f[c] += visible * fl[c];
-        }
+        addStaticDirect(lights, corners[corner], probes.visibility.lightCount, x[k], n[k], f);
         for (std::size_t c = 0; c < 3; ++c) direct[3 * corner + c] = glm::vec4(f[c], 1.0f);
       }
     });

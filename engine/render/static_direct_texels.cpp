@@ -1,6 +1,7 @@
-#include "render/area_direct_texels.h"
+#include "render/static_direct_texels.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -57,7 +58,7 @@ std::vector<TexelSurface> texelSurfaces(const Scene& scene, const LightmapLayout
     const Instance& instance = scene.instances.at(region.instance);
     const Mesh& mesh = scene.meshes.at(instance.mesh);
     if (region.cornerUv.size() != mesh.indices.size())
-      throw std::invalid_argument("areaDirectTexels: instance " + instance.name +
+      throw std::invalid_argument("staticDirectTexels: instance " + instance.name +
                                   "'s lightmap corners do not match its mesh");
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.transform)));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -103,26 +104,42 @@ std::vector<TexelSurface> texelSurfaces(const Scene& scene, const LightmapLayout
 
 }  // namespace
 
-std::vector<glm::vec3> areaDirectTexels(const Scene& scene, const LightmapLayout& layout,
-                                        const BakedVisibility& visibility,
-                                        const AreaLightSet& lights, std::size_t lightCount) {
+void addStaticDirect(const PrecomputedLights& lights, const TexelVisibility& visible,
+                     uint32_t areaLightCount, glm::vec3 x, glm::vec3 n, glm::vec3 f[3]) {
+  const auto add = [&](const std::array<glm::vec3, 3>& light, float v) {
+    for (std::size_t c = 0; c < 3; ++c) f[c] += v * light[c];
+  };
+  if (lights.area) {
+    const AreaLightSet& area = *lights.area;
+    const std::size_t count = std::min({lights.areaCount, area.staticCount(), area.lights.size()});
+    for (std::size_t l = 0; l < count; ++l) {
+      if (area.lights[l].bakeDirect) continue;
+      const float v = visibleFraction(visible, static_cast<uint16_t>(l));
+      if (v > 0.0f) add(areaLightIrradianceVectors(area, l, x, n), v);
+    }
+  }
+  for (std::size_t i = 0; i < lights.punctual.size(); ++i) {
+    if (i >= lights.precomputed.size() || !lights.precomputed[i]) continue;
+    const float v = visibleFraction(visible, static_cast<uint16_t>(areaLightCount + i));
+    if (v > 0.0f) add(punctualIrradianceVectors(lights.punctual[i], x, n), v);
+  }
+}
+
+std::vector<glm::vec3> staticDirectTexels(const Scene& scene, const LightmapLayout& layout,
+                                          const BakedVisibility& visibility,
+                                          const PrecomputedLights& lights) {
   if (visibility.width != layout.width || visibility.height != layout.height)
-    throw std::invalid_argument("areaDirectTexels: the visibility is not the layout's size");
+    throw std::invalid_argument("staticDirectTexels: the visibility is not the layout's size");
   const std::vector<TexelSurface> surfaces = texelSurfaces(scene, layout);
   const std::size_t layer = surfaces.size();
   std::vector<glm::vec3> direct(3 * layer, glm::vec3(0.0f));
-  const std::size_t count = std::min({lightCount, lights.staticCount(), lights.lights.size()});
   tbb::parallel_for(std::size_t{0}, layer, [&](std::size_t t) {
     const TexelSurface& surface = surfaces[t];
     if (!std::isfinite(surface.distance) || surface.normal == glm::vec3(0.0f)) return;
-    for (std::size_t l = 0; l < count; ++l) {
-      if (lights.lights[l].bakeDirect) continue;  // in the lightmap already
-      const float v = visibleFraction(visibility.texels[t], static_cast<uint16_t>(l));
-      if (!(v > 0.0f)) continue;
-      const std::array<glm::vec3, 3> f =
-          areaLightIrradianceVectors(lights, l, surface.position, surface.normal);
-      for (std::size_t c = 0; c < 3; ++c) direct[c * layer + t] += v * f[c];
-    }
+    glm::vec3 f[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+    addStaticDirect(lights, visibility.texels[t], visibility.lightCount, surface.position,
+                    surface.normal, f);
+    for (std::size_t c = 0; c < 3; ++c) direct[c * layer + t] = f[c];
   });
   return direct;
 }
