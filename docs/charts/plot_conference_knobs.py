@@ -22,7 +22,7 @@ MARKERS = {"msaa": "o", "shadow_resolution": "s", "shadow_filter": "^", "shadows
 LABELS = {"msaa": "samples per pixel (--msaa)", "shadow_resolution": "spot map texels",
           "shadow_filter": "shadow filter", "shadows": "no shadows",
           "light_culling": "no light culling", "probes": "VPLs for the probe-lit",
-          "area_lights": "static area lights per pixel (--live-static-lights)"}
+          "area_lights": "static lights per pixel (--live-static-lights)"}
 
 
 def main():
