@@ -21,16 +21,7 @@ constexpr int kSize = 32;
 // A 1 m floor at y = 0 (atlas u = x + ½, v = z + ½) under a 0.4 m square emitter 0.6 m up facing
 // down, seen from 1 m above; no blocker, so the unshadowed frame is the reference.
 Scene floorUnderPanel() {
-  Scene scene;
-  Material floor;
-  floor.name = "floor";
-  floor.albedo = glm::vec3(0.6f);
-  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
-  Material panel;
-  panel.name = "panel";
-  panel.emission = glm::vec3(3.0f, 2.0f, 1.0f);
-  addQuad(scene, {-0.2f, 0.6f, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, panel);  // (x × z) = −y
-  return scene;
+  return bounce::test::floorUnderPanel({-0.2f, 0.6f, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f});
 }
 
 // A bake with a black lightmap and visibility `record(x, y)` for texel (x, y) of a kSize atlas.

@@ -58,6 +58,21 @@ inline uint32_t addInstance(Scene& scene, Mesh mesh, const Material& material,
   return instance;
 }
 
+// A grey 1 m floor at y = 0 (unitFloorRegion's atlas u = x + ½, v = z + ½) under an emissive
+// quad of radiance (3, 2, 1) W/(sr·m²) at `corner` spanning u and v (u × v = −y: facing down).
+inline Scene floorUnderPanel(glm::vec3 corner, glm::vec3 u, glm::vec3 v) {
+  Scene scene;
+  Material floor;
+  floor.name = "floor";
+  floor.albedo = glm::vec3(0.6f);
+  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
+  Material panel;
+  panel.name = "panel";
+  panel.emission = glm::vec3(3.0f, 2.0f, 1.0f);
+  addQuad(scene, corner, u, v, panel);
+  return scene;
+}
+
 // A hand-made manifest for a bake held in memory: format version and the scene's hash (writeBake
 // also needs the atlas size and regions of the layout: manifestFor).
 // The atlas region of a floor in the square |x|, |z| ≤ ½ m (instance 0 of `scene`), laid out

@@ -11,10 +11,10 @@
 
 #include <numbers>
 
+#include "lightmap_scenes.h"
 #include "scene/area_lights.h"
 #include "scene/light_falloff.h"
 #include "support/polygon_form_factor.h"
-#include "test_scenes.h"
 
 namespace bounce::test {
 namespace {
@@ -23,16 +23,7 @@ constexpr int kSize = 32;
 constexpr float kV = 0.4f;
 
 Scene floorUnderOffCentrePanel() {
-  Scene scene;
-  Material floor;
-  floor.name = "floor";
-  floor.albedo = glm::vec3(0.6f);
-  addQuad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, -1}, floor);
-  Material panel;
-  panel.name = "panel";
-  panel.emission = glm::vec3(3.0f, 2.0f, 1.0f);
-  addQuad(scene, {0.1f, 0.5f, -0.4f}, {0.3f, 0, 0}, {0, 0, 0.2f}, panel);  // faces −y
-  return scene;
+  return floorUnderPanel({0.1f, 0.5f, -0.4f}, {0.3f, 0, 0}, {0, 0, 0.2f});
 }
 
 // The floor's point (x, 0, z) at atlas texel coordinates s (texels): u = ¼ + ½(x + ½), likewise
