@@ -54,6 +54,11 @@ TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
 // agree within a factor of 2 (the estimate ignores the low-discrepancy sampler's gain, so it
 // may only err high).
 TEST(AdaptiveSampling, EstimatedErrorMatchesTheActualErrorAndTheTargetIsMet) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 17.8 s under AddressSanitizer, most of it the converged bake's samples; the same code
+  // runs under ASan in the smaller tests. CI's whole run keeps to its 25 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   test::World world;
   test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);

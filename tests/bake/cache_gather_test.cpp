@@ -121,6 +121,11 @@ TEST(CacheGather, ReportedErrorHoldsTheCachesNoise) {
 // texel there would bring the outside's light into the slot. The close guard (hits nearer than
 // two texel edges go on as whole paths) keeps the slab's underside at what whole paths give.
 TEST(CacheGather, CloseGuardKeepsANarrowSlotAsWholePathsLightIt) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 17.1 s under AddressSanitizer, most of it the whole-path bake it is compared with; the
+  // same code runs under ASan in the smaller tests. CI's whole run keeps to its 25 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   test::World world;
   const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.6f));
   const uint32_t lamp = test::addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(20.0f));

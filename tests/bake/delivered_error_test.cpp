@@ -31,6 +31,11 @@ namespace {
 // cache does not fail here (0.73 / 0.80: the 32-sample cache's error is a small part of this
 // room's); CacheGather.ReportedErrorHoldsTheCachesNoise guards that.
 TEST(DeliveredError, ReportedErrorIsTheDeliveredMapsAgainstAConvergedBake) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 26.5 s under AddressSanitizer, most of it the converged bake's samples; the same code
+  // runs under ASan in the smaller tests. CI's whole run keeps to its 25 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   test::World world;
   test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.0625f, 80);

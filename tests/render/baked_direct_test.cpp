@@ -91,6 +91,11 @@ Image renderDirect(const Scene& scene, const Bake* bake, const Camera& camera,
 
 // The tracer's reference, 1024 spp: its noise adds ~1% to the mean error (referenceNoise).
 TEST(BakedDirect, SixteenPanelsOverRailsAndPostsWithinFivePercentOfThePathTracer) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 9.8 s under AddressSanitizer, most of it the path tracer's reference; the same code runs
+  // under ASan in the smaller tests. CI's whole run keeps to its 25 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   const Scene scene = railsUnderSixteenPanels();
   const Camera camera = overTheRoom();
   const SceneBake run = bakeVisibility(scene);

@@ -117,6 +117,11 @@ TEST(FurnaceFrame, IndirectLightIsUniformAtEdgesAndCorners) {
 // measured), and the test fails with the old filter (worst 6.0%) or the old stop from 32
 // samples (bias −1.7%, worst 5.0%).
 TEST(FurnaceFrame, DefaultBakeIsWithinThreePercentEverywhere) {
+#ifdef __SANITIZE_ADDRESS__
+  // About 7.0 s under AddressSanitizer, most of it the bake's samples; the same code runs under
+  // ASan in the smaller tests. CI's whole run keeps to its 25 minutes.
+  GTEST_SKIP() << "an accuracy measurement: run in the release build";
+#endif
   const auto [scene, camera] = furnace();
   SceneBakeSettings settings = lightmapOnlySettings();
   settings.texelBudget = 4096;
