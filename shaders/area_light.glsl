@@ -146,7 +146,8 @@ vec3 areaIrradiance(LightList lights, vec3 p, vec3 n, vec3 ng, BakedVisibilityTe
     bool visibilityBaked = uHasBakedVisibility && l < uBakedLightCount;
     bool inTexels = fromTexels && visibilityBaked;
     int slot = areaShadowSlot(int(rows.x));
-    bool dynamicShadow = uAreaDynamicShadows && slot >= 0;
+    // The dynamic cube only where a dynamic instance may stand between p and the light.
+    bool dynamicShadow = uAreaDynamicShadows && slot >= 0 && dynamicCasterBetween(slot, p);
     if (inTexels && !dynamicShadow) continue;  // all of it is in the texels
     gCostLights += 1;
     vec3 e = vec3(0.0);

@@ -35,6 +35,8 @@ in vec2 vLightmapUvAtCentre;
 flat in vec2 vTriangleLightmapUv[3];  // the triangle's three lightmap coordinates
 flat in int vTriangle;                 // the triangle's number in the draw (forward.geom)
 centroid in vec3 vCornerWeights;       // the fragment's barycentric weights of its corners
+centroid in vec3 vVplVertexLight;      // a dynamic instance's VPL light from its corners, W/m²
+flat in int vVplFromVertices;          // this triangle reads it (forward.geom)
 
 uniform vec3 uAlbedo;              // ρ, linear RGB
 uniform vec3 uEmission;            // W/(sr·m²)
@@ -105,7 +107,16 @@ void main() {
     if (staticPrecomputed) direct += staticDirect(lightmapUv, vTriangle, vCornerWeights, n);
   }
   vec3 vplClamped = vec3(0.0), vplRemoved = vec3(0.0);
-  if (modeUsesVpls()) vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
+  if (modeUsesVpls()) {
+    // A dynamic instance's front face reads the VPLs gathered at its vertices where its
+    // triangle is small enough (forward.geom, render/vpl_vertex_light.h); the vpl modes show
+    // every pixel's own gather.
+    if (vVplFromVertices != 0 && gl_FrontFacing && uLightingMode != LIGHTING_VPL &&
+        uLightingMode != LIGHTING_VPL_CLAMP)
+      vplClamped = vVplVertexLight;
+    else
+      vplIrradianceParts(vWorldPosition, n, ng, vplClamped, vplRemoved);
+  }
   vec3 probe = vec3(0.0);
   if (uHasProbes) probe = probeIrradiance(vWorldPosition, n);
   // The cost view: what the lines above evaluated (cost.glsl), as raw counts.

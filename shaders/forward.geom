@@ -12,6 +12,7 @@ in vec3 vsWorldPosition[];
 in vec3 vsNormal[];
 in vec2 vsUv[];
 in vec2 vsLightmapUv[];
+in vec4 vsVplVertexLight[];
 
 centroid out vec3 vWorldPosition;
 centroid out vec3 vNormal;
@@ -27,8 +28,22 @@ flat out vec2 vTriangleLightmapUv[3];
 // is per triangle corner (baked_visibility.glsl). Centroid, as the position: inside the triangle.
 flat out int vTriangle;
 centroid out vec3 vCornerWeights;
+// A dynamic instance's VPL light interpolated from its corners (render/vpl_vertex_light.h), and
+// whether this triangle reads it: not when its longest edge h exceeds VPL_MAX_EDGE_OVER_DISTANCE
+// times the nearest light's distance d at any corner (interpolation's error grows as (h/d)²).
+centroid out vec3 vVplVertexLight;
+flat out int vVplFromVertices;
+
+uniform bool uHasVplVertexLight;
 
 void main() {
+  int fromVertices = 0;
+  if (uHasVplVertexLight) {
+    vec3 a = vsWorldPosition[0], b = vsWorldPosition[1], c = vsWorldPosition[2];
+    float h2 = max(dot(b - a, b - a), max(dot(c - b, c - b), dot(a - c, a - c)));
+    float d = min(vsVplVertexLight[0].a, min(vsVplVertexLight[1].a, vsVplVertexLight[2].a));
+    fromVertices = h2 <= VPL_MAX_EDGE_OVER_DISTANCE * VPL_MAX_EDGE_OVER_DISTANCE * d * d ? 1 : 0;
+  }
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
     vWorldPosition = vsWorldPosition[i];
@@ -42,6 +57,8 @@ void main() {
     vTriangleLightmapUv[2] = vsLightmapUv[2];
     vTriangle = gl_PrimitiveIDIn;
     vCornerWeights = vec3(i == 0, i == 1, i == 2);
+    vVplVertexLight = vsVplVertexLight[i].rgb;
+    vVplFromVertices = fromVertices;
     EmitVertex();
   }
   EndPrimitive();

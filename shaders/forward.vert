@@ -9,12 +9,19 @@ layout(location = 3) in vec2 aLightmapUv;  // lightmap atlas UV; (0,0) when the 
 uniform mat4 uModel;         // object → world
 uniform mat3 uNormalMatrix;  // inverse transpose of uModel's linear part
 uniform mat4 uViewProjection;
+// A dynamic instance's VPL light per vertex (render/vpl_vertex_light.h): this draw's corner k
+// is vertex uVplCornerVertex[k], whose light is texel uVplVertexFirst + vertex of the target.
+uniform bool uHasVplVertexLight;
+uniform usamplerBuffer uVplCornerVertex;
+uniform sampler2D uVplVertexLight;  // rgb: E, W/m²; a: the nearest light's distance, m
+uniform int uVplVertexFirst;
 
 // To forward.geom, which hands them on per triangle.
 out vec3 vsWorldPosition;
 out vec3 vsNormal;
 out vec2 vsUv;
 out vec2 vsLightmapUv;
+out vec4 vsVplVertexLight;
 
 void main() {
   vec4 world = uModel * vec4(aPosition, 1.0);
@@ -23,5 +30,11 @@ void main() {
   vsNormal = normalize(uNormalMatrix * aNormal);
   vsUv = aUv;
   vsLightmapUv = aLightmapUv;
+  vsVplVertexLight = vec4(0.0);
+  if (uHasVplVertexLight) {
+    int v = uVplVertexFirst + int(texelFetch(uVplCornerVertex, gl_VertexID).x);
+    vsVplVertexLight = texelFetch(uVplVertexLight,
+                                  ivec2(v % VPL_VERTEX_LIGHT_WIDTH, v / VPL_VERTEX_LIGHT_WIDTH), 0);
+  }
   gl_Position = uViewProjection * world;
 }

@@ -38,6 +38,34 @@ uniform vec2 uAreaShadowRows[MAX_AREA_SHADOWS];  // the light's emitter-table ro
 // xyz: the light's unit front normal n_L (0 when its faces cancel), w: 1 if double-sided
 uniform vec4 uAreaShadowNormal[MAX_AREA_SHADOWS];
 uniform vec3 uAreaShadowPoints[MAX_AREA_SHADOWS * AREA_SHADOW_SAMPLES];  // x_k, world metres
+// The dynamic instances' bounding spheres (centre, radius; m); count −1: too many, test none.
+uniform int uDynamicCasterCount;
+uniform vec4 uDynamicCasters[MAX_DYNAMIC_CASTERS];
+
+// Whether a dynamic instance may stand between receiver p and shadowed light `light`. The light
+// lies within its radius r_L of its centre c, so every segment from p to a point of it lies in
+// the cone from p around p→c of half-angle α, sin α = r_L/|c − p|; a caster sphere (s, R) at
+// distance L from p, seen within β of its centre (sin β = R/L), meets that cone only if the
+// angle θ between s − p and c − p is ≤ α + β. Otherwise it blocks none of the light, and the
+// dynamic cube's V is 1 without a tap.
+bool dynamicCasterBetween(int light, vec3 p) {
+  if (uDynamicCasterCount < 0) return true;
+  vec3 axis = uAreaShadowOrigin[light] - p;
+  float distance = length(axis);
+  if (distance <= uAreaShadowParams[light].z) return true;
+  axis /= distance;
+  float sinA = uAreaShadowParams[light].z / distance, cosA = sqrt(1.0 - sinA * sinA);
+  for (int i = 0; i < uDynamicCasterCount; ++i) {
+    vec4 s = uDynamicCasters[i];
+    vec3 v = s.xyz - p;
+    float l = length(v);
+    if (l <= s.w) return true;
+    float sinB = s.w / l, cosB = sqrt(1.0 - sinB * sinB);
+    float cosAB = cosA * cosB - sinA * sinB;  // cos(α + β); α + β ≥ π/2 lets cos θ ≥ 0 through
+    if (dot(v, axis) >= l * cosAB) return true;
+  }
+  return false;
+}
 
 // Distance (metres) from the light's centre to the nearest surface along `direction` (of the
 // dynamic instances alone when `dynamicOnly`).

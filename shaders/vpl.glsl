@@ -27,10 +27,13 @@ uniform vec3 uVplCellSize;     // m
 uniform ivec3 uVplGridCells;   // cells per axis
 uniform float uVplClampDistance;  // r, m
 
-// E (clamped, as above) and what the clamp removed: Σ Φ/π·cos·cos·(1/d² − 1/max(d², r²))·V.
-void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 removed) {
+// E (clamped, as above), what the clamp removed: Σ Φ/π·cos·cos·(1/d² − 1/max(d², r²))·V, and
+// the squared distance (m²) to the nearest light that gave p any (1e30 when none did).
+void vplIrradianceNearest(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 removed,
+                          out float nearestD2) {
   clamped = vec3(0.0);
   removed = vec3(0.0);
+  nearestD2 = 1e30;
   ivec3 c = clamp(ivec3(floor((p - uVplGridOrigin) / uVplCellSize)), ivec3(0), uVplGridCells - 1);
   int cell = c.x + uVplGridCells.x * (c.y + uVplGridCells.y * c.z);
   uvec2 cellEntries = vplCutRange(cell);
@@ -54,8 +57,14 @@ void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 remo
       float clampedD2 = max(d2, r2);
       clamped += intensity / clampedD2;
       removed += intensity * ((clampedD2 - d2) / (d2 * clampedD2));
+      nearestD2 = min(nearestD2, d2);
     }
   }
+}
+
+void vplIrradianceParts(vec3 p, vec3 n, vec3 ng, out vec3 clamped, out vec3 removed) {
+  float nearestD2;
+  vplIrradianceNearest(p, n, ng, clamped, removed, nearestD2);
 }
 
 vec3 vplIrradiance(vec3 p, vec3 n, vec3 ng) {

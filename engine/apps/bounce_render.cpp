@@ -45,6 +45,7 @@ struct Options {
   bool noProbes = false;
   bool liveStaticLights = false;
   bool noVplShadows = false;
+  bool vplPerPixel = false;
   bool noLightCulling = false;
   float shadowFilterRadius = 1.5f;
   std::optional<uint64_t> vplPaths;  // draw the VPLs of the bake's first N light paths
@@ -66,6 +67,7 @@ bounce::RendererSettings rendererSettings(const Options& options, bool hasBake) 
   settings.probes = !options.noProbes;
   settings.precomputedStaticDirect = !options.liveStaticLights;
   settings.vpls.shadows.enabled = !options.noVplShadows;
+  settings.vpls.perVertex = !options.vplPerPixel;
   // The cut-off follows the exposure the PNG is shown at (render/light_cutoff.h).
   settings.lightCulling.enabled = !options.noLightCulling;
   settings.lightCulling.irradianceFloor =
@@ -380,6 +382,9 @@ void addVplOptions(CLI::App& app, Options& options) {
                "shade every light at every pixel (no per-cluster light lists; by default a "
                "light is left out where it gives less irradiance than half an 8-bit code value "
                "at --exposure)");
+  app.add_flag("--vpl-per-pixel", options.vplPerPixel,
+               "let every pixel of a dynamic instance gather the VPLs itself, instead of "
+               "interpolating them gathered at its vertices (for comparison)");
   app.add_flag("--no-vpl-shadows", options.noVplShadows,
                "draw every VPL unoccluded (no shadow cubes for the VPL groups' parts)");
 }

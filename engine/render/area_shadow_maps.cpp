@@ -98,6 +98,12 @@ ShadowDrawCount AreaShadowMaps::render(const GpuScene& scene, const ViewVolume& 
   for (std::size_t i = 0; !moved && i < instances.size(); ++i)
     moved = instances[i].model != drawnModels_[i];
   if (moved) {
+    dynamicCasters_.clear();
+    for (const GpuInstance& instance : instances)
+      if (instance.mobility == Mobility::Dynamic && !instance.worldBox.empty())
+        dynamicCasters_.push_back(instance.worldSphere);
+    tooManyDynamicCasters_ = dynamicCasters_.size() > kMaxDynamicCasters;
+    if (tooManyDynamicCasters_) dynamicCasters_.clear();
     if (scene.emitterVersion() != emitterVersion_)
       for (Cube& cube : cubes_)
         if (cube.occupied) place(scene, cube);
@@ -194,6 +200,11 @@ void AreaShadowMaps::bind(gl::Program& forward) const {
   forward.set("uAreaShadowRows", std::span<const glm::vec2>(rows));
   forward.set("uAreaShadowNormal", std::span<const glm::vec4>(normals));
   forward.set("uAreaShadowPoints", std::span<const glm::vec3>(points));
+  std::vector<glm::vec4> casters(kMaxDynamicCasters, glm::vec4(0.0f));
+  std::copy(dynamicCasters_.begin(), dynamicCasters_.end(), casters.begin());
+  forward.set("uDynamicCasterCount",
+              tooManyDynamicCasters_ ? -1 : static_cast<int>(dynamicCasters_.size()));
+  forward.set("uDynamicCasters", std::span<const glm::vec4>(casters));
 }
 
 }  // namespace bounce

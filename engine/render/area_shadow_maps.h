@@ -26,6 +26,10 @@ class GpuScene;
 // Must match AREA_SHADOW_SAMPLES in shaders/shadow_area.glsl.
 constexpr int kAreaShadowSamples = 32;
 
+// Dynamic instances whose bounding spheres the lit pass tests before reading the dynamic cubes
+// (shaders/shadow_area.glsl, dynamicCasterBetween); with more, every pixel reads them.
+inline constexpr std::size_t kMaxDynamicCasters = 16;
+
 class AreaShadowMaps {
  public:
   AreaShadowMaps(const ShadowSettings& settings) : settings_(settings) {}
@@ -41,6 +45,8 @@ class AreaShadowMaps {
   // instance moved (the lights are re-read), or when it comes into view after being cleared.
   ShadowDrawCount render(const GpuScene& scene, const ViewVolume& view, float floor,
                          gl::Program& depthProgram, gl::DepthTarget& target);
+  // Also the dynamic instances' bounding spheres (uDynamicCasters), with which a pixel skips
+  // the dynamic cube where no dynamic instance can stand between it and the light.
   void bind(gl::Program& forward) const;
   // With baked visibility the static surfaces already hold the static occluders' shadows; what
   // they still need from the maps is the dynamic instances' (V = V_baked · V_dynamic): on, each
@@ -86,6 +92,10 @@ class AreaShadowMaps {
   int slots_ = 0;       // most cubes at once (areaShadowSlotCapacity, at most the lights)
   ShadowChoice choice_;
   std::vector<glm::mat4> drawnModels_;  // every instance's model when the faces were drawn
+  // The dynamic instances' bounding spheres (centre, radius; m) at the last render; empty with
+  // more than kMaxDynamicCasters of them (the pixels then test every cube).
+  std::vector<glm::vec4> dynamicCasters_;
+  bool tooManyDynamicCasters_ = false;
   int emitterVersion_ = -1;
   std::size_t bakedVisibilityLights_ = 0;
   bool bakedDirectSkipped_ = false;

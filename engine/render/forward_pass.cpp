@@ -11,6 +11,7 @@
 #include "render/shadow_pass.h"
 #include "render/texture_units.h"
 #include "render/vpl_pass.h"
+#include "render/vpl_vertex_light.h"
 
 namespace bounce {
 
@@ -20,7 +21,8 @@ ForwardPass::ForwardPass(const std::filesystem::path& shaderDir)
 
 void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
                        const ShadowPass& shadows, const LightmapPass& lightmap,
-                       const ProbePass& probes, const VplPass& vpls, RenderMode mode,
+                       const ProbePass& probes, const VplPass& vpls,
+                       const VplVertexLight& vplVertexLight, RenderMode mode,
                        const glm::mat4& viewProjection, gl::RenderTarget& target) {
   target.bind();
   gl::clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
@@ -38,6 +40,7 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Li
   lightmap.bind(program_, mode);
   probes.bind(program_);
   vpls.bind(program_);
+  vplVertexLight.bind(program_);
 
   const std::span<const GpuInstance> instances = scene.instances();
   for (std::size_t i = 0; i < instances.size(); ++i) {
@@ -45,6 +48,7 @@ void ForwardPass::draw(const GpuScene& scene, const LightTable& lights, const Li
     lightmap.setInstance(program_, i);
     probes.setInstance(program_, i);
     vpls.setInstance(program_, scene, i, lightmap.lightmapped(i) || probes.probeLit(i));
+    vplVertexLight.setInstance(program_, scene, i);
     const GpuMaterial& material = scene.bindMaterial(instance, program_, TextureUnit::kAlbedo);
     // glTF: a single-sided surface is invisible from behind (and emits only forwards).
     gl::setBackFaceCulling(!material.doubleSided, instance.mirrored);

@@ -21,6 +21,7 @@ class LightmapPass;
 class ProbePass;
 class ShadowPass;
 class VplPass;
+class VplVertexLight;
 namespace gl {
 class RenderTarget;
 }  // namespace gl
@@ -32,8 +33,8 @@ class ForwardPass {
   // Clears `target` to black and draws the scene seen through `viewProjection`.
   void draw(const GpuScene& scene, const LightTable& lights, const LightCulling& culling,
             const ShadowPass& shadows, const LightmapPass& lightmap, const ProbePass& probes,
-            const VplPass& vpls, RenderMode mode, const glm::mat4& viewProjection,
-            gl::RenderTarget& target);
+            const VplPass& vpls, const VplVertexLight& vplVertexLight, RenderMode mode,
+            const glm::mat4& viewProjection, gl::RenderTarget& target);
 
  private:
   gl::Program program_;

@@ -26,6 +26,7 @@
 #include "render/static_direct_texels.h"
 #include "render/view.h"
 #include "render/vpl_pass.h"
+#include "render/vpl_vertex_light.h"
 #include "vpl_runtime/vpl_occlusion.h"
 #include "vpl_runtime/vpl_paths.h"
 
@@ -40,6 +41,7 @@ struct ForwardRenderer::Passes {
   LightmapPass lightmap;
   ProbePass probes;
   VplPass vpls;
+  VplVertexLight vplVertexLight;
   ForwardPass forward;
   gl::GpuPassTimers timers;
   // What the static lights' texels and corners are computed from (kept for setLight: a light
@@ -58,6 +60,7 @@ struct ForwardRenderer::Passes {
         shadows(scene, lights, settings.shadows, shaderDir, warnings),
         culling(settings.lightCulling),
         vpls(shaderDir, settings.vpls.shadows, warnings),
+        vplVertexLight(source, shaderDir),
         forward(shaderDir) {
     lightTable.setPunctual(lights.texels(shadows.lightSlots()));
   }
@@ -414,10 +417,18 @@ void ForwardRenderer::render(const Camera& camera, gl::RenderTarget& target) {
                    p.lights.listOrder(p.shadows.lightSlots()));
   profile_.addCpu("light culling", millisecondsSince(cullingStart));
   p.lightTable.update();
+  // The dynamic instances' VPL light, gathered at their vertices (not in the vpl modes, which
+  // show every pixel's own gather).
+  if (settings_.vpls.perVertex && vplsShaded && !everySurface && p.vpls.attached()) {
+    const Timed timed(&p.timers, "VPL vertex light");
+    p.vplVertexLight.render(p.scene, p.lightTable, p.vpls);
+  } else {
+    p.vplVertexLight.clear();
+  }
   {
     const Timed timed(&p.timers, "lit forward pass");
     p.forward.draw(p.scene, p.lightTable, p.culling, p.shadows, p.lightmap, p.probes, p.vpls,
-                   settings_.mode, cameraViewProjection, target);
+                   p.vplVertexLight, settings_.mode, cameraViewProjection, target);
   }
   profile_.addCpu("frame", millisecondsSince(cpuStart));
 }

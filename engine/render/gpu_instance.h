@@ -22,6 +22,9 @@ struct GpuInstance {
   bool mirrored = false;         // det < 0: winding flips, so culling flips
   Box worldBox;                  // metres
   gl::VertexArray vertexArray;
+  // A sphere around its world vertices: centre (m) and radius (m), from its mesh's sphere about
+  // the mesh box's centre, the radius scaled by the transform's largest axis scale.
+  glm::vec4 worldSphere{0.0f};
 };
 
 }  // namespace bounce

@@ -1,6 +1,7 @@
 #include "render/gpu_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "scene/area_light_outline.h"
@@ -54,12 +55,26 @@ GpuMaterial gpuMaterial(const Material& m, std::size_t textureCount) {
   return g;
 }
 
-void placeInstance(GpuInstance& instance, const glm::mat4& transform, const Box& meshBox) {
+// The largest distance (m) of a vertex from the mesh box's centre.
+float meshRadius(const Mesh& mesh, const Box& box) {
+  const glm::vec3 centre = 0.5f * (box.lower + box.upper);
+  float r2 = 0.0f;
+  for (const glm::vec3& p : mesh.positions) r2 = std::max(r2, glm::dot(p - centre, p - centre));
+  return std::sqrt(r2);
+}
+
+void placeInstance(GpuInstance& instance, const glm::mat4& transform, const Box& meshBox,
+                   float meshRadius) {
   instance.model = transform;
   const glm::mat3 linear(transform);
   instance.normalMatrix = glm::transpose(glm::inverse(linear));
   instance.mirrored = glm::determinant(linear) < 0.0f;
   instance.worldBox = transformBox(meshBox, transform);
+  if (meshBox.empty()) return;
+  const float scale =
+      std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  const glm::vec3 centre(transform * glm::vec4(0.5f * (meshBox.lower + meshBox.upper), 1.0f));
+  instance.worldSphere = glm::vec4(centre, meshRadius * scale);
 }
 
 }  // namespace
@@ -69,6 +84,7 @@ GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
   for (const Mesh& mesh : scene.meshes) {
     meshes_.push_back(std::make_unique<gl::MeshBuffer>(meshCorners(mesh)));
     meshBoxes_.push_back(meshBox(mesh));
+    meshRadii_.push_back(meshRadius(mesh, meshBoxes_.back()));
   }
   for (const Material& m : scene.materials)
     materials_.push_back(gpuMaterial(m, scene.textures.size()));
@@ -86,7 +102,7 @@ GpuScene::GpuScene(const Scene& scene, std::vector<std::string>& warnings)
                     false,
                     {},
                     gl::VertexArray(*meshes_[instance.mesh])};
-    placeInstance(gpu, instance.transform, meshBoxes_[instance.mesh]);
+    placeInstance(gpu, instance.transform, meshBoxes_[instance.mesh], meshRadii_[instance.mesh]);
     instances_.push_back(std::move(gpu));
   }
 
@@ -184,7 +200,7 @@ void GpuScene::uploadEmitters() {
 
 void GpuScene::setInstanceTransform(std::size_t index, const glm::mat4& transform) {
   GpuInstance& instance = instances_.at(index);
-  placeInstance(instance, transform, meshBoxes_[instance.mesh]);
+  placeInstance(instance, transform, meshBoxes_[instance.mesh], meshRadii_[instance.mesh]);
   if (materials_[instance.material].emission != glm::vec3(0.0f)) uploadEmitters();
 }
 

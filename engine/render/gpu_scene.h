@@ -78,7 +78,9 @@ class GpuScene {
 
   const Scene& scene_;
   std::vector<std::unique_ptr<gl::MeshBuffer>> meshes_;
-  std::vector<Box> meshBoxes_;                                    // object space
+  std::vector<Box> meshBoxes_;  // object space
+  std::vector<float>
+      meshRadii_;  // m, object space: the vertices' largest distance from the box centre
   std::vector<std::unique_ptr<gl::CornerAttribute>> lightmapUv_;  // per instance, may be null
   std::vector<GpuInstance> instances_;
   std::vector<GpuMaterial> materials_;

@@ -12,6 +12,7 @@
 #include "render/texture_units.h"
 #include "render/view_mode_colours.h"
 #include "render/vpl_shadow_maps.h"
+#include "render/vpl_vertex_light.h"
 #include "scene/scene.h"
 
 namespace bounce {
@@ -66,8 +67,11 @@ gl::ShaderDefines makeConstants() {
       {"MAX_POINT_SHADOWS", glslInt(kMaxPointShadows)},
       {"MAX_CASCADES", glslInt(kMaxCascades)},
       {"MAX_AREA_SHADOWS", glslInt(kMaxAreaShadows)},
+      {"MAX_DYNAMIC_CASTERS", glslInt(static_cast<int>(kMaxDynamicCasters))},
       {"AREA_SHADOW_SAMPLES", glslInt(kAreaShadowSamples)},
       {"MAX_VPL_SHADOW_CUBES", glslInt(kMaxVplShadowCubes)},
+      {"VPL_VERTEX_LIGHT_WIDTH", glslInt(kVplVertexLightWidth)},
+      {"VPL_MAX_EDGE_OVER_DISTANCE", glslFloat(kVplMaxEdgeOverDistance)},
       // The visibility table's code for "every light the texel does not name" (lightmap_pass.cpp).
       {"VISIBILITY_OTHER_LIGHTS", glslFloat(kVisibilityOtherLightsCode)},
       {"CASCADE_COLOURS", cascadeColours()},

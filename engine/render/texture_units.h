@@ -37,6 +37,11 @@ struct TextureUnit {
   // samplerBuffer: the same per triangle corner of the probe-lit instances (probes.glsl,
   // static_direct_corners.h); without it those instances evaluate the lights per pixel.
   static constexpr int kCornerStaticDirect = 19;
+  // Read by forward.vert (GL 3.3 gives 48 units to all stages together): the VPLs' light at the
+  // dynamic instances' vertices (sampler2D) and the draw's corner → vertex table (usamplerBuffer),
+  // render/vpl_vertex_light.h. Without them the dynamic pixels gather the VPLs themselves.
+  static constexpr int kVplVertexLight = 20;
+  static constexpr int kVplCornerVertex = 21;
 };
 
 // Must match MAX_SPOT_SHADOWS / MAX_POINT_SHADOWS in shaders/shadow_spot.glsl, shadow_point.glsl.

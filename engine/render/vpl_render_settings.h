@@ -35,6 +35,9 @@ struct VplRenderSettings {
   // Visibility: one shadow cube per group (render/vpl_shadow_maps.h); shadows.enabled = false
   // draws every VPL unoccluded.
   VplShadowSettings shadows;
+  // true: the dynamic instances' pixels read the VPLs' light gathered at their vertices
+  // (render/vpl_vertex_light.h) in the full and indirect modes; false: every pixel gathers them.
+  bool perVertex = true;
 };
 
 }  // namespace bounce

@@ -7,7 +7,7 @@
 // hand; a tiny smoke run is registered with CTest.
 //
 //   bench_frame_cost SCENE[=BAKE_DIR|=none]... [--width W] [--height H] [--frames N] [--msaa S]
-//                    [--live-static-lights]
+//                    [--live-static-lights] [--vpl-per-pixel]
 //
 // BAKE_DIR: the scene's bake; none: no bake (full is then the direct frame and the lightmap
 // frame is not drawn); nothing: SCENE.bake beside the scene or the build step's bake.
@@ -37,6 +37,7 @@ struct Options {
   std::vector<std::string> scenes;
   int width = 480, height = 270, frames = 10, msaa = 1;
   bool liveStaticLights = false;  // RendererSettings::precomputedStaticDirect off
+  bool vplPerPixel = false;       // VplRenderSettings::perVertex off
 };
 
 struct FrameTimes {
@@ -98,6 +99,7 @@ void benchScene(const std::string& argument, const Options& options) {
   bounce::RendererSettings settings;
   settings.mode = bake ? bounce::RenderMode::Full : bounce::RenderMode::Direct;
   settings.precomputedStaticDirect = !options.liveStaticLights;
+  settings.vpls.perVertex = !options.vplPerPixel;
   bounce::ForwardRenderer renderer(scene, bounce::gl::shaderDirectory(), settings,
                                    bake ? &*bake : nullptr);
   const FrameTimes full = measure(renderer, camera, settings.mode, options);
@@ -142,6 +144,9 @@ int main(int argc, char** argv) {
   app.add_flag("--live-static-lights", options.liveStaticLights,
                "evaluate the static area lights per pixel on static surfaces (not from the "
                "texels and corners computed at load), as bounce-render --live-static-lights");
+  app.add_flag("--vpl-per-pixel", options.vplPerPixel,
+               "every pixel of a dynamic instance gathers the VPLs (not from its vertices), as "
+               "bounce-render --vpl-per-pixel");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto context = bounce::gl::createOffscreenContext(std::nullopt, nullptr);

@@ -10,6 +10,10 @@
 // one's 1e-3.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "lightmap_scenes.h"
 #include "test_scenes.h"
 
@@ -289,6 +293,67 @@ TEST(BakedVisibility, ALightmappedPixelEvaluatesNoStaticAreaLightWithTexels) {
       }
     EXPECT_GT(checked, 100);
   }
+}
+
+// With a dynamic instance in the room, a static pixel still reads the light from its texels and
+// needs the dynamic cube only where the instance may stand between it and the light
+// (shaders/shadow_area.glsl, dynamicCasterBetween). The panel lies within r_L = 0.2√2 m of its
+// centre c, so from floor point p every segment to it lies in the cone around p→c of half-angle
+// α = asin(r_L/|c − p|); a sphere (s, R) meets that cone only if the angle θ between p→s and p→c
+// is ≤ α + asin(R/|s − p|). Checked: every floor pixel with θ beyond that bound (+ 0.02 rad for
+// the sample's place within the pixel) takes no shadow tap, and every one from which a segment
+// to the panel does meet the sphere takes taps. Injected: the test always true (every floor
+// pixel taps the cube: fails), always false (the shadowed pixels take none: fails).
+TEST(BakedVisibility, AStaticPixelReadsTheDynamicCubeOnlyWhereTheCasterMayHideTheLight) {
+  Scene scene = floorUnderPanel();
+  const glm::vec3 centre(0.2f, 0.3f, 0.05f);
+  constexpr float kRadius = 0.06f;
+  Material grey;
+  grey.name = "grey";
+  grey.albedo = glm::vec3(0.5f);
+  const uint32_t sphere =
+      addInstance(scene, uvSphere(kRadius, 12, 24), grey, glm::translate(glm::mat4(1.0f), centre));
+  scene.instances[sphere].mobility = Mobility::Dynamic;
+  const Bake bake = visibilityBake(scene, [](int, int) { return named(0, 1.0f); });
+  testContext();
+  RendererSettings settings;
+  settings.mode = RenderMode::Cost;
+  ForwardRenderer renderer(scene, gl::shaderDirectory(), settings, &bake);
+  const Camera camera = downCamera(1.0f);
+  const Image counts = renderer.renderImage(camera, kSize, kSize);
+  const glm::vec3 c(0.0f, 0.6f, 0.0f);
+  const float lightRadius = 0.2f * std::sqrt(2.0f);
+  // Whether the segment p → x meets the sphere.
+  const auto blocks = [&](glm::vec3 p, glm::vec3 x) {
+    const glm::vec3 d = x - p;
+    const float t = glm::clamp(glm::dot(centre - p, d) / glm::dot(d, d), 0.0f, 1.0f);
+    return glm::length(p + t * d - centre) < kRadius;
+  };
+  int outside = 0, shadowed = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (!floorPixel(x, y)) continue;
+      const glm::vec3 p = floorPoint(camera, kSize, kSize, x, y);
+      if (glm::length(p - centre) < 2.0f * kRadius) continue;  // seen through the sphere
+      const float theta = std::acos(glm::dot(glm::normalize(centre - p), glm::normalize(c - p)));
+      const float bound = std::asin(lightRadius / glm::length(c - p)) +
+                          std::asin(kRadius / glm::length(centre - p));
+      const float taps = counts.at(x, y).b;
+      if (theta > bound + 0.02f) {
+        EXPECT_EQ(taps, 0.0f) << "pixel (" << x << ", " << y << ") outside every cone";
+        ++outside;
+      }
+      bool hidden = false;
+      for (int i = 0; i <= 4 && !hidden; ++i)
+        for (int j = 0; j <= 4 && !hidden; ++j)
+          hidden = blocks(p, glm::vec3(-0.2f + 0.1f * i, 0.6f, -0.2f + 0.1f * j));
+      if (hidden) {
+        EXPECT_GT(taps, 0.0f) << "pixel (" << x << ", " << y << ") in the sphere's shadow";
+        ++shadowed;
+      }
+    }
+  EXPECT_GT(outside, 100);
+  EXPECT_GT(shadowed, 10);
 }
 
 // The area cubes are drawn only when something reads them: not when every instance has baked
