@@ -128,6 +128,10 @@ uint64_t ForwardRenderer::lightGridBuilds() const {
   return passes_->culling.gridBuilds();
 }
 
+uint64_t ForwardRenderer::vplVertexGathers() const {
+  return passes_->vplVertexLight.gathers();
+}
+
 ShadowDrawCount ForwardRenderer::shadowDrawCount() const {
   return passes_->shadows.lastFrame();
 }

@@ -176,6 +176,9 @@ class ForwardRenderer {
   // How many frames rebuilt the light lists (LightCulling::gridBuilds): a still camera's frames
   // do not.
   uint64_t lightGridBuilds() const;
+  // How many frames gathered the VPLs at the dynamic instances' vertices (VplVertexLight): a
+  // still scene's do not.
+  uint64_t vplVertexGathers() const;
   // Shadow-map views and caster draws of the last frame (lights or faces that cannot reach
   // the view are skipped; casters are culled to each view's frustum).
   ShadowDrawCount shadowDrawCount() const;

@@ -118,9 +118,11 @@ void VplPass::attach(std::span<const Vpl> vpls, float clampDistance, const Box& 
   // (docs/vpl.md "Visibility").
   if (shadows_) shadows_->setRepresentatives(cubes_.origins);
   attached_ = true;
+  ++version_;
 }
 
 void VplPass::setAlive(std::span<const uint8_t> alive) {
+  ++version_;
   lightTexels_ = lightSection(groups_, groups_.lightFluxes(alive), cubes_.cubeOf);
 }
 
@@ -130,6 +132,7 @@ ShadowDrawCount VplPass::renderShadows(const GpuScene& scene) {
 }
 
 void VplPass::setShadowsEnabled(bool enabled) {
+  ++version_;
   if (shadows_) shadows_->setEnabled(enabled);
 }
 

@@ -37,6 +37,8 @@ class VplPass {
   void attach(std::span<const Vpl> vpls, float clampDistance, const Box& bounds,
               const VplRenderSettings& settings);
   bool attached() const { return attached_; }
+  // Changes whenever what a receiver gathers may have: attach, setAlive, setShadowsEnabled.
+  uint64_t version() const { return version_; }
   // Recomputes the light section's flux with only the VPLs with alive[i] ≠ 0 (input order of
   // attach; vpl_runtime/vpl_occlusion.h) shining; groups, cuts and positions are kept. The caller
   // hands lightTexels() to the light table again.
@@ -77,6 +79,7 @@ class VplPass {
   // K's ceiling with shadow cubes: the driver's array layers (vplShadowBudget).
   std::size_t maxShadowGroups_ = kMaxVplShadowGroups;
   bool attached_ = false;
+  uint64_t version_ = 0;
 };
 
 }  // namespace bounce

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/draw_state.h"
+#include "gl/texture.h"
 #include "render/gpu_scene.h"
 #include "render/light_table.h"
 #include "render/shader_constants.h"
@@ -72,10 +73,17 @@ VplVertexLight::VplVertexLight(const Scene& scene, const std::filesystem::path& 
 
 void VplVertexLight::clear() {
   rowOf_.clear();
+  gatheredVersion_.reset();
 }
 
 void VplVertexLight::render(const GpuScene& scene, const LightTable& table, const VplPass& vpls) {
   const std::span<const GpuInstance> instances = scene.instances();
+  std::vector<glm::mat4> models;
+  models.reserve(instances.size());
+  for (const GpuInstance& instance : instances) models.push_back(instance.model);
+  if (gatheredVersion_ == vpls.version() && models == gatheredModels_) return;
+  gatheredModels_ = std::move(models);
+  gatheredVersion_ = vpls.version();
   rowOf_.assign(instances.size(), -1);
   if (!vpls.attached()) return;
   int rows = 0;
@@ -87,7 +95,14 @@ void VplVertexLight::render(const GpuScene& scene, const LightTable& table, cons
     rowOf_[i] = rows;
     rows += rowsFor(meshes_[instance.mesh]->vertexCount);
   }
+  // Instances beyond the largest texture gather per pixel.
+  const int maxRows = gl::Texture2D::maxSize();
+  for (std::size_t i = 0; i < instances.size(); ++i)
+    if (rowOf_[i] >= 0 && rowOf_[i] + rowsFor(meshes_[instances[i].mesh]->vertexCount) > maxRows)
+      rowOf_[i] = -1;
+  rows = std::min(rows, maxRows);
   if (rows == 0) return;
+  ++gathers_;
   if (target_->height() < rows) {
     target_.reset();
     target_.emplace(kVplVertexLightWidth, rows);

@@ -23,6 +23,8 @@
 #include <optional>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "gl/texture_buffer.h"
@@ -44,8 +46,12 @@ class VplVertexLight {
   VplVertexLight(const Scene& scene, const std::filesystem::path& shaderDir);
 
   // Gathers the VPLs of `vpls` (attached; `table` holds their sections, updated) at the
-  // vertices of every dynamic instance of `scene`. Changes the bound framebuffer and viewport.
+  // vertices of every dynamic instance of `scene`, unless nothing it depends on changed since
+  // the last gather (no instance moved: the VPLs' shadow cubes hold them all; the same VPLs,
+  // VplPass::version). Changes the bound framebuffer and viewport when it gathers.
   void render(const GpuScene& scene, const LightTable& table, const VplPass& vpls);
+  // How many frames gathered: a still scene's do not.
+  uint64_t gathers() const { return gathers_; }
   // Forgets the last gather: no draw reads vertex light.
   void clear();
 
@@ -66,6 +72,10 @@ class VplVertexLight {
   gl::TextureBuffer noCorners_;                    // the stand-in corner table
   std::optional<gl::RenderTarget> target_;
   std::vector<int> rowOf_;  // per instance: its first row, −1 for none
+  // What the last gather saw: every instance's model and the VPLs' version (none: gather).
+  std::vector<glm::mat4> gatheredModels_;
+  std::optional<uint64_t> gatheredVersion_;
+  uint64_t gathers_ = 0;
 };
 
 }  // namespace bounce

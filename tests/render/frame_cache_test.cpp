@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "test_scenes.h"
+#include "vpl_cost_scene.h"
 
 namespace bounce::test {
 namespace {
@@ -111,6 +112,43 @@ TEST(FrameCache, StillCameraKeepsTheSunsCascadesAndAMoveRedrawsThemAsAFreshRende
   placed.instances[1].transform = shifted * placed.instances[1].transform;
   ForwardRenderer fresh(placed, gl::shaderDirectory());
   EXPECT_EQ(moved.pixels, fresh.renderImage(camera, kSize, kSize).pixels);
+}
+
+}  // namespace
+}  // namespace bounce::test
+
+namespace bounce::test {
+namespace {
+
+// The VPLs gathered at a dynamic instance's vertices (render/vpl_vertex_light.h) are kept while
+// nothing moves: a still frame gathers nothing and draws the same picture; moving the instance
+// gathers again, and the frame then equals a fresh renderer's at that place bit for bit.
+// (A dynamic move cuts or re-traces the VPLs, which changes VplPass::version, and moves the VPL
+// shadow cubes' casters, which the models check sees.) Injected: never gathering again (the
+// moved frame keeps the old light, unlike the fresh renderer's), always gathering (the still
+// frame gathers again): both fail.
+TEST(FrameCache, StillSceneKeepsTheVertexGatherAndAMoveGathersAgainAsAFreshRenderer) {
+  testContext();
+  const VplCostScene s = vplCostScene(10);
+  RendererSettings settings;
+  settings.mode = RenderMode::Indirect;
+  ForwardRenderer renderer(s.scene, gl::shaderDirectory(), settings, &s.bake);
+  const Image first = renderer.renderImage(s.camera, kSize, kSize);
+  EXPECT_EQ(renderer.vplVertexGathers(), 1u);
+  const Image second = renderer.renderImage(s.camera, kSize, kSize);
+  EXPECT_EQ(renderer.vplVertexGathers(), 1u) << "a still scene gathered again";
+  EXPECT_EQ(first.pixels, second.pixels);
+
+  // The quad sinks 0.2 m, nearer the floor's VPLs: its light changes.
+  const glm::mat4 lowered = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.2f, 0.0f));
+  renderer.setInstanceTransform(1, lowered * s.scene.instances[1].transform);
+  const Image moved = renderer.renderImage(s.camera, kSize, kSize);
+  EXPECT_EQ(renderer.vplVertexGathers(), 2u);
+  EXPECT_NE(moved.pixels, first.pixels);
+  Scene placed = s.scene;
+  placed.instances[1].transform = lowered * placed.instances[1].transform;
+  ForwardRenderer fresh(placed, gl::shaderDirectory(), settings, &s.bake);
+  EXPECT_EQ(moved.pixels, fresh.renderImage(s.camera, kSize, kSize).pixels);
 }
 
 }  // namespace
