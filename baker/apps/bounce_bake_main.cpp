@@ -141,6 +141,25 @@ int run(Options o) {
   return 0;
 }
 
+// How texels gather indirect light and when a dim one stops (docs/baker.md).
+void addGatherOptions(CLI::App& app, Options& o) {
+  app.add_option("--gather", o.gather,
+                 "how texels gather indirect light: 'paths' (every sample a whole path) or "
+                 "'cache' (a short bake of --cache-spp paths per texel first, then paths that "
+                 "end at its map after one reflection; docs/baker.md)")
+      ->check(CLI::IsMember({"paths", "cache"}));
+  app.add_option("--cache-spp", o.bake.cacheSpp,
+                 "samples per texel of the cache pass (--gather cache), half in each of its "
+                 "two half caches (rounded up)")
+      ->check(CLI::Range(1, 1 << 20));
+  app.add_option("--error-floor", o.bake.errorFloor,
+                 "with --gather cache: a texel dimmer than this fraction of the cache's mean "
+                 "irradiance stops once its standard error is under --target-error times that "
+                 "floor, an error the frame cannot show next to the scene's light (0: every texel "
+                 "against its own mean; docs/baker.md)")
+      ->check(CLI::Range(0.0, 100.0));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -179,15 +198,7 @@ int main(int argc, char** argv) {
                  "--spp)")
       ->check(CLI::Range(0.0, 1.0));
   bounce::addPathTracingOptions(app, shared);
-  app.add_option("--gather", o.gather,
-                 "how texels gather indirect light: 'paths' (every sample a whole path) or "
-                 "'cache' (a short bake of --cache-spp paths per texel first, then paths that "
-                 "end at its map after one reflection; docs/baker.md)")
-      ->check(CLI::IsMember({"paths", "cache"}));
-  app.add_option("--cache-spp", o.bake.cacheSpp,
-                 "samples per texel of the cache pass (--gather cache), half in each of its "
-                 "two half caches (rounded up)")
-      ->check(CLI::Range(1, 1 << 20));
+  addGatherOptions(app, o);
   app.add_option("--denoise", o.denoise, "edge-aware denoiser (guided by normal, position, chart)")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--png", o.png,

@@ -13,6 +13,7 @@
 #include "bake/tile_scheduler.h"
 #include "bake_folder/gather.h"
 #include "bake_folder/lightmap_layout.h"
+#include "image/luminance.h"
 #include "ray/ray_kernel.h"
 #include "scene/scene.h"
 #include "scene/world_geometry.h"
@@ -85,6 +86,9 @@ void bakeIrradiance(TileScheduler& tiles, const Scene& scene, const WorldGeometr
     if (settings.gather == Gather::Cache && (!work.tiles.empty() || work.next)) {
       cache = cacheIrradiance(scene, geometry, kernel, layout, coverage, settings, bake);
       irradiance.cache = {&cache->half(0), &cache->half(1)};
+      // The cache pass is the same bytes in every process: so is the floor.
+      bake.errorFloorIrradiance = settings.errorFloor * bake.cacheMeanIrradiance;
+      irradiance.errorFloor = bake.errorFloorIrradiance;
     }
     irradiance.work = work;
     irradiance.tileDone = std::move(done);
@@ -262,8 +266,15 @@ std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const World
     bake.cacheRays += gathered.totalRays;
   }
   std::vector<uint8_t> readable(valid.size(), 0);
-  for (std::size_t t = 0; t < readable.size(); ++t)
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < readable.size(); ++t) {
     readable[t] = valid[t] && !bake.invalid[t] ? 1 : 0;
+    if (!readable[t]) continue;
+    sum += luminance(0.5f * (halves[0].pixels[t] + halves[1].pixels[t]));
+    ++count;
+  }
+  bake.cacheMeanIrradiance = count > 0 ? sum / static_cast<double>(count) : 0.0;
   bake.cacheSeconds = clock.lap();
   return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(halves),
                                            std::move(readable));

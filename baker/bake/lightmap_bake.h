@@ -52,6 +52,11 @@ struct LightmapBakeSettings {
   // map of their sample's half (irradiance_cache.h).
   Gather gather{};  // Gather::Paths
   int cacheSpp = 32;
+  // Gather::Cache: a texel also stops once its standard error is below targetError ·
+  // errorFloor · Ē, Ē the cache's mean irradiance over the readable texels (luminance, W/m²):
+  // the light the frame shows at its exposure, not the texel's own dimness (texel_irradiance.h).
+  // 0: each texel against its own mean only.
+  float errorFloor = 0.0f;
 };
 
 struct BakePhaseSeconds {
@@ -105,6 +110,8 @@ struct LightmapBake {
   // `rays`, which every way of baking reports alike) and seconds (part of the irradiance's).
   uint64_t cacheSamples = 0, cacheRays = 0;
   double cacheSeconds = 0.0;
+  double cacheMeanIrradiance = 0.0;   // Ē, luminance, W/m² (0 without a cache pass)
+  double errorFloorIrradiance = 0.0;  // errorFloor · Ē, W/m²: the stop's floor
 };
 
 // bounce-bake's defaults, chosen on the Cornell box (docs/baker.md): at most 4096 samples per

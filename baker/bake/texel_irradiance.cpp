@@ -117,8 +117,11 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
       out.relativeError[texel] = relative;
       if (n <= kMinAdaptiveSpp) out.prefixLuminance[texel] = static_cast<float>(mean);
       // With mean 0 the relative error is undefined (stored as 0).
+      // A texel dimmer than the floor stops at the floor's absolute error.
+      const bool belowFloor = mean < settings.errorFloor;
       if (settings.targetError > 0.0f && n >= kMinAdaptiveSpp && mean > 0.0 &&
-          relative < settings.targetError)
+          (belowFloor ? standardError < settings.targetError * settings.errorFloor
+                      : relative < settings.targetError))
         break;
       // Samples all 0 so far, with enough of them on surfaces that stayed dark: not even the cap
       // could bring the texel to the target (zeroSamplesToStop).

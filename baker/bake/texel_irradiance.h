@@ -8,7 +8,8 @@
 // points uniformly, the baked light uses dimensions 1 on (baked_light.h).
 // The texel value is the mean over its samples, so it estimates the mean of E over the texel's
 // covered area. Samples are taken in batches of 16 until, from 128 samples on, the relative
-// standard error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` or `maxSpp` is
+// standard error of the luminance mean, sqrt(s²/n)/mean, is below `targetError` (for a texel
+// dimmer than `errorFloor`, its standard error below targetError · errorFloor) or `maxSpp` is
 // reached; a texel whose samples are all zero stops once zeroSamplesToStop() of them met a
 // surface (that stayed dark). Every texel
 // is computed by one task from its own pattern: the result does not depend on the thread count, nor
@@ -38,7 +39,10 @@ struct TexelIrradiance;
 struct IrradianceSettings {
   int maxSpp = 1024;         // samples per texel at most
   float targetError = 0.0f;  // relative standard error to stop at; 0: always maxSpp
-  int maxDepth = 64;         // most diffuse reflections along a path
+  // W/m² (luminance): a texel stops once its standard error is below targetError · max(mean,
+  // errorFloor), so a texel dimmer than the floor stops at an absolute error; 0: relative only.
+  double errorFloor = 0.0;
+  int maxDepth = 64;  // most diffuse reflections along a path
   uint32_t seed = 0;
   LightChoice lightChoice = LightChoice::ByPlace;  // next-event estimation's (trace_settings.h)
   int threads = 0;                                 // 0: all cores

@@ -21,6 +21,7 @@ SceneBakeSettings::SceneBakeSettings() : backend(RayBackend::Embree) {
   denoise = defaults.denoise;
   gather = defaults.gather;
   cacheSpp = defaults.cacheSpp;
+  errorFloor = defaults.errorFloor;
   pointsPerTexel = defaults.pointsPerTexel;
   vpls = VplSettings{}.maxVpls;
   vplError = VplSettings{}.relativeError;

@@ -1,4 +1,5 @@
 // Stages 3–7 of the scene bake (scene_bake_stages.h): the lightmap over its tiles.
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +42,7 @@ LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, c
   settings.denoise = o.denoise;
   settings.gather = o.gather;
   settings.cacheSpp = o.cacheSpp;
+  settings.errorFloor = o.errorFloor;
   settings.pointsPerTexel = o.pointsPerTexel;
   LightmapBake bake = bakeLightmap(*statics.scene, *statics.geometry, *statics.kernel,
                                    staticLayout(scene, atlas.layout), settings);
@@ -50,6 +52,14 @@ LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, c
     result.notes.push_back("resumed: " + std::to_string(bake.tilesRestored) + " of " +
                            std::to_string(bake.tilesShare) + " tiles were in " +
                            o.journal.string());
+  if (bake.errorFloorIrradiance > 0.0) {
+    char floor[96];
+    std::snprintf(floor, sizeof floor, "%.3g W/m^2 (%.3g x the cache's mean %.3g W/m^2)",
+                  bake.errorFloorIrradiance, static_cast<double>(o.errorFloor),
+                  bake.cacheMeanIrradiance);
+    result.notes.push_back(std::string("texels dimmer than ") + floor +
+                           " stopped at the target times that floor");
+  }
   if (!bake.partial && !bake.irradiance.allFinite())
     throw std::runtime_error("the lightmap has non-finite texels (a bug: please report)");
   return bake;

@@ -35,6 +35,7 @@ nlohmann::json bakeSettingsJson(const BakeSettings& s) {
     json["gather"] = gatherName(s.gather);
     json["cacheSpp"] = s.cacheSpp;
   }
+  if (s.errorFloor > 0.0f) json["errorFloor"] = static_cast<double>(s.errorFloor);
   return json;
 }
 
@@ -68,6 +69,8 @@ BakeSettings parseBakeSettings(const std::filesystem::path& file, const nlohmann
            gatherName(Gather::Cache));
   s.gather = *parsedGather;
   if (s.gather == Gather::Cache) s.cacheSpp = static_cast<int>(f.integer("cacheSpp", 1, kIntMax));
+  // Absent in every bake without a floor.
+  if (f.find("errorFloor")) s.errorFloor = static_cast<float>(f.real("errorFloor", 0.0, kFloatMax));
   return s;
 }
 

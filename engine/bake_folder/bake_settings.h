@@ -7,10 +7,11 @@
 //
 //   JSON (keys sorted): cacheSpp and gather ("cache"; both only with the cache gather, absent:
 //   "paths", the only gather before it existed, so a paths bake keeps its settings hash),
-//   denoise, lightChoice ("place" | "power"; absent: "power", the only pick before it existed),
-//   maxDepth, maxSpp, maxTexels, pointsPerTexel, seed, targetError (relative
-//   standard error), texelBudget, texelSize (m), vplError (relative), vpls. Reals are written as
-//   the doubles of the floats the bake used, so a parse gives back the same floats.
+//   denoise, errorFloor (only when > 0, so a bake without keeps its hash), lightChoice ("place" |
+//   "power"; absent: "power", the only pick before it existed), maxDepth, maxSpp, maxTexels,
+//   pointsPerTexel, seed, targetError (relative standard error), texelBudget, texelSize (m),
+//   vplError (relative), vpls. Reals are written as the doubles of the floats the bake used, so a
+//   parse gives back the same floats.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,9 @@ struct BakeSettings {
   float vplError = 0.0f;  // relative standard error of the total VPL flux to stop at
   Gather gather{};        // how texels gather indirect light; Gather::Paths
   int cacheSpp = 0;       // samples per texel of the cache pass (Gather::Cache only)
+  // Gather::Cache: a texel dimmer than errorFloor × the cache's mean irradiance stops at
+  // targetError × that floor, an absolute error (baker/bake/lightmap_bake.h); 0: none.
+  float errorFloor = 0.0f;
 };
 
 nlohmann::json bakeSettingsJson(const BakeSettings& settings);

@@ -49,6 +49,50 @@ TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
   EXPECT_LT(bake.meanRelativeError, 0.05f);
 }
 
+// An error floor (IrradianceSettings::errorFloor, W/m²; bounce-bake --error-floor sets it from
+// the cache's mean) changes only texels dimmer than it: such a texel may stop once its standard
+// error is under target × floor, an absolute error; every texel whose mean stays at or above the
+// floor takes the same samples and value bit for bit (each texel's pattern is its own). The floor
+// here is the lit texels' median luminance. Injected: the floor applied to the brighter texels
+// (they change), the floor ignored (no texel stops earlier): both fail.
+TEST(AdaptiveSampling, AnErrorFloorStopsOnlyTexelsDimmerThanItAtItsAbsoluteError) {
+  test::World world;
+  test::buildCornerLampRoom(world);
+  const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
+  LightmapBakeSettings settings = test::testBakeSettings(1024);
+  settings.irradiance.targetError = 0.05f;
+  settings.stitch = false;
+  const LightmapBake base =
+      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  const std::vector<std::size_t> texels = validLitTexels(base);
+  ASSERT_GT(texels.size(), 300u);
+  std::vector<float> lum;
+  for (const std::size_t t : texels) lum.push_back(luminance(base.irradiance.pixels[t]));
+  std::nth_element(lum.begin(), lum.begin() + static_cast<std::ptrdiff_t>(lum.size() / 2),
+                   lum.end());
+  const double floor = lum[lum.size() / 2];
+  settings.irradiance.errorFloor = floor;
+  const LightmapBake floored =
+      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  int earlier = 0, unchanged = 0;
+  for (const std::size_t t : texels) {
+    const double mean = luminance(floored.irradiance.pixels[t]);
+    if (mean >= floor) {
+      EXPECT_EQ(floored.samples[t], base.samples[t]) << "texel " << t << " at " << mean;
+      EXPECT_EQ(floored.irradiance.pixels[t], base.irradiance.pixels[t]) << "texel " << t;
+      ++unchanged;
+      continue;
+    }
+    EXPECT_LE(floored.samples[t], base.samples[t]) << "texel " << t;
+    if (floored.samples[t] < base.samples[t]) {
+      ++earlier;
+      EXPECT_LT(floored.relativeError[t] * mean, 0.05 * floor * 1.0001) << "texel " << t;
+    }
+  }
+  EXPECT_GT(earlier, 20);
+  EXPECT_GT(unchanged, 100);
+}
+
 // The per-texel estimate sqrt(s²/n)/mean against the actual relative error of a 64-spp bake
 // measured against a 4096-spp bake (whose own error is 8× smaller): their root-mean-squares
 // agree within a factor of 2 (the estimate ignores the low-discrepancy sampler's gain, so it

@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   app.add_option("--gather", gather, "paths|cache (bounce-bake --gather)")
       ->check(CLI::IsMember({"paths", "cache"}));
   app.add_option("--cache-spp", bake.cacheSpp, "samples per texel of the cache pass");
+  app.add_option("--error-floor", bake.errorFloor,
+                 "fraction of the cache's mean irradiance below which a texel stops at an "
+                 "absolute error (bounce-bake --error-floor)");
   app.add_option("--size", size, "frame width (and height unless --height), pixels");
   app.add_option("--height", height, "frame height, pixels (default: --size)");
   app.add_option("--camera", cameraName, "camera name (default: the scene's first)");
