@@ -307,17 +307,20 @@ void ForwardRenderer::setLight(std::size_t index, const Light& light) {
   p.lights.setLight(index, light);
   p.shadows.setLight(index, light);
   // Edited away from (or back to) its baked state: the texels and corners leave (take) it.
-  if (p.lights.precomputed(index) !=
-      (settings_.precomputedStaticDirect && p.lights.asBaked(index) && p.staticDirectSource &&
-       p.lightmap.canReadStaticDirect()))
+  if (p.lights.precomputed(index) != (staticDirectWanted() && p.lights.asBaked(index)))
     updateStaticDirect();
   p.lightTable.setPunctual(p.lights.texels(p.shadows.lightSlots()));
 }
 
+bool ForwardRenderer::staticDirectWanted() const {
+  const Passes& p = *passes_;
+  return settings_.precomputedStaticDirect && p.staticDirectSource &&
+         p.lightmap.canReadStaticDirect();
+}
+
 void ForwardRenderer::updateStaticDirect() {
   Passes& p = *passes_;
-  const bool on =
-      settings_.precomputedStaticDirect && p.staticDirectSource && p.lightmap.canReadStaticDirect();
+  const bool on = staticDirectWanted();
   std::vector<uint8_t> precomputed(p.lights.size(), 0);
   for (std::size_t i = 0; i < precomputed.size(); ++i)
     precomputed[i] = on && p.lights.asBaked(i) ? 1 : 0;

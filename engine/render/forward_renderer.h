@@ -208,6 +208,9 @@ class ForwardRenderer {
   // computes and uploads their texels and corners (static_direct_texels.h,
   // static_direct_corners.h); none with RendererSettings::precomputedStaticDirect off.
   void updateStaticDirect();
+  // Whether the static lights' direct light is read from texels and corners: asked for, a bake
+  // with visibility attached, and a driver that can read them.
+  bool staticDirectWanted() const;
 
   RendererSettings settings_;
   // Draws vpls_ (or the re-traced set) at vplClampDistance_ into the VPL pass.

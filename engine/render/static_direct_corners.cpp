@@ -18,18 +18,13 @@ namespace {
 // a point or spot light's position; a directional light has no near field.
 float distanceToLights(const PrecomputedLights& lights, glm::vec3 p) {
   float nearest = std::numeric_limits<float>::infinity();
-  if (lights.area) {
-    const AreaLightSet& area = *lights.area;
-    const std::size_t count = std::min({lights.areaCount, area.staticCount(), area.lights.size()});
-    for (std::size_t l = 0; l < count; ++l) {
-      const AreaLight& light = area.lights[l];
-      if (light.bakeDirect) continue;
-      nearest = std::min(nearest, std::max(glm::length(p - light.centre) - light.radius, 0.0f));
-    }
+  for (std::size_t l = 0; l < lights.areaLights(); ++l) {
+    if (!lights.areaComputed(l)) continue;
+    const AreaLight& light = lights.area->lights[l];
+    nearest = std::min(nearest, std::max(glm::length(p - light.centre) - light.radius, 0.0f));
   }
   for (std::size_t i = 0; i < lights.punctual.size(); ++i)
-    if (i < lights.precomputed.size() && lights.precomputed[i] &&
-        lights.punctual[i].type != LightType::Directional)
+    if (lights.punctualComputed(i) && lights.punctual[i].type != LightType::Directional)
       nearest = std::min(nearest, glm::length(p - lights.punctual[i].position));
   return nearest;
 }

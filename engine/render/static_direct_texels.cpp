@@ -104,22 +104,26 @@ std::vector<TexelSurface> texelSurfaces(const Scene& scene, const LightmapLayout
 
 }  // namespace
 
+std::size_t PrecomputedLights::areaLights() const {
+  return area ? std::min({areaCount, area->staticCount(), area->lights.size()}) : 0;
+}
+
+bool PrecomputedLights::areaComputed(std::size_t l) const {
+  return l < areaLights() && !area->lights[l].bakeDirect;
+}
+
 void addStaticDirect(const PrecomputedLights& lights, const TexelVisibility& visible,
                      uint32_t areaLightCount, glm::vec3 x, glm::vec3 n, glm::vec3 f[3]) {
   const auto add = [&](const std::array<glm::vec3, 3>& light, float v) {
     for (std::size_t c = 0; c < 3; ++c) f[c] += v * light[c];
   };
-  if (lights.area) {
-    const AreaLightSet& area = *lights.area;
-    const std::size_t count = std::min({lights.areaCount, area.staticCount(), area.lights.size()});
-    for (std::size_t l = 0; l < count; ++l) {
-      if (area.lights[l].bakeDirect) continue;
-      const float v = visibleFraction(visible, static_cast<uint16_t>(l));
-      if (v > 0.0f) add(areaLightIrradianceVectors(area, l, x, n), v);
-    }
+  for (std::size_t l = 0; l < lights.areaLights(); ++l) {
+    if (!lights.areaComputed(l)) continue;
+    const float v = visibleFraction(visible, static_cast<uint16_t>(l));
+    if (v > 0.0f) add(areaLightIrradianceVectors(*lights.area, l, x, n), v);
   }
   for (std::size_t i = 0; i < lights.punctual.size(); ++i) {
-    if (i >= lights.precomputed.size() || !lights.precomputed[i]) continue;
+    if (!lights.punctualComputed(i)) continue;
     const float v = visibleFraction(visible, static_cast<uint16_t>(areaLightCount + i));
     if (v > 0.0f) add(punctualIrradianceVectors(lights.punctual[i], x, n), v);
   }

@@ -45,6 +45,15 @@ struct PrecomputedLights {
   std::size_t areaCount = 0;
   std::span<const Light> punctual;
   std::span<const uint8_t> precomputed;
+
+  // Area lights [0, areaLights()) may be computed: the static ones the bake names.
+  std::size_t areaLights() const;
+  // Area light l is computed: within areaLights() and not baked into the lightmap itself.
+  bool areaComputed(std::size_t l) const;
+  // Punctual light i is computed.
+  bool punctualComputed(std::size_t i) const {
+    return i < precomputed.size() && precomputed[i] != 0;
+  }
 };
 
 // Adds to f the irradiance vectors F_c of `lights` at x with unit normal n (clipped to its

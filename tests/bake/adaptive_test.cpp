@@ -21,15 +21,21 @@ std::vector<std::size_t> validLitTexels(const LightmapBake& bake) {
   return out;
 }
 
-TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
+// The corner-lamp room's 12.5 cm atlas baked to a 5 % target with at most `spp` samples a texel
+// and the texels' floor `errorFloor` (W/m²).
+LightmapBake cornerLampBake(int spp, double errorFloor = 0.0) {
   test::World world;
   test::buildCornerLampRoom(world);
   const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
-  LightmapBakeSettings settings = test::testBakeSettings(4096);
+  LightmapBakeSettings settings = test::testBakeSettings(spp);
   settings.irradiance.targetError = 0.05f;
+  settings.irradiance.errorFloor = errorFloor;
   settings.stitch = false;
-  const LightmapBake bake =
-      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  return bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+}
+
+TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
+  const LightmapBake bake = cornerLampBake(4096);
   const std::vector<std::size_t> texels = validLitTexels(bake);
   ASSERT_GT(texels.size(), 300u);
   int reached = 0;
@@ -56,14 +62,7 @@ TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
 // here is the lit texels' median luminance. Injected: the floor applied to the brighter texels
 // (they change), the floor ignored (no texel stops earlier): both fail.
 TEST(AdaptiveSampling, AnErrorFloorStopsOnlyTexelsDimmerThanItAtItsAbsoluteError) {
-  test::World world;
-  test::buildCornerLampRoom(world);
-  const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.125f, 40);
-  LightmapBakeSettings settings = test::testBakeSettings(1024);
-  settings.irradiance.targetError = 0.05f;
-  settings.stitch = false;
-  const LightmapBake base =
-      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  const LightmapBake base = cornerLampBake(1024);
   const std::vector<std::size_t> texels = validLitTexels(base);
   ASSERT_GT(texels.size(), 300u);
   std::vector<float> lum;
@@ -71,9 +70,7 @@ TEST(AdaptiveSampling, AnErrorFloorStopsOnlyTexelsDimmerThanItAtItsAbsoluteError
   std::nth_element(lum.begin(), lum.begin() + static_cast<std::ptrdiff_t>(lum.size() / 2),
                    lum.end());
   const double floor = lum[lum.size() / 2];
-  settings.irradiance.errorFloor = floor;
-  const LightmapBake floored =
-      bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout, settings);
+  const LightmapBake floored = cornerLampBake(1024, floor);
   int earlier = 0, unchanged = 0;
   for (const std::size_t t : texels) {
     const double mean = luminance(floored.irradiance.pixels[t]);
