@@ -62,7 +62,7 @@ TEST(AdaptiveSampling, ReachesTheTargetAndSpendsSamplesOnDimTexels) {
 // here is the lit texels' median luminance. Injected: the floor applied to the brighter texels
 // (they change), the floor ignored (no texel stops earlier): both fail.
 TEST(AdaptiveSampling, AnErrorFloorStopsOnlyTexelsDimmerThanItAtItsAbsoluteError) {
-  const LightmapBake base = cornerLampBake(1024);
+  const LightmapBake base = cornerLampBake(512);
   const std::vector<std::size_t> texels = validLitTexels(base);
   ASSERT_GT(texels.size(), 300u);
   std::vector<float> lum;
@@ -70,7 +70,7 @@ TEST(AdaptiveSampling, AnErrorFloorStopsOnlyTexelsDimmerThanItAtItsAbsoluteError
   std::nth_element(lum.begin(), lum.begin() + static_cast<std::ptrdiff_t>(lum.size() / 2),
                    lum.end());
   const double floor = lum[lum.size() / 2];
-  const LightmapBake floored = cornerLampBake(1024, floor);
+  const LightmapBake floored = cornerLampBake(512, floor);
   int earlier = 0, unchanged = 0;
   for (const std::size_t t : texels) {
     const double mean = luminance(floored.irradiance.pixels[t]);
