@@ -5,7 +5,7 @@
 #                      illumination
 #   ./bounce.sh test   install what is missing, then three CTest runs (docs/README: Tests):
 #                      the whole suite in Release; the whole suite again built with ASan + UBSan
-#                      (preset debug); each libFuzzer target for 10 s (preset fuzz, clang)
+#                      (preset debug); each libFuzzer target for 8 s (preset fuzz, clang)
 set -euo pipefail
 cd "$(dirname "$0")"
 
