@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -31,6 +32,50 @@ bool finite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// True when every triangle of `mesh` lies in one plane and faces one way: a flat sheet (a lamp's
+// quad, a row of ceiling panels written as one mesh), which has no inside. Cracks between a
+// solid's faces do not matter here, as they would to a test of closed edges.
+bool isFlatSheet(const Mesh& mesh) {
+  std::optional<glm::dvec3> normal;
+  double offset = 0.0, extent = 0.0;
+  for (const glm::vec3& p : mesh.positions)
+    extent = std::max(extent, static_cast<double>(glm::length(p - mesh.positions.front())));
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[t]]), b(mesh.positions[mesh.indices[t + 1]]),
+        c(mesh.positions[mesh.indices[t + 2]]);
+    const glm::dvec3 cross = glm::cross(b - a, c - a);
+    const double length = glm::length(cross);
+    if (!(length > 0.0)) continue;  // degenerate: no side to face
+    const glm::dvec3 n = cross / length;
+    if (!normal) {
+      normal = n;
+      offset = glm::dot(n, a);
+      continue;
+    }
+    // One direction within 0.1°, one plane within 10⁻⁵ of the mesh's size.
+    if (glm::dot(n, *normal) < 0.9999985 || std::abs(glm::dot(*normal, a) - offset) > 1e-5 * extent)
+      return false;
+  }
+  return normal.has_value();
+}
+
+// Per world triangle: 1 on an emitter that is a flat sheet. Nothing is inside such a sheet: a
+// point behind it is in the slot between fixture and surface, seen and dark, and dropping it
+// would fill the slot from its lit neighbours. An emitting solid (a glowing block, the
+// furnace's walls) keeps its inside.
+std::vector<uint8_t> emitterSheets(const Scene& scene, const WorldGeometry& geometry) {
+  std::vector<int8_t> flat(scene.meshes.size(), -1);  // per mesh: unknown, no, yes
+  std::vector<uint8_t> sheet(geometry.triangleCount(), 0);
+  for (std::size_t t = 0; t < geometry.triangleCount(); ++t) {
+    const uint32_t material = geometry.triangleMaterial[t];
+    if (material >= scene.materials.size() || !scene.materials[material].isEmissive()) continue;
+    const uint32_t mesh = scene.instances[geometry.triangleInstance[t]].mesh;
+    if (flat[mesh] < 0) flat[mesh] = isFlatSheet(scene.meshes[mesh]) ? 1 : 0;
+    sheet[t] = static_cast<uint8_t>(flat[mesh]);
+  }
+  return sheet;
+}
+
 }  // namespace
 
 LeakGuardResult guardAgainstLeaks(const Scene& scene, const WorldGeometry& geometry,
@@ -42,10 +87,12 @@ LeakGuardResult guardAgainstLeaks(const Scene& scene, const WorldGeometry& geome
   const float lift = std::max(settings.liftTexels * texelSizeMetres, 0.0f);
   const int probes = std::max(settings.probeRays, 1);
 
+  const std::vector<uint8_t> emitterSheet = emitterSheets(scene, geometry);
   auto isBackFace = [&](const Ray& ray, const Hit& hit) {
     if (!hit.valid()) return false;
     const uint32_t material = geometry.triangleMaterial[hit.triangle];
     if (material < scene.materials.size() && scene.materials[material].doubleSided) return false;
+    if (emitterSheet[hit.triangle]) return false;
     return glm::dot(ray.direction, hit.geometricNormal) > 0.0f;
   };
 

@@ -3,7 +3,9 @@
 // Two ways a texel's sample points go wrong, both tested once per point before any light is
 // gathered:
 //   * inside geometry: a point under a block resting on the floor, or inside a wall thinner
-//     than a texel, sees the back faces of single-sided triangles around it. `probeRays` fixed
+//     than a texel, sees the back faces of single-sided triangles around it (not those of an
+//     emitter that is an open sheet: a point behind it is in the seen, dark slot between a
+//     ceiling and the panel hung under it, not inside anything). `probeRays` fixed
 //     cosine-distributed rays leave each point; when at least `insideFraction` of them first hit
 //     a back face, the point is dropped;
 //   * across a wall: a texel straddling a thin wall has points on both sides. The texel keeps

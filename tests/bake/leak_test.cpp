@@ -1,7 +1,9 @@
-// No leaks: light does not pass a wall thinner than a texel, and the dark inside of a block
-// resting on the floor does not darken the floor around it.
+// No leaks: light does not pass a wall thinner than a texel, the dark inside of a block resting on
+// the floor does not darken the floor around it, and the dark slot above a lamp hung under the
+// ceiling is not lit from the ceiling around it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -161,6 +163,77 @@ TEST(Leaks, BlockOnTheFloorDoesNotDarkenTheFloorAroundIt) {
   EXPECT_EQ(inside, 4);
   EXPECT_EQ(straddling, 12);
   EXPECT_GT(bake.pointsInside, 0u);
+}
+
+// A 40 cm lamp (one single-sided quad facing down, black behind) hangs 2 cm under the ceiling
+// of a closed 1 m room, its edges on 10 cm texel lines. The ceiling above it is a surface the
+// room sees through the 2 cm slot (the Conference Room's panels: a bright line there in the
+// frame), lit only by what enters the slot at grazing angles. Most of the guard's probe rays
+// from it meet the lamp's back: it must still keep its points (an emitter is a sheet, nothing
+// is inside it), and its texels must hold the slot's own irradiance, which the tracer at
+// uniformly random points of the lamp's footprint gives, not the lit ceiling's around it.
+TEST(Leaks, TheSlotAboveALampUnderTheCeilingKeepsItsOwnDarkIrradiance) {
+  test::World world;
+  const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.7f));
+  const uint32_t lamp = test::addMaterial(world.scene, glm::vec3(0.0f), glm::vec3(10.0f));
+  test::addInwardBox(world.scene, {0, 0, 0}, {1, 1, 1}, white);  // instance 5: the ceiling
+  const float lo = 0.3f, hi = 0.7f, y = 0.98f;
+  test::addQuad(world.scene, {lo, y, lo}, {hi, y, lo}, {hi, y, hi}, {lo, y, hi}, lamp);
+  world.build();
+  const test::QuadAtlas atlas = test::quadAtlas(world.scene, 0.1f, 48);
+  const LightmapBake bake = bakeLightmap(world.scene, world.geometry, *world.kernel, atlas.layout,
+                                         test::testBakeSettings(256));
+
+  // The bake: the mean over the 16 texels above the lamp (they tile its footprint), and over
+  // the ceiling texels 15 cm or more from it.
+  double slot = 0, slotVariance = 0, lit = 0;
+  int slotTexels = 0, litTexels = 0;
+  for (int ty = 0; ty < atlas.layout.height; ++ty) {
+    for (int tx = 0; tx < atlas.layout.width; ++tx) {
+      const std::size_t t = bake.irradiance.index(tx, ty);
+      glm::vec3 c;
+      uint32_t instance;
+      if (!atlas.texelCentre(tx, ty, c, instance) || instance != 5) continue;
+      const double e = luminance(bake.irradiance.pixels[t]);
+      const float outside = std::max(std::abs(c.x - 0.5f), std::abs(c.z - 0.5f)) - 0.2f;
+      if (outside < 0.0f) {
+        EXPECT_FALSE(bake.invalid[t]) << "slot texel at " << c.x << "," << c.z;
+        slot += e;
+        slotVariance += std::pow(bake.relativeError[t] * e, 2.0);
+        ++slotTexels;
+      } else if (outside >= 0.15f) {
+        lit += e;
+        ++litTexels;
+      }
+    }
+  }
+  ASSERT_EQ(slotTexels, 16);
+  ASSERT_GT(litTexels, 0);
+  slot /= slotTexels;
+  lit /= litTexels;
+  const double seBake = std::sqrt(slotVariance) / slotTexels;
+
+  // The reference: light that reflected at least once (what the lightmap holds) at uniformly
+  // random points of the footprint on the ceiling, facing down.
+  TraceSettings trace;
+  trace.paths = PathSet::IndirectOnly;
+  const PathTracer tracer(world.scene, world.geometry, *world.kernel, trace);
+  SobolSampler sampler(4321, 0);
+  const int n = 4096;
+  double sum = 0, sum2 = 0;
+  for (int s = 0; s < n; ++s) {
+    sampler.startSample(static_cast<uint32_t>(s));
+    const glm::vec2 u = sampler.get2D();
+    const glm::vec3 p(lo + (hi - lo) * u.x, 1.0f, lo + (hi - lo) * u.y);
+    const double e = luminance(tracer.irradiance(p, {0, -1, 0}, sampler));
+    sum += e;
+    sum2 += e * e;
+  }
+  const double ref = sum / n;
+  const double seRef = std::sqrt(std::max(0.0, sum2 / n - ref * ref) / (n - 1));
+  EXPECT_NEAR(slot, ref, 5.0 * std::hypot(seRef, seBake)) << "lit ceiling " << lit;
+  // The slot sees the room through 2 cm at most 20 cm away: a small part of its hemisphere.
+  EXPECT_LT(slot, 0.25 * lit);
 }
 
 }  // namespace

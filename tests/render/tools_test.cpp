@@ -681,9 +681,9 @@ TEST_F(ToolsTest, FindsTheBuildStepsBakeOfAContentScene) {
 
 // bounce-bake's error.exr (the build step's Cornell bake): one relative error per texel with
 // samples (the delivered map's, baker/bake/delivered_error.h), -1 elsewhere; its mean over the
-// lit texels is bake.json's estimatedError.mean (the same estimates, averaged by the baker; the
-// box has no texels of unknown error, which error.exr holds as 1 and the mean leaves out);
-// --mode error draws it.
+// lit texels of known error is bake.json's estimatedError.mean (the same estimates, averaged by
+// the baker); the texels of unknown error (the slot over the lamp, whose samples all stayed dark)
+// are 1 in error.exr, left out of the mean and counted in unknownTexels; --mode error draws it.
 TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
   const fs::path built =
       fs::path(BOUNCE_BIN_DIR).parent_path() / "content/cornell_box/cornell_box.bake";
@@ -692,7 +692,7 @@ TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
   const bounce::Image irradiance = bounce::readExr(built / "lightmap.exr");
   ASSERT_EQ(error.pixels.size(), irradiance.pixels.size());
   double sum = 0.0;
-  std::size_t lit = 0, none = 0;
+  std::size_t lit = 0, none = 0, unknown = 0;
   for (std::size_t t = 0; t < error.pixels.size(); ++t) {
     const float e = error.pixels[t].r;
     if (e == bounce::kNoErrorEstimate) {
@@ -702,13 +702,18 @@ TEST_F(ToolsTest, TheBakesErrorMapIsItsEstimateAndModeErrorDrawsIt) {
     ASSERT_GE(e, 0.0f) << t;
     const glm::vec3 E = irradiance.pixels[t];
     if (bounce::luminance(E) > 0.0f) {
+      if (e == 1.0f) {
+        ++unknown;
+        continue;
+      }
       sum += e;
       ++lit;
     }
   }
-  const double mean =
-      bounce::parseManifest(built / "bake.json", bounce::test::readText(built / "bake.json"))
-          .estimatedError.mean;
+  const bounce::BakeManifest manifest =
+      bounce::parseManifest(built / "bake.json", bounce::test::readText(built / "bake.json"));
+  const double mean = manifest.estimatedError.mean;
+  EXPECT_EQ(static_cast<uint64_t>(unknown), manifest.estimatedError.unknownTexels);
   ASSERT_GT(lit, 1000u);
   EXPECT_GT(none, 0u);  // the padding between charts
   EXPECT_NEAR(sum / static_cast<double>(lit), mean, 0.02 * mean);
