@@ -27,13 +27,15 @@ void writeBakeAndReport(SceneBake& baked, const BakeOutput& out) {
   const BakeManifest::Atlas& atlas = manifest.atlas;
   std::fprintf(stderr,
                "bounce-bake: %s: atlas %dx%d (%d charts, %.0f%% used, texel %.4g m), %llu "
-               "texels, %.0f spp mean, estimated error of the map mean %.2f%% p95 %.2f%% (per "
+               "texels, %.0f spp mean, estimated error of the map mean %.2f%% p95 %.2f%% "
+               "luminance-weighted %.2f%% (per "
                "texel before filters %.2f%% / %.2f%%), %.2f Mrays/s, "
                "%.2f s (irradiance %.2f s), memory %s (estimated %s) -> %s\n",
                out.scene.filename().string().c_str(), atlas.width, atlas.height, atlas.charts,
                100.0 * atlas.utilisation, atlas.texelSize,
                static_cast<unsigned long long>(baked.coveredTexels), manifest.samples.perTexelMean,
                100.0 * manifest.estimatedError.mean, 100.0 * manifest.estimatedError.p95,
+               100.0 * manifest.estimatedError.luminanceWeighted,
                100.0 * manifest.estimatedError.beforeFiltersMean,
                100.0 * manifest.estimatedError.beforeFiltersP95, measured.raysPerSecond * 1e-6,
                measured.seconds.total, measured.seconds.irradiance,

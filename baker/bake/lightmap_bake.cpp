@@ -289,6 +289,10 @@ LightmapBakeSettings defaultBakeSettings() {
   settings.denoise = true;
   settings.gather = Gather::Cache;
   settings.cacheSpp = 32;
+  // Texels dimmer than a tenth of the scene's mean light stop at an error the frame cannot show
+  // beside it. Conference Room: 382 → 307 samples a texel, irradiance 29.1 → 24.0 s, the
+  // indirect frame 2.19 % off the path tracer either way (docs/baker.md "A floor for dim texels").
+  settings.errorFloor = 0.1f;
   return settings;
 }
 
