@@ -313,7 +313,7 @@ ProbeBake bakeIrradianceProbes(const Scene& scene, const WorldGeometry& geometry
   trace.maxDepth = settings.maxDepth;
   trace.seed = settings.seed;
   trace.lightChoice = settings.lightChoice;
-  const BakedLight light(scene, geometry, kernel, trace);
+  const BakedLight light(scene, geometry, kernel, trace, {settings.cache, settings.cache});
   StageProgress* progress = settings.progress;
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   arena.execute([&] {

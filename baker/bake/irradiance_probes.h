@@ -53,6 +53,8 @@ inline constexpr float kProbeInsideFraction = 0.25f;
 // Probe i samples the pattern of pixel kProbePatterns + i: apart from every texel's (< 2^31).
 inline constexpr uint32_t kProbePatterns = 0x80000000u;
 
+class IndirectCache;
+
 // An instance to probe: its index in the scene file (stored) and in the scene the bake traces
 // (staticScene: WorldGeometry::triangleInstance's numbering).
 struct ProbedInstance {
@@ -99,6 +101,9 @@ struct ProbeSettings {
   float maxSpacing = kMaxProbeSpacing;  // m, placeProbeGrids's
   // Probes done are counted here (total: the probe count), and cancelling stops the stage.
   StageProgress* progress = nullptr;
+  // Where a probe's paths end after their first reflection (trace/indirect_cache.h: the
+  // delivered lightmap, pipeline/probe_stage.h); null: whole paths.
+  const IndirectCache* cache = nullptr;
 };
 
 struct ProbeBake {

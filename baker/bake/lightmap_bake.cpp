@@ -351,4 +351,21 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
   return bake;
 }
 
+std::unique_ptr<IrradianceCache> deliveredMapCache(const Scene& scene,
+                                                   const WorldGeometry& geometry,
+                                                   const LightmapLayout& layout,
+                                                   const LightmapBake& bake) {
+  if (bake.partial || bake.irradiance.pixels.empty()) return nullptr;
+  for (const Light& light : scene.lights)
+    if (light.bakeDirect) return nullptr;
+  for (const Material& material : scene.materials)
+    if (material.bakeDirect && material.isEmissive()) return nullptr;
+  std::vector<uint8_t> readable(bake.covered.size(), 0);
+  for (std::size_t t = 0; t < readable.size(); ++t)
+    readable[t] = bake.covered[t] && !bake.invalid[t] ? 1 : 0;
+  return std::make_unique<IrradianceCache>(scene, geometry, layout,
+                                           std::array<Image, 2>{bake.irradiance, bake.irradiance},
+                                           std::move(readable));
+}
+
 }  // namespace bounce

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -20,6 +21,7 @@
 
 namespace bounce {
 
+class IrradianceCache;
 class RayKernel;
 class StagePlan;
 enum class Gather : uint8_t;  // bake_folder/gather.h
@@ -123,5 +125,16 @@ LightmapBakeSettings defaultBakeSettings();
 LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                           const RayKernel& kernel, const LightmapLayout& layout,
                           const LightmapBakeSettings& settings);
+
+// The delivered map of a whole `bake` as a cache (irradiance_cache.h: both halves the map, read
+// where the leak guard kept a texel's points): paths that end at it after one reflection, as
+// the texels' final samples end at the cache pass's (the probes: pipeline/probe_stage.h), read
+// the light of every sample, denoised. Null when the map holds baked-only lights' direct light,
+// which the paths' next-event estimate would count a second time, or holds no texel. `scene`,
+// `geometry` and `layout` are the bake's (geometry must outlive the cache).
+std::unique_ptr<IrradianceCache> deliveredMapCache(const Scene& scene,
+                                                   const WorldGeometry& geometry,
+                                                   const LightmapLayout& layout,
+                                                   const LightmapBake& bake);
 
 }  // namespace bounce

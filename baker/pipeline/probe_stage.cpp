@@ -5,9 +5,11 @@
 
 #include "atlas/atlas.h"
 #include "bake/corner_visibility_bake.h"
+#include "bake/irradiance_cache.h"
 #include "bake/irradiance_probes.h"
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_bake.h"
+#include "bake_folder/gather.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/scene_bake_stages.h"
 #include "scene/static_scene.h"
@@ -16,7 +18,8 @@ namespace bounce {
 
 ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGeometry& geometry,
                          const RayKernel& kernel, std::span<const uint32_t> withoutRegion,
-                         const SceneBakeSettings& o, const StagePlan& plan) {
+                         const IndirectCache* lightmap, const SceneBakeSettings& o,
+                         const StagePlan& plan) {
   // Instance i of the file is traced as its number in staticScene (scene/static_scene.h).
   const std::vector<uint32_t> traced = staticInstanceNumbers(scene);
   std::vector<ProbedInstance> instances;
@@ -39,6 +42,7 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
   settings.lightChoice = o.lightChoice;
   settings.threads = o.threads;
   settings.progress = stage.get();
+  settings.cache = lightmap;
   ProbeBake bake = bakeIrradianceProbes(statics, geometry, kernel, instances, settings);
   out.probes = std::move(bake.probes);
   // Their direct light is drawn live: the static lights' visibility per triangle corner, as the
@@ -110,9 +114,16 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
 }
 
 void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
-                const SceneBakeSettings& settings, const StagePlan& plan, SceneBake& result) {
-  ProbeStage probes = runProbeStage(scene, *statics.scene, *statics.geometry, *statics.kernel,
-                                    atlas.vplLitInstances, settings, plan);
+                const LightmapBake& bake, const SceneBakeSettings& settings, const StagePlan& plan,
+                SceneBake& result) {
+  // With the cache gather the probes' paths end at the delivered map after one reflection.
+  const std::unique_ptr<IrradianceCache> lightmap =
+      settings.gather == Gather::Cache ? deliveredMapCache(*statics.scene, *statics.geometry,
+                                                           staticLayout(scene, atlas.layout), bake)
+                                       : nullptr;
+  ProbeStage probes =
+      runProbeStage(scene, *statics.scene, *statics.geometry, *statics.kernel,
+                    atlas.vplLitInstances, lightmap ? &lightmap->half(0) : nullptr, settings, plan);
   // The stage's seconds: the probes' and their instances' baked visibility.
   result.folder.manifest.measured.seconds.probes = probes.seconds + probes.visibilitySeconds;
   if (!probes.probes.visibility.corners.empty()) {

@@ -84,7 +84,7 @@ SceneBake bakeScene(const Scene& scene, const SceneBakeSettings& o, BakeObserver
   }
   vplStage(statics, o, plan, result);
   lightmapFolder(scene, o, atlas, bake, statics, result);
-  probeStage(scene, statics, atlas, o, plan, result);
+  probeStage(scene, statics, atlas, bake, o, plan, result);
   result.folder.manifest.measured.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

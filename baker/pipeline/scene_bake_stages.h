@@ -22,6 +22,7 @@ inline constexpr char kStageVpls[] = "VPLs";
 
 struct Atlas;
 struct LightmapBake;
+struct LightmapLayout;
 struct Scene;
 struct SceneBake;
 struct SceneBakeSettings;
@@ -59,6 +60,11 @@ LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, c
 void vplStage(const StaticGeometry& statics, const SceneBakeSettings& settings,
               const StagePlan& plan, SceneBake& result);
 
+// `layout` (instance indices into `scene`) renumbered for staticScene(scene)
+// (scene/static_scene.h): the lightmap bake runs in the static scene, the folder keeps the file
+// scene's numbering. Every region is a static instance's (the atlas lays out no other).
+LightmapLayout staticLayout(const Scene& scene, LightmapLayout layout);
+
 // The lightmap's files (layout, lightmap, error map, visibility) and bake.json but for the
 // VPLs' part and the total seconds.
 void lightmapFolder(const Scene& scene, const SceneBakeSettings& settings, const Atlas& atlas,
@@ -66,7 +72,9 @@ void lightmapFolder(const Scene& scene, const SceneBakeSettings& settings, const
 
 // 9: the irradiance probes of the static instances the atlas left without a lightmap region
 // (probe_stage.h) into the folder, bake.json's "probes" and the notes, when there are any.
+// Their paths end at `bake`'s delivered map after one reflection (probe_stage.h).
 void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
-                const SceneBakeSettings& settings, const StagePlan& plan, SceneBake& result);
+                const LightmapBake& bake, const SceneBakeSettings& settings, const StagePlan& plan,
+                SceneBake& result);
 
 }  // namespace bounce

@@ -12,18 +12,12 @@
 #include "scene/static_scene.h"
 
 namespace bounce {
-namespace {
 
-// `layout` (instance indices into `scene`) renumbered for staticScene(scene)
-// (scene/static_scene.h): the lightmap bake runs in the static scene, the folder keeps the file
-// scene's numbering. Every region is a static instance's (the atlas lays out no other).
 LightmapLayout staticLayout(const Scene& scene, LightmapLayout layout) {
   const std::vector<uint32_t> numbers = staticInstanceNumbers(scene);
   for (InstanceLightmapUv& region : layout.instances) region.instance = numbers.at(region.instance);
   return layout;
 }
-
-}  // namespace
 
 LightmapBake lightmapStages(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
                             const SceneBakeSettings& o, const StagePlan& plan, SceneBake& result) {

@@ -3,11 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <optional>
 #include <random>
 
+#include "bake/irradiance_cache.h"
 #include "bake/irradiance_probes.h"
+#include "bake/lightmap_bake.h"
+#include "bake_folder/lightmap_layout.h"
 #include "bake_folder/probe_file.h"
 #include "test_scenes.h"
+#include "trace/indirect_cache.h"
 #include "trace/sampling.h"
 
 namespace bounce {
@@ -157,6 +163,61 @@ TEST(IrradianceProbes, FurnaceReconstructsTheExactIrradianceForEveryNormal) {
   EXPECT_EQ(bake.nonFiniteSamples, 0u);
 }
 
+// The furnace's light that reflected at least once is π·Le·ρ/(1 − ρ) W/m² at every surface point:
+// a cache holding it exactly (what a converged lightmap of the furnace holds).
+class ExactFurnaceCache final : public IndirectCache {
+ public:
+  explicit ExactFurnaceCache(double e) : e_(static_cast<float>(e)) {}
+  std::optional<glm::vec3> irradianceAt(const SurfacePoint&, glm::vec3) const override {
+    return glm::vec3(e_);
+  }
+
+ private:
+  float e_;
+};
+
+// Probes whose paths end at a cache after one reflection (ProbeSettings::cache, the delivered
+// lightmap in a bake) estimate the same light: in the furnace, with the cache exact, every probe
+// still holds π·Le·ρ/(1 − ρ) for every normal within 5 of its standard errors, and what is left
+// to sample is the next-event estimate at the first hit: at the same samples the probes are
+// closer to it than whole paths' (a cache never read gives the same probes).
+TEST(IrradianceProbes, PathsEndingAtAnExactCacheHoldTheFurnacesLightMoreClosely) {
+  const float rho = 0.5f, le = 1.0f;
+  const FurnaceWithCube furnace(rho, le);
+  const double exact = kPi * le * rho / (1.0 - rho);
+  const ExactFurnaceCache cache(exact);
+  ProbeSettings settings;
+  settings.maxSpp = 2048;
+  settings.targetError = 0.03f;
+  settings.seed = 5;
+  const std::vector<ProbedInstance> instances = {{furnace.cube, furnace.cube}};
+  const ProbeBake paths = bakeIrradianceProbes(furnace.world.scene, furnace.world.geometry,
+                                               *furnace.world.kernel, instances, settings);
+  settings.cache = &cache;
+  const ProbeBake cached = bakeIrradianceProbes(furnace.world.scene, furnace.world.geometry,
+                                                *furnace.world.kernel, instances, settings);
+  ASSERT_EQ(cached.probes.probes.size(), paths.probes.probes.size());
+  int valid = 0;
+  double squaredCached = 0.0, squaredPaths = 0.0;  // (E(n) − exact)², W²/m⁴
+  for (std::size_t i = 0; i < cached.probes.probes.size(); ++i) {
+    if (cached.invalid[i] || !cached.needed[i]) continue;
+    ++valid;
+    for (const glm::vec3& n : testNormals()) {
+      const double e = luminance(probeIrradianceAt(cached.probes.probes[i], n));
+      EXPECT_NEAR(e, exact, 5.0 * cached.relativeError[i] * exact + 1e-9) << "probe " << i;
+      squaredCached += (e - exact) * (e - exact);
+      const double p = luminance(probeIrradianceAt(paths.probes.probes[i], n));
+      squaredPaths += (p - exact) * (p - exact);
+    }
+  }
+  ASSERT_GT(valid, 0);
+  std::printf("rms error, cached %.5f, whole paths %.5f W/m^2 (%d probes, %llu / %llu samples)\n",
+              std::sqrt(squaredCached / valid), std::sqrt(squaredPaths / valid), valid,
+              static_cast<unsigned long long>(cached.totalSamples),
+              static_cast<unsigned long long>(paths.totalSamples));
+  EXPECT_LT(squaredCached, 0.25 * squaredPaths);
+}
+
 // One instance of two 10 cm cubes 4 m apart (as the Conference Room's chairs are one mesh): the
 // grid spans both at the largest spacing, 25 cm, and only the probes around the cubes are read.
 TEST(IrradianceProbes, AnInstanceOfSmallPiecesFarApartIsProbedAroundThePiecesOnly) {
@@ -205,6 +266,36 @@ TEST(IrradianceProbes, TheSameBytesAtAnyThreadCount) {
                                              *furnace.world.kernel, instances, settings);
   EXPECT_EQ(encodeProbes(one.probes), encodeProbes(two.probes));
   EXPECT_EQ(one.samples, two.samples);
+}
+
+// The delivered map serves as a cache only where it holds no direct light: a baked-only light's
+// or emitter's direct light is in the map, and the paths' next-event estimate at the cache's hit
+// would count it a second time.
+TEST(DeliveredMapCache, NoneWhereTheMapHoldsABakedOnlyLightsDirectLight) {
+  test::World world;
+  const uint32_t white = test::addMaterial(world.scene, glm::vec3(0.5f));
+  test::addQuad(world.scene, {0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}, white);
+  world.build();
+  LightmapLayout layout;
+  layout.width = layout.height = 4;
+  layout.texelSize = 0.25f;
+  LightmapBake bake;
+  bake.irradiance = Image(4, 4, glm::vec3(1.0f));
+  bake.covered.assign(16, 1);
+  bake.invalid.assign(16, 0);
+  Scene& scene = world.scene;
+  EXPECT_NE(deliveredMapCache(scene, world.geometry, layout, bake), nullptr);
+  Light lamp;
+  lamp.name = "lamp";
+  scene.lights.push_back(lamp);
+  EXPECT_NE(deliveredMapCache(scene, world.geometry, layout, bake), nullptr);  // drawn live
+  scene.lights.back().bakeDirect = true;
+  EXPECT_EQ(deliveredMapCache(scene, world.geometry, layout, bake), nullptr);
+  scene.lights.clear();
+  const uint32_t glow = test::addMaterial(scene, glm::vec3(0.0f), glm::vec3(2.0f));
+  EXPECT_NE(deliveredMapCache(scene, world.geometry, layout, bake), nullptr);
+  scene.materials[glow].bakeDirect = true;
+  EXPECT_EQ(deliveredMapCache(scene, world.geometry, layout, bake), nullptr);
 }
 
 }  // namespace
