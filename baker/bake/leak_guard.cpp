@@ -103,8 +103,13 @@ LeakGuardResult guardAgainstLeaks(const Scene& scene, const WorldGeometry& geome
     for (uint32_t p = begin; p < end; ++p) {
       const TexelPoint& point = coverage.points[p];
       const Frame frame(point.shadingNormal);
+      // The verdict is back ≥ inside; the rays stop once the count has reached it or can no
+      // longer reach it (every ray left a back face): the same verdict, fewer rays.
+      const float inside = settings.insideFraction * static_cast<float>(probes);
       int back = 0;
       for (int i = 0; i < probes; ++i) {
+        if (static_cast<float>(back) >= inside || static_cast<float>(back + probes - i) < inside)
+          break;
         Ray ray;
         ray.direction = frame.toWorld(sampleCosineHemisphere(hammersley(i, probes)));
         if (glm::dot(ray.direction, point.geometricNormal) <= 0.0f) continue;
@@ -113,7 +118,7 @@ LeakGuardResult guardAgainstLeaks(const Scene& scene, const WorldGeometry& geome
         ++rayCount[texel];
         if (isBackFace(ray, kernel.intersect(ray))) ++back;
       }
-      if (static_cast<float>(back) >= settings.insideFraction * static_cast<float>(probes)) {
+      if (static_cast<float>(back) >= inside) {
         keep[p] = 0;
         ++insideCount[texel];
       }
