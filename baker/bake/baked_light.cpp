@@ -28,15 +28,14 @@ Scene bakedDirectScene(const Scene& scene) {
 
 BakedLight::BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
                        TraceSettings trace, std::array<const IndirectCache*, 2> cache,
-                       bool bakedDirect)
+                       bool bakedDirect, PathSet gathered)
     : directScene_(bakedDirectScene(scene)),
       anyBakedDirect_(bakedDirect && (!directScene_.lights.empty() || emits(directScene_))),
-      indirect_(scene, geometry, kernel, withPaths(trace, PathSet::IndirectOnly)),
+      indirect_(scene, geometry, kernel, withPaths(trace, gathered)),
       bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {
   indirect_.setCache(cache[0]);
   if (cache[1] != cache[0]) {
-    indirectB_ = std::make_unique<PathTracer>(scene, geometry, kernel,
-                                              withPaths(trace, PathSet::IndirectOnly));
+    indirectB_ = std::make_unique<PathTracer>(scene, geometry, kernel, withPaths(trace, gathered));
     indirectB_->setCache(cache[1]);
   }
 }

@@ -43,7 +43,7 @@ class BakedLight {
   // light (what the cache itself holds: the indirect part only).
   BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
              TraceSettings trace, std::array<const IndirectCache*, 2> cache = {},
-             bool bakedDirect = true);
+             bool bakedDirect = true, PathSet gathered = PathSet::IndirectOnly);
   BakedLight(const BakedLight&) = delete;
   BakedLight& operator=(const BakedLight&) = delete;
 

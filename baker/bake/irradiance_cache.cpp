@@ -14,8 +14,11 @@ namespace bounce {
 
 IrradianceCache::IrradianceCache(const Scene& scene, const WorldGeometry& geometry,
                                  const LightmapLayout& layout, std::array<Image, 2> halves,
-                                 std::vector<uint8_t> readable)
-    : geometry_(geometry), irradiance_(std::move(halves)), readable_(std::move(readable)) {
+                                 std::vector<uint8_t> readable, bool holdsDirect)
+    : geometry_(geometry),
+      irradiance_(std::move(halves)),
+      readable_(std::move(readable)),
+      holdsDirect_(holdsDirect) {
   const std::size_t texels =
       static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height);
   for (const Image& map : irradiance_)

@@ -1,9 +1,10 @@
-// The lightmap's own indirect irradiance as a cache the final gather ends its paths at
+// The lightmap's own irradiance as a cache the final gather ends its paths at
 // (trace/indirect_cache.h; docs/baker.md, "Gather with a cache").
 //
-// Holds two whole-map E_cache (W/m², per linear-RGB channel, the layout's size: the IndirectOnly
+// Holds two whole-map E_cache (W/m², per linear-RGB channel, the layout's size: the total
 // irradiance of two short bakes of seeds of their own, each dilated as the final map is, not
-// denoised) and a mask of the texels they may be read at. A final sample of half h
+// denoised, holdsDirect; or the delivered map twice, indirect only, for the probes) and a mask of
+// the texels they may be read at. A final sample of half h
 // (delivered_error.h's split) reads half(h) only, so the final pass's two half-sample maps carry
 // independent cache errors and their difference D holds the cache's noise as well as the final
 // samples' (docs/baker.md, "Gather with a cache"). A hit y reached from the vertex x reads the
@@ -45,7 +46,8 @@ class IrradianceCache {
   // layout.height; geometry = flatten(scene), whose instances the layout's regions number.
   // Throws std::invalid_argument when the sizes or the layout do not fit the scene.
   IrradianceCache(const Scene& scene, const WorldGeometry& geometry, const LightmapLayout& layout,
-                  std::array<Image, 2> halves, std::vector<uint8_t> readable);
+                  std::array<Image, 2> halves, std::vector<uint8_t> readable,
+                  bool holdsDirect = false);
   // half_ points into this object.
   IrradianceCache(const IrradianceCache&) = delete;
   IrradianceCache& operator=(const IrradianceCache&) = delete;
@@ -70,6 +72,7 @@ class IrradianceCache {
     std::optional<glm::vec3> irradianceAt(const SurfacePoint& at, glm::vec3 from) const override {
       return owner_.irradianceAt(at, from, h_);
     }
+    bool holdsDirect() const override { return owner_.holdsDirect_; }
 
    private:
     const IrradianceCache& owner_;
@@ -80,6 +83,7 @@ class IrradianceCache {
   std::array<Half, 2> half_{Half(*this, 0), Half(*this, 1)};
   std::vector<uint8_t> readable_;
   std::vector<TriangleUv> triangles_;  // per world triangle
+  bool holdsDirect_ = false;           // E_total, not E_indirect (IndirectCache::holdsDirect)
 };
 
 }  // namespace bounce

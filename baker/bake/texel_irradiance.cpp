@@ -59,7 +59,8 @@ TexelIrradiance gatherIrradiance(const Scene& scene, const WorldGeometry& geomet
   trace.maxDepth = settings.maxDepth;
   trace.seed = settings.seed;
   trace.lightChoice = settings.lightChoice;
-  const BakedLight light(scene, geometry, counting, trace, settings.cache, settings.bakedDirect);
+  const BakedLight light(scene, geometry, counting, trace, settings.cache, settings.bakedDirect,
+                         settings.totalLight ? PathSet::All : PathSet::IndirectOnly);
 
   const std::size_t texels = coverage.texelCount();
   TexelIrradiance out;

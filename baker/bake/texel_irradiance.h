@@ -56,6 +56,9 @@ struct IrradianceSettings {
   std::array<const IndirectCache*, 2> cache{};
   // false: the indirect light only, without the baked-only lights' direct light (the cache pass).
   bool bakedDirect = true;
+  // true: the light arriving at the texel by every path, its direct light too (E_total, the
+  // cache pass of a cache that holds it: IndirectCache::holdsDirect).
+  bool totalLight = false;
   // Called with each tile of `work` once its texels are in `out`, from the worker that finished
   // it (several at once: it must lock what it shares); may be empty.
   std::function<void(uint32_t tile, const TexelIrradiance& out)> tileDone;

@@ -181,6 +181,14 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
   // Invariant: `point` is reached after `depth` reflections and its emission is counted.
   for (; depth < maxReflections_; ++depth) {
     const uint32_t dim = baseDim + kDimsPerVertex * static_cast<uint32_t>(depth);
+    // A cache of the total light (indirect_cache.h): the light leaving y after depth + 1 or more
+    // reflections is ρ/π·E_total; the path ends here.
+    if (cache_ != nullptr && cache_->holdsDirect() && depth >= 1 && depth + 1 >= minReflections_) {
+      if (const std::optional<glm::vec3> total = cache_->irradianceAt(point, previous)) {
+        radiance += beta * point.albedo * kInvPi * *total;
+        break;
+      }
+    }
     // Next-event estimation: light after depth + 1 reflections.
     if (depth + 1 >= minReflections_) {
       sampler.setDimension(dim);
@@ -189,7 +197,7 @@ glm::vec3 PathTracer::reflected(SurfacePoint point, glm::vec3 throughput, int de
     // The cache (indirect_cache.h): the light after depth + 2 or more reflections, ρ/π·E_indirect;
     // the path then ends after this vertex's BRDF-sampled ray has looked for emission.
     std::optional<glm::vec3> cached;
-    if (cache_ != nullptr && depth >= 1 && depth + 1 >= minReflections_)
+    if (cache_ != nullptr && !cache_->holdsDirect() && depth >= 1 && depth + 1 >= minReflections_)
       cached = cache_->irradianceAt(point, previous);
     if (cached) radiance += beta * point.albedo * kInvPi * *cached;
 
