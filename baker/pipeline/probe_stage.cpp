@@ -56,8 +56,7 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
       mirrored.push_back(
           glm::determinant(glm::mat3(scene.instances[p.fileIndex].transform)) < 0.0f ? 1 : 0);
     }
-    CornerVisibilitySettings corner;
-    corner.samplesPerLight = LightmapBakeSettings{}.visibility.samplesPerLight;
+    CornerVisibilitySettings corner;  // kCornerSamplesPerLight samples a light
     corner.seed = o.seed;
     corner.threads = o.threads;
     CornerVisibilityBake v = bakeCornerVisibility(lights, statics.lights, geometry, kernel,
