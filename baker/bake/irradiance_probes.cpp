@@ -108,7 +108,8 @@ ProbeEstimate estimateProbe(const BakedLight& light, glm::vec3 position, uint32_
     const double errorOfE =
         (kShY00 * deviation(0) + kShY1 * l1) / std::sqrt(static_cast<double>(n));
     const double meanE = kShY00 * mean[0];
-    out.relativeError = meanE > 0.0 ? static_cast<float>(errorOfE / meanE) : 0.0f;
+    const double scale = std::max(meanE, settings.errorFloor);
+    out.relativeError = meanE > 0.0 ? static_cast<float>(errorOfE / scale) : 0.0f;
     if (adaptive && n >= kMinAdaptiveSpp && meanE > 0.0 && out.relativeError < settings.targetError)
       break;
     if (adaptive && mean[0] == 0.0 && n >= kMinAdaptiveSpp &&

@@ -104,6 +104,10 @@ struct ProbeSettings {
   // Where a probe's paths end after their first reflection (trace/indirect_cache.h: the
   // delivered lightmap, pipeline/probe_stage.h); null: whole paths.
   const IndirectCache* cache = nullptr;
+  // W/m² (luminance): a probe dimmer than it stops once its standard error is under targetError
+  // times it, and its relativeError is against it (the texels' floor, texel_irradiance.h); 0:
+  // every probe against its own mean.
+  double errorFloor = 0.0;
 };
 
 struct ProbeBake {

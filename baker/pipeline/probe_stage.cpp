@@ -10,6 +10,7 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_bake.h"
 #include "bake_folder/gather.h"
+#include "image/luminance.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/scene_bake_stages.h"
 #include "scene/static_scene.h"
@@ -18,8 +19,8 @@ namespace bounce {
 
 ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGeometry& geometry,
                          const RayKernel& kernel, std::span<const uint32_t> withoutRegion,
-                         const IndirectCache* lightmap, const SceneBakeSettings& o,
-                         const StagePlan& plan) {
+                         const IndirectCache* lightmap, double errorFloor,
+                         const SceneBakeSettings& o, const StagePlan& plan) {
   // Instance i of the file is traced as its number in staticScene (scene/static_scene.h).
   const std::vector<uint32_t> traced = staticInstanceNumbers(scene);
   std::vector<ProbedInstance> instances;
@@ -43,6 +44,7 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
   settings.threads = o.threads;
   settings.progress = stage.get();
   settings.cache = lightmap;
+  settings.errorFloor = errorFloor;
   ProbeBake bake = bakeIrradianceProbes(statics, geometry, kernel, instances, settings);
   out.probes = std::move(bake.probes);
   // Their direct light is drawn live: the static lights' visibility per triangle corner, as the
@@ -112,6 +114,26 @@ ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGe
   return out;
 }
 
+namespace {
+
+// The probes' error floor (W/m²): --error-floor times the delivered map's mean luminance over the
+// texels the leak guard kept, the light the probes themselves gather (indirect). From the map,
+// so a merge and a single process agree (the cache pass's mean exists only where tiles ran).
+double probeErrorFloor(const LightmapBake& bake, const SceneBakeSettings& settings) {
+  if (!(settings.errorFloor > 0.0f)) return 0.0;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < bake.covered.size(); ++t) {
+    if (!bake.covered[t] || bake.invalid[t]) continue;
+    sum += luminance(bake.irradiance.pixels[t]);
+    ++count;
+  }
+  return count > 0 ? static_cast<double>(settings.errorFloor) * sum / static_cast<double>(count)
+                   : 0.0;
+}
+
+}  // namespace
+
 void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& atlas,
                 const LightmapBake& bake, const SceneBakeSettings& settings, const StagePlan& plan,
                 SceneBake& result) {
@@ -120,9 +142,9 @@ void probeStage(const Scene& scene, const StaticGeometry& statics, const Atlas& 
       settings.gather == Gather::Cache ? deliveredMapCache(*statics.scene, *statics.geometry,
                                                            staticLayout(scene, atlas.layout), bake)
                                        : nullptr;
-  ProbeStage probes =
-      runProbeStage(scene, *statics.scene, *statics.geometry, *statics.kernel,
-                    atlas.vplLitInstances, lightmap ? &lightmap->half(0) : nullptr, settings, plan);
+  ProbeStage probes = runProbeStage(scene, *statics.scene, *statics.geometry, *statics.kernel,
+                                    atlas.vplLitInstances, lightmap ? &lightmap->half(0) : nullptr,
+                                    probeErrorFloor(bake, settings), settings, plan);
   // The stage's seconds: the probes' and their instances' baked visibility.
   result.folder.manifest.measured.seconds.probes = probes.seconds + probes.visibilitySeconds;
   if (!probes.probes.visibility.corners.empty()) {

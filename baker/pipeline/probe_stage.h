@@ -40,10 +40,11 @@ struct ProbeStage {
 // `scene` is the scene file's, `statics` = staticScene(scene) that `geometry` and `kernel` trace;
 // `withoutRegion` the file indices of the static instances without a lightmap region
 // (Atlas::vplLitInstances). `lightmap`, when given, is where the probes' paths end after their
-// first reflection (ProbeSettings::cache). Throws BakeCancelled when the plan's observer cancels.
+// first reflection (ProbeSettings::cache); `errorFloor` (W/m²) the probes' (ProbeSettings). Throws
+// BakeCancelled when the plan's observer cancels.
 ProbeStage runProbeStage(const Scene& scene, const Scene& statics, const WorldGeometry& geometry,
                          const RayKernel& kernel, std::span<const uint32_t> withoutRegion,
-                         const IndirectCache* lightmap, const SceneBakeSettings& settings,
-                         const StagePlan& plan);
+                         const IndirectCache* lightmap, double errorFloor,
+                         const SceneBakeSettings& settings, const StagePlan& plan);
 
 }  // namespace bounce

@@ -2,6 +2,7 @@
 // radiance field, and probes in a closed furnace.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -216,6 +217,47 @@ TEST(IrradianceProbes, PathsEndingAtAnExactCacheHoldTheFurnacesLightMoreClosely)
               static_cast<unsigned long long>(cached.totalSamples),
               static_cast<unsigned long long>(paths.totalSamples));
   EXPECT_LT(squaredCached, 0.25 * squaredPaths);
+}
+
+// An error floor (ProbeSettings::errorFloor, W/m²; the bake sets it from --error-floor and the
+// delivered map): a probe at or above it is untouched, the same samples and bytes as without;
+// one below it stops once its standard error is under target × floor, so sooner, and lies
+// within 5 of those errors of the furnace's exact light.
+TEST(IrradianceProbes, AnErrorFloorStopsOnlyProbesDimmerThanItAtItsAbsoluteError) {
+  const float rho = 0.5f, le = 1.0f;
+  const FurnaceWithCube furnace(rho, le);
+  const double exact = kPi * le * rho / (1.0 - rho);
+  ProbeSettings settings;
+  settings.maxSpp = 2048;
+  settings.targetError = 0.1f;
+  settings.seed = 5;
+  const std::vector<ProbedInstance> instances = {{furnace.cube, furnace.cube}};
+  auto bakeWithFloor = [&](double floor) {
+    settings.errorFloor = floor;
+    return bakeIrradianceProbes(furnace.world.scene, furnace.world.geometry, *furnace.world.kernel,
+                                instances, settings);
+  };
+  const ProbeBake none = bakeWithFloor(0.0), below = bakeWithFloor(0.5 * exact),
+                  above = bakeWithFloor(10.0 * exact);
+  // Premise: without a floor the probes stop on their own error, before the cap.
+  ASSERT_LT(*std::min_element(
+                none.samples.begin(), none.samples.end(),
+                [](uint32_t a, uint32_t b) { return (a == 0 ? ~0u : a) < (b == 0 ? ~0u : b); }),
+            static_cast<uint32_t>(settings.maxSpp));
+  EXPECT_EQ(below.samples, none.samples);
+  EXPECT_EQ(below.probes.probes, none.probes.probes);
+  int dim = 0;
+  for (std::size_t i = 0; i < above.samples.size(); ++i) {
+    if (above.invalid[i] || !above.needed[i]) continue;
+    ++dim;
+    EXPECT_LT(above.samples[i], none.samples[i]) << "probe " << i;
+    EXPECT_LT(above.relativeError[i], settings.targetError) << "probe " << i;
+    for (const glm::vec3& n : testNormals())
+      EXPECT_NEAR(luminance(probeIrradianceAt(above.probes.probes[i], n)), exact,
+                  5.0 * settings.targetError * 10.0 * exact)
+          << "probe " << i;
+  }
+  EXPECT_GT(dim, 0);
 }
 
 // One instance of two 10 cm cubes 4 m apart (as the Conference Room's chairs are one mesh): the
