@@ -37,10 +37,12 @@ class BakedLight {
  public:
   // `trace` gives the depth, seed and light choice (its paths are set here). scene, geometry and
   // kernel must outlive it. `cache`, when given (and outliving it), ends the indirect paths of
-  // the samples of half h (delivered_error.h's split) at the cached indirect irradiance of
-  // cache[h] (trace/indirect_cache.h), so that the two half-sample maps carry independent cache
-  // errors (irradiance_cache.h); `bakedDirect` false leaves out the baked-only lights' direct
-  // light (what the cache itself holds: the indirect part only).
+  // the samples of half h (delivered_error.h's split) at the cached irradiance of cache[h]
+  // (trace/indirect_cache.h), so that the two half-sample maps carry independent cache errors
+  // (irradiance_cache.h); `bakedDirect` false leaves out the separate estimate of the baked-only
+  // lights' direct light; `gathered` is what the other paths gather: the light that reflected at
+  // least once (IndirectOnly), or every light's with the direct light too (All: the cache pass
+  // of a cache that holds the total light, where the baked-only lights are among all).
   BakedLight(const Scene& scene, const WorldGeometry& geometry, const RayKernel& kernel,
              TraceSettings trace, std::array<const IndirectCache*, 2> cache = {},
              bool bakedDirect = true, PathSet gathered = PathSet::IndirectOnly);

@@ -270,16 +270,11 @@ std::unique_ptr<IrradianceCache> cacheIrradiance(const Scene& scene, const World
     bake.cacheSamples += gathered.totalSamples;
     bake.cacheRays += gathered.totalRays;
   }
-  std::vector<uint8_t> readable(valid.size(), 0);
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t t = 0; t < readable.size(); ++t) {
-    readable[t] = valid[t] && !bake.invalid[t] ? 1 : 0;
-    if (!readable[t]) continue;
-    sum += luminance(0.5f * (halves[0].pixels[t] + halves[1].pixels[t]));
-    ++count;
-  }
-  bake.cacheMeanIrradiance = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  std::vector<uint8_t> readable = keptTexels(bake);
+  Image both(layout.width, layout.height);
+  for (std::size_t t = 0; t < both.pixels.size(); ++t)
+    both.pixels[t] = 0.5f * (halves[0].pixels[t] + halves[1].pixels[t]);
+  bake.cacheMeanIrradiance = meanLuminance(both, readable);
   bake.cacheSeconds = clock.lap();
   return std::make_unique<IrradianceCache>(scene, geometry, layout, std::move(halves),
                                            std::move(readable), /*holdsDirect=*/true);
@@ -365,12 +360,27 @@ std::unique_ptr<IrradianceCache> deliveredMapCache(const Scene& scene,
     if (light.bakeDirect) return nullptr;
   for (const Material& material : scene.materials)
     if (material.bakeDirect && material.isEmissive()) return nullptr;
-  std::vector<uint8_t> readable(bake.covered.size(), 0);
-  for (std::size_t t = 0; t < readable.size(); ++t)
-    readable[t] = bake.covered[t] && !bake.invalid[t] ? 1 : 0;
   return std::make_unique<IrradianceCache>(scene, geometry, layout,
                                            std::array<Image, 2>{bake.irradiance, bake.irradiance},
-                                           std::move(readable));
+                                           keptTexels(bake));
+}
+
+std::vector<uint8_t> keptTexels(const LightmapBake& bake) {
+  std::vector<uint8_t> kept(bake.covered.size(), 0);
+  for (std::size_t t = 0; t < kept.size(); ++t)
+    kept[t] = bake.covered[t] && !bake.invalid[t] ? 1 : 0;
+  return kept;
+}
+
+double meanLuminance(const Image& image, const std::vector<uint8_t>& mask) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < mask.size(); ++t) {
+    if (!mask[t]) continue;
+    sum += luminance(image.pixels[t]);
+    ++count;
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 0.0;
 }
 
 }  // namespace bounce

@@ -126,6 +126,12 @@ LightmapBake bakeLightmap(const Scene& scene, const WorldGeometry& geometry,
                           const RayKernel& kernel, const LightmapLayout& layout,
                           const LightmapBakeSettings& settings);
 
+// Per texel: 1 where the texel is covered and the leak guard kept some of its points (the texels
+// a cache may be read at: irradiance_cache.h).
+std::vector<uint8_t> keptTexels(const LightmapBake& bake);
+// The mean luminance (W/m²) of `image` (the layout's size) over the texels of `mask`; 0 if none.
+double meanLuminance(const Image& image, const std::vector<uint8_t>& mask);
+
 // The delivered map of a whole `bake` as a cache (irradiance_cache.h: both halves the map, read
 // where the leak guard kept a texel's points): paths that end at it after one reflection, as
 // the texels' final samples end at the cache pass's (the probes: pipeline/probe_stage.h), read

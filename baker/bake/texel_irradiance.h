@@ -54,7 +54,8 @@ struct IrradianceSettings {
   // Ends the indirect paths of the samples of half h (delivered_error.h's split) at cache[h]
   // (trace/indirect_cache.h, irradiance_cache.h); null: whole paths. Must outlive the call.
   std::array<const IndirectCache*, 2> cache{};
-  // false: the indirect light only, without the baked-only lights' direct light (the cache pass).
+  // false: without the separate estimate of the baked-only lights' direct light (the cache pass,
+  // whose totalLight paths hold every light's).
   bool bakedDirect = true;
   // true: the light arriving at the texel by every path, its direct light too (E_total, the
   // cache pass of a cache that holds it: IndirectCache::holdsDirect).

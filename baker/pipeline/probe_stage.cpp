@@ -10,7 +10,6 @@
 #include "bake/light_visibility_bake.h"
 #include "bake/lightmap_bake.h"
 #include "bake_folder/gather.h"
-#include "image/luminance.h"
 #include "pipeline/scene_bake.h"
 #include "pipeline/scene_bake_stages.h"
 #include "scene/static_scene.h"
@@ -121,15 +120,8 @@ namespace {
 // so a merge and a single process agree (the cache pass's mean exists only where tiles ran).
 double probeErrorFloor(const LightmapBake& bake, const SceneBakeSettings& settings) {
   if (!(settings.errorFloor > 0.0f)) return 0.0;
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t t = 0; t < bake.covered.size(); ++t) {
-    if (!bake.covered[t] || bake.invalid[t]) continue;
-    sum += luminance(bake.irradiance.pixels[t]);
-    ++count;
-  }
-  return count > 0 ? static_cast<double>(settings.errorFloor) * sum / static_cast<double>(count)
-                   : 0.0;
+  return static_cast<double>(settings.errorFloor) *
+         meanLuminance(bake.irradiance, keptTexels(bake));
 }
 
 }  // namespace
