@@ -3,18 +3,20 @@
 namespace bounce {
 namespace {
 
-bool emits(const Scene& scene) {
-  for (const Material& m : scene.materials)
-    if (m.isEmissive()) return true;
-  return false;
-}
-
 TraceSettings withPaths(TraceSettings trace, PathSet paths) {
   trace.paths = paths;
   return trace;
 }
 
 }  // namespace
+
+bool holdsBakedDirect(const Scene& scene) {
+  for (const Light& light : scene.lights)
+    if (light.bakeDirect) return true;
+  for (const Material& material : scene.materials)
+    if (material.bakeDirect && material.isEmissive()) return true;
+  return false;
+}
 
 Scene bakedDirectScene(const Scene& scene) {
   Scene copy = scene;
@@ -30,7 +32,7 @@ BakedLight::BakedLight(const Scene& scene, const WorldGeometry& geometry, const 
                        TraceSettings trace, std::array<const IndirectCache*, 2> cache,
                        bool bakedDirect, PathSet gathered)
     : directScene_(bakedDirectScene(scene)),
-      anyBakedDirect_(bakedDirect && (!directScene_.lights.empty() || emits(directScene_))),
+      anyBakedDirect_(bakedDirect && holdsBakedDirect(scene)),
       indirect_(scene, geometry, kernel, withPaths(trace, gathered)),
       bakedDirect_(directScene_, geometry, kernel, withPaths(trace, PathSet::DirectOnly)) {
   indirect_.setCache(cache[0]);

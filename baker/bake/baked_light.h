@@ -32,6 +32,9 @@ inline constexpr uint32_t kDimIndirect = 5;
 // The scene seen by the baked direct light: only the lights and emissive materials marked
 // bakeDirect.
 Scene bakedDirectScene(const Scene& scene);
+// True when some light or emissive material is marked baked-only: the lightmap holds its direct
+// light.
+bool holdsBakedDirect(const Scene& scene);
 
 class BakedLight {
  public:

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 
+#include "bake/baked_light.h"
 #include "bake/error_summary.h"
 #include "bake/irradiance_cache.h"
 #include "bake/lightmap_filters.h"
@@ -356,10 +357,7 @@ std::unique_ptr<IrradianceCache> deliveredMapCache(const Scene& scene,
                                                    const LightmapLayout& layout,
                                                    const LightmapBake& bake) {
   if (bake.partial || bake.irradiance.pixels.empty()) return nullptr;
-  for (const Light& light : scene.lights)
-    if (light.bakeDirect) return nullptr;
-  for (const Material& material : scene.materials)
-    if (material.bakeDirect && material.isEmissive()) return nullptr;
+  if (holdsBakedDirect(scene)) return nullptr;
   return std::make_unique<IrradianceCache>(scene, geometry, layout,
                                            std::array<Image, 2>{bake.irradiance, bake.irradiance},
                                            keptTexels(bake));
