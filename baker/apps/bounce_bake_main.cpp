@@ -155,8 +155,9 @@ void addGatherOptions(CLI::App& app, Options& o) {
   app.add_option("--error-floor", o.bake.errorFloor,
                  "with --gather cache: a texel dimmer than this fraction of the cache's mean "
                  "irradiance stops once its standard error is under --target-error times that "
-                 "floor, an error the frame cannot show next to the scene's light (0: every texel "
-                 "against its own mean; docs/baker.md)")
+                 "floor, an error the frame cannot show next to the scene's light; a probe the "
+                 "same against this fraction of the delivered map's mean (0: every texel and "
+                 "probe against its own mean; docs/baker.md)")
       ->check(CLI::Range(0.0, 100.0));
 }
 
