@@ -116,6 +116,28 @@ glm::ivec2 toTexels(Chart& chart, float texelSize) {
   return cells;
 }
 
+// Share of an instance's surface (m², by its triangles' areas) that its lightmap resolves and
+// its triangle corners do not: triangles of at least kCoarseTriangleTexels texels² in charts at
+// least kResolvedChartTexels texels across both ways, at `texelSize` metres a texel.
+double resolvedShare(const std::vector<Chart>& charts, const WorldMesh& world, float texelSize) {
+  double resolved = 0.0, all = 0.0;
+  const double texel2 = static_cast<double>(texelSize) * texelSize;
+  const float side = static_cast<float>(kResolvedChartTexels) * texelSize;
+  for (const Chart& chart : charts) {
+    // Charts are laid out in metres from the origin (toTexels scales them later).
+    glm::vec2 hi(0.0f);
+    for (const glm::vec2 p : chart.cornerUv) hi = glm::max(hi, p);
+    const bool wide = chart.source != ChartSource::Degenerate && hi.x >= side && hi.y >= side;
+    for (const uint32_t t : chart.triangles) {
+      const double a = world.area(t);  // m²
+      if (!std::isfinite(a)) continue;
+      all += a;
+      if (wide && a >= kCoarseTriangleTexels * texel2) resolved += a;
+    }
+  }
+  return all > 0.0 ? resolved / all : 0.0;
+}
+
 // Share of the texels an instance's charts take (each chart's touched texels grown by
 // padding/2, its half of the padding) that its surface fills: areaTexels / that count.
 double lightmapFill(const std::vector<Chart>& charts, float texelSize, double areaTexels,
@@ -261,7 +283,9 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   std::vector<Uv1Check> uv1;
   if (settings.minLightmapFill > 0.0) {
     generateMissingCharts(scene, statics, instanceTexel, settings, uv1);
-    // Each instance's fill on its own (in parallel); a mesh's own uv1 counts as full.
+    // Each instance's fill on its own (in parallel); a mesh's own uv1 counts as full, and so
+    // does an instance whose surface lies mostly in charts the texels resolve
+    // (kMinResolvedShare).
     std::vector<double> fill(statics.size(), 1.0);
     tbb::parallel_for(std::size_t{0}, statics.size(), [&](std::size_t k) {
       if (uv1[k].usable) return;
@@ -269,6 +293,10 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
           statics[k].weightedArea / (static_cast<double>(texelSize) * texelSize);
       fill[k] =
           lightmapFill(statics[k].charts, instanceTexel(statics[k]), areaTexels, settings.padding);
+      if (fill[k] < settings.minLightmapFill &&
+          resolvedShare(statics[k].charts, statics[k].world, instanceTexel(statics[k])) >=
+              kMinResolvedShare)
+        fill[k] = 1.0;
     });
     std::size_t i = 0;
     std::erase_if(statics, [&](StaticInstance& s) {

@@ -34,6 +34,20 @@ inline constexpr double kMinLightmapTexels = 2.0;
 // turns the rule off.
 inline constexpr double kMinLightmapFill = 0.3;
 
+// ... unless most of its surface is what its lightmap resolves and the probes do not: an instance
+// with at least kMinResolvedShare of its area in triangles of at least kCoarseTriangleTexels
+// texels² lying in charts at least kResolvedChartTexels texels across both ways keeps its
+// lightmap whatever its fill. A probe-lit instance's direct light is shadowed by visibility per
+// triangle corner, interpolated linearly across each triangle: a finely tessellated chair is
+// resolved by its corners, a whiteboard of two triangles is not (its shadow shows the diagonal),
+// nor is it by one grid of probes (blotchy); its own texels resolve it, and the trims that share
+// its mesh take their texels and padding with it. Conference Room: the whiteboard (`mesh16`,
+// fill 0.16, 60 % of it so resolved) keeps its lightmap, the chairs (29 to 39 %) and the 240
+// boxes do not (docs/lightmap_atlas.md, step 7).
+inline constexpr double kCoarseTriangleTexels = 8.0;
+inline constexpr int kResolvedChartTexels = 4;
+inline constexpr double kMinResolvedShare = 0.5;
+
 struct AtlasSettings {
   // Texel edge in metres where an instance's lightmapScale is 1 (instance i's is texelSize/s_i).
   // 0 = the density rule of texel_density.h (or √(A / texelBudget) when texelBudget > 0).
