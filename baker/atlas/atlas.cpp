@@ -283,25 +283,23 @@ Atlas buildAtlas(const Scene& scene, const AtlasSettings& settings) {
   std::vector<Uv1Check> uv1;
   if (settings.minLightmapFill > 0.0) {
     generateMissingCharts(scene, statics, instanceTexel, settings, uv1);
-    // Each instance's fill on its own (in parallel); a mesh's own uv1 counts as full, and so
-    // does an instance whose surface lies mostly in charts the texels resolve
-    // (kMinResolvedShare).
-    std::vector<double> fill(statics.size(), 1.0);
+    // Whether each instance keeps its lightmap, on its own (in parallel): a mesh's own uv1, a
+    // fill of at least minLightmapFill, or a surface mostly of large triangles on charts the
+    // texels resolve (kMinResolvedShare).
+    std::vector<uint8_t> keeps(statics.size(), 1);
     tbb::parallel_for(std::size_t{0}, statics.size(), [&](std::size_t k) {
       if (uv1[k].usable) return;
+      const float texel = instanceTexel(statics[k]);
       const double areaTexels =
           statics[k].weightedArea / (static_cast<double>(texelSize) * texelSize);
-      fill[k] =
-          lightmapFill(statics[k].charts, instanceTexel(statics[k]), areaTexels, settings.padding);
-      if (fill[k] < settings.minLightmapFill &&
-          resolvedShare(statics[k].charts, statics[k].world, instanceTexel(statics[k])) >=
-              kMinResolvedShare)
-        fill[k] = 1.0;
+      const bool filled = lightmapFill(statics[k].charts, texel, areaTexels, settings.padding) >=
+                          settings.minLightmapFill;
+      keeps[k] =
+          filled || resolvedShare(statics[k].charts, statics[k].world, texel) >= kMinResolvedShare;
     });
     std::size_t i = 0;
     std::erase_if(statics, [&](StaticInstance& s) {
-      const std::size_t k = i++;
-      if (uv1[k].usable || fill[k] >= settings.minLightmapFill) return false;
+      if (keeps[i++]) return false;
       atlas.vplLitInstances.push_back(s.instance);
       sparse.push_back(scene.instances[s.instance].name);
       return true;

@@ -87,16 +87,13 @@ uint32_t addFaceWithParts(Scene& scene, float w, float h, int cells, int parts, 
 // (triangles of 9.6 texels², a chart 40 texels long but under one wide) with 100 trims of 2 cm.
 TEST(AtlasInstances, AnInstanceMostlyInLargeTrianglesOnLargeChartsKeepsItsLightmap) {
   Scene scene;
-  const float y[] = {0, 5, 10, 15, 20};
-  addInstance(scene, addFaceWithParts(scene, 1.0f, 0.6f, 1, 100, 0.02f), glm::mat4(1));
-  addInstance(scene, addFaceWithParts(scene, 1.0f, 0.6f, 10, 100, 0.02f),
-              glm::translate(glm::mat4(1), glm::vec3(0, y[1], 0)));
-  addInstance(scene, addFaceWithParts(scene, 0.15f, 0.15f, 1, 100, 0.04f),
-              glm::translate(glm::mat4(1), glm::vec3(0, y[2], 0)));
-  addInstance(scene, addFaceWithParts(scene, 0.25f, 0.25f, 1, 100, 0.04f),
-              glm::translate(glm::mat4(1), glm::vec3(0, y[3], 0)));
-  addInstance(scene, addFaceWithParts(scene, 2.0f, 0.024f, 1, 100, 0.02f),
-              glm::translate(glm::mat4(1), glm::vec3(0, y[4], 0)));
+  // Instance k is 5k metres up.
+  const auto above = [](float y) { return glm::translate(glm::mat4(1), glm::vec3(0, y, 0)); };
+  addInstance(scene, addFaceWithParts(scene, 1.0f, 0.6f, 1, 100, 0.02f), above(0));
+  addInstance(scene, addFaceWithParts(scene, 1.0f, 0.6f, 10, 100, 0.02f), above(5));
+  addInstance(scene, addFaceWithParts(scene, 0.15f, 0.15f, 1, 100, 0.04f), above(10));
+  addInstance(scene, addFaceWithParts(scene, 0.25f, 0.25f, 1, 100, 0.04f), above(15));
+  addInstance(scene, addFaceWithParts(scene, 2.0f, 0.024f, 1, 100, 0.02f), above(20));
   AtlasSettings settings;
   settings.texelSize = 0.05f;
   const Atlas atlas = buildAtlas(scene, settings);
